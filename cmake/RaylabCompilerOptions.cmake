@@ -1,0 +1,30 @@
+# Warnings, -Werror, sanitizers and -march=native as options applied to raylab's own targets.
+add_library(raylab_options INTERFACE)
+target_compile_options(raylab_options INTERFACE
+  $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Wall -Wextra -Wpedantic -Wshadow>
+  $<$<CXX_COMPILER_ID:MSVC>:/W4>)
+if(RAYLAB_WERROR)
+  target_compile_options(raylab_options INTERFACE
+    $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Werror> $<$<CXX_COMPILER_ID:MSVC>:/WX>)
+endif()
+if(RAYLAB_NATIVE)
+  target_compile_options(raylab_options INTERFACE -march=native)
+endif()
+
+if(RAYLAB_SANITIZE)
+  # Check that the sanitizer runtimes link before using them: a machine without them
+  # (no libasan/libubsan) gets a clear message instead of a broken build.
+  include(CheckCXXSourceCompiles)
+  set(CMAKE_REQUIRED_FLAGS "-fsanitize=address,undefined")
+  set(CMAKE_REQUIRED_LINK_OPTIONS "-fsanitize=address,undefined")
+  check_cxx_source_compiles("int main() { return 0; }" RAYLAB_SANITIZERS_LINK)
+  unset(CMAKE_REQUIRED_FLAGS)
+  unset(CMAKE_REQUIRED_LINK_OPTIONS)
+  if(RAYLAB_SANITIZERS_LINK)
+    target_compile_options(raylab_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer)
+    target_link_options(raylab_options INTERFACE -fsanitize=address,undefined)
+    message(STATUS "raylab: AddressSanitizer and UndefinedBehaviorSanitizer on")
+  else()
+    message(WARNING "raylab: RAYLAB_SANITIZE=ON but the sanitizer runtimes do not link here; building without them")
+  endif()
+endif()

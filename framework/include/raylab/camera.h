@@ -1,0 +1,35 @@
+// The pinhole camera of a scene, and the raster conventions every stage shares.
+//
+// Conventions (docs/01_camera_rays.md):
+//   raster space   pixel (i, j): i = column 0..width-1 left to right, j = row 0..height-1 top to
+//                  bottom; the pixel's centre is at (i + 0.5, j + 0.5).
+//   camera space   the camera at the origin, looking down -z, +y up, +x right.
+//   aspect         width / height, applied to x.
+//   field of view  fov_y_degrees is the full vertical angle, in degrees.
+#pragma once
+
+#include "raylab/math.h"
+
+#include <ostream>
+
+namespace raylab {
+
+struct Camera {
+  glm::vec3 position{0.0f};
+  glm::vec3 look_at{0.0f, 0.0f, -1.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};  // need not be unit length or perpendicular to the view
+  float fov_y_degrees = 90.0f;
+  int width = 640;
+  int height = 480;
+
+  float aspect_ratio() const { return static_cast<float>(width) / static_cast<float>(height); }
+};
+
+// Throws std::invalid_argument naming the problem if the camera cannot form an image:
+// look_at equal to position, up parallel to the view direction, non-finite values,
+// fov outside (0, 180), non-positive size.
+void validate_camera(const Camera& camera);
+
+std::ostream& operator<<(std::ostream& out, const Camera& camera);
+
+}  // namespace raylab

@@ -1,0 +1,64 @@
+// Float linear-RGB images in memory; all file I/O goes through OpenImageIO.
+//
+// On disk: .exr keeps linear float values; .png and .ppm (binary P6) are 8-bit sRGB
+// (the sRGB transfer curve applied by OpenImageIO, values clamped to [0, 1]).
+#pragma once
+
+#include "raylab/math.h"
+
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+class Image {
+ public:
+  Image() = default;
+  Image(int width, int height, glm::vec3 fill = glm::vec3(0.0f));
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // (x, y) = (column, row), row 0 at the top.
+  glm::vec3& at(int x, int y) { return pixels_[static_cast<std::size_t>(y) * width_ + x]; }
+  const glm::vec3& at(int x, int y) const {
+    return pixels_[static_cast<std::size_t>(y) * width_ + x];
+  }
+  const std::vector<glm::vec3>& pixels() const { return pixels_; }
+  glm::vec3* data() { return pixels_.data(); }  // row-major, RGB float
+
+ private:
+  int width_ = 0, height_ = 0;
+  std::vector<glm::vec3> pixels_;
+};
+
+// Writes by the path's extension (.png, .exr, .ppm). Throws InputError with the path and
+// OpenImageIO's reason if the extension is unknown or the file cannot be written.
+void write_image(const Image& image, const std::string& path);
+
+// Throws InputError if `path` does not end in an extension write_image knows; call it before
+// long work whose result would then be lost.
+void check_image_extension(const std::string& path);
+
+// Reads any format OpenImageIO knows into linear RGB (8-bit files are taken as sRGB).
+// Throws InputError with the path and reason if it cannot.
+Image read_image(const std::string& path);
+
+// How two images of the same size differ, per channel value (OpenImageIO's compare).
+struct ImageDifference {
+  double mean_error = 0.0;
+  double rms_error = 0.0;
+  double psnr = 0.0;
+  double max_error = 0.0;
+  int max_x = 0, max_y = 0;           // where max_error is
+  long long pixels_over_threshold = 0;  // pixels with a channel differing by more than threshold
+  double fraction_over_threshold = 0.0;
+};
+
+// Compares two images of the same size (throws std::invalid_argument otherwise).
+ImageDifference compare_images(const Image& actual, const Image& expected, float threshold);
+
+// A side-by-side picture for students: actual | expected | difference heat map
+// (black = equal, through red to yellow = a difference of `full_scale` or more).
+Image side_by_side_difference(const Image& actual, const Image& expected, float full_scale);
+
+}  // namespace raylab

@@ -1,0 +1,28 @@
+// The renderer: tiles over all cores; each pixel's value depends only on (scene, settings,
+// pixel), so any thread count gives bit-identical images.
+#pragma once
+
+#include "raylab/image.h"
+#include "raylab/scene.h"
+
+#include <cstdint>
+
+namespace raylab {
+
+struct RenderSettings {
+  int max_depth = 5;
+  int threads = 0;             // 0: every core
+  bool show_progress = false;  // progress, ETA and rays/s on stderr
+};
+
+struct RenderStats {
+  double seconds = 0.0;
+  std::uint64_t rays = 0;
+  int threads = 0;
+};
+
+// Renders scene.camera's view. Exceptions from stage functions (NotImplemented, ...) stop the
+// render and are rethrown here, from the calling thread.
+Image render(const Scene& scene, const RenderSettings& settings, RenderStats* stats = nullptr);
+
+}  // namespace raylab

@@ -1,0 +1,23 @@
+// Reading scene files (JSON; format in docs/scene-format.md) and meshes (OBJ).
+#pragma once
+
+#include "raylab/scene.h"
+
+#include <string>
+
+namespace raylab {
+
+// Reads a scene file. Throws InputError naming the file, the JSON path (e.g.
+// /objects/2/radius) and what was expected, for every malformed or missing part.
+Scene load_scene(const std::string& path);
+
+// Parses scene JSON from a string; `source` names it in messages. Relative file references
+// (OBJ meshes) are resolved against `base_directory`.
+Scene parse_scene(const std::string& json_text, const std::string& source,
+                  const std::string& base_directory);
+
+// Reads a triangulated OBJ mesh (positions and texture coordinates) through tinyobjloader.
+// Throws InputError naming the file (and line where known) if it is missing or malformed.
+TriangleMesh load_obj_mesh(const std::string& path);
+
+}  // namespace raylab

@@ -1,0 +1,91 @@
+#include "raylab/cli.h"
+
+#include "raylab/error.h"
+#include "raylab/image.h"
+#include "raylab/render.h"
+#include "raylab/scene_loader.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+namespace raylab {
+namespace {
+
+struct RenderOptions {
+  std::string scene_path;
+  std::string output_path;
+  int width = 0, height = 0;  // 0: the scene's
+  int max_depth = -1;         // -1: the scene's
+  int threads = 0;            // 0: every core
+  bool quiet = false;
+};
+
+int run_render(const RenderOptions& options) {
+  check_image_extension(options.output_path);
+  Scene scene = load_scene(options.scene_path);
+  if (options.width > 0) scene.camera.width = options.width;
+  if (options.height > 0) scene.camera.height = options.height;
+  RenderSettings settings;
+  settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
+  settings.threads = options.threads;
+  settings.show_progress = !options.quiet && isatty(fileno(stderr));
+  RenderStats stats;
+  const Image image = render(scene, settings, &stats);
+  write_image(image, options.output_path);
+  if (!options.quiet)
+    std::fprintf(stderr, "rendered %s: %dx%d in %.3f s on %d threads (%.2f Mrays/s) -> %s\n",
+                 options.scene_path.c_str(), image.width(), image.height(), stats.seconds,
+                 stats.threads, stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0,
+                 options.output_path.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv) {
+  CLI::App app{"raylab: a step-by-step ray tracer (course kit)"};
+  app.require_subcommand(1);
+  RenderOptions options;
+  CLI::App* render_command = app.add_subcommand("render", "Render a scene file to an image");
+  render_command->add_option("scene", options.scene_path, "Scene file (JSON), e.g. scenes/whitted.json")->required();
+  render_command->add_option("-o,--output", options.output_path, "Output image: .png, .exr or .ppm")->required();
+  render_command->add_option("--width", options.width, "Image width in pixels (default: the scene's)")
+      ->check(CLI::Range(1, 16384));
+  render_command->add_option("--height", options.height, "Image height in pixels (default: the scene's)")
+      ->check(CLI::Range(1, 16384));
+  render_command->add_option("--max-depth", options.max_depth, "Bounces after the camera ray (default: the scene's, 5)")
+      ->check(CLI::Range(0, 64));
+  render_command->add_option("--threads", options.threads, "Worker threads (default: every core)")
+      ->check(CLI::Range(1, 1024));
+  render_command->add_flag("-q,--quiet", options.quiet, "No progress and no summary line");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "raylab: " << e.what() << " (see raylab --help)\n";
+    return kExitBadInput;
+  }
+
+  try {
+    if (*render_command) return run_render(options);
+  } catch (const NotImplemented& e) {
+    std::cerr << "raylab: " << e.what() << " (handout: docs/" << e.stage_id() << ".md)\n";
+    return kExitNotImplemented;
+  } catch (const InputError& e) {
+    std::cerr << "raylab: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "raylab: error: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
+
+}  // namespace raylab

@@ -1,0 +1,106 @@
+#include "raylab/render.h"
+
+#include "raylab/geometry.h"
+#include "raylab/shading.h"
+#include "raylab/stages/01_camera_rays.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace raylab {
+namespace {
+
+constexpr int kTileSize = 16;
+
+struct Tile {
+  int x0, y0, x1, y1;
+};
+
+std::vector<Tile> make_tiles(int width, int height) {
+  std::vector<Tile> tiles;
+  for (int y = 0; y < height; y += kTileSize)
+    for (int x = 0; x < width; x += kTileSize)
+      tiles.push_back({x, y, std::min(x + kTileSize, width), std::min(y + kTileSize, height)});
+  return tiles;
+}
+
+void print_progress(std::size_t done, std::size_t total, double seconds, std::uint64_t rays) {
+  const double fraction = total ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
+  const double eta = fraction > 0 ? seconds * (1.0 - fraction) / fraction : 0.0;
+  const double mrays = seconds > 0 ? static_cast<double>(rays) / seconds * 1e-6 : 0.0;
+  constexpr int kBarWidth = 30;
+  char bar[kBarWidth + 1];
+  const int filled = static_cast<int>(fraction * kBarWidth);
+  for (int i = 0; i < kBarWidth; ++i) bar[i] = i < filled ? '#' : '.';
+  bar[kBarWidth] = '\0';
+  std::fprintf(stderr, "\r[%s] %3.0f%%  ETA %5.1f s  %7.2f Mrays/s ", bar, fraction * 100.0, eta, mrays);
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+Image render(const Scene& scene, const RenderSettings& settings, RenderStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  const Camera& camera = scene.camera;
+  Image image(camera.width, camera.height);
+  const SceneGeometry geometry(scene);
+  const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
+
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const int thread_count = std::max(1, std::min<int>(settings.threads > 0 ? settings.threads : static_cast<int>(hardware),
+                                                      static_cast<int>(tiles.size())));
+  std::atomic<std::size_t> next_tile{0}, tiles_done{0};
+  std::atomic<std::uint64_t> rays{0};
+  std::atomic<bool> stop{false};
+  std::exception_ptr first_error;
+  std::mutex error_mutex;
+
+  // Each worker takes tiles from the shared counter and writes only its tiles' pixels.
+  auto worker = [&] {
+    try {
+      for (std::size_t t = next_tile++; t < tiles.size() && !stop; t = next_tile++) {
+        const Tile& tile = tiles[t];
+        ShadingStats tile_stats;
+        for (int y = tile.y0; y < tile.y1; ++y)
+          for (int x = tile.x0; x < tile.x1; ++x) {
+            const Ray ray = generate_camera_ray(camera, x, y);
+            image.at(x, y) = trace_whitted(scene, geometry, ray, 0, settings.max_depth, tile_stats);
+          }
+        rays += tile_stats.rays;
+        ++tiles_done;
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if (!first_error) first_error = std::current_exception();
+      stop = true;
+    }
+  };
+
+  std::vector<std::thread> threads;
+  for (int i = 0; i < thread_count; ++i) threads.emplace_back(worker);
+  if (settings.show_progress) {
+    while (tiles_done < tiles.size() && !stop) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      print_progress(tiles_done, tiles.size(), seconds, rays);
+    }
+  }
+  for (std::thread& thread : threads) thread.join();
+  if (settings.show_progress) std::fprintf(stderr, "\r%*s\r", 78, "");
+  if (first_error) std::rethrow_exception(first_error);
+
+  if (stats) {
+    stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats->rays = rays;
+    stats->threads = thread_count;
+  }
+  return image;
+}
+
+}  // namespace raylab
