@@ -6,7 +6,7 @@
 namespace raylab {
 
 void validate_camera(const Camera& camera) {
-  auto fail = [](const std::string& what) { throw std::invalid_argument("camera: " + what); };
+  auto fail = [](const std::string& what) { throw std::invalid_argument(what); };
   if (!is_finite(camera.position) || !is_finite(camera.look_at) || !is_finite(camera.up))
     fail("position, look_at and up must be finite numbers");
   const glm::vec3 view = camera.look_at - camera.position;
@@ -16,9 +16,12 @@ void validate_camera(const Camera& camera) {
   if (glm::dot(side, side) < 1e-12f) fail("up must not be parallel to the view direction");
   if (!(camera.fov_y_degrees > 0.0f && camera.fov_y_degrees < 180.0f))
     fail("fov_y_degrees must be in (0, 180), got " + std::to_string(camera.fov_y_degrees));
-  if (camera.width <= 0 || camera.height <= 0)
-    fail("width and height must be positive, got " + std::to_string(camera.width) + "x" +
-         std::to_string(camera.height));
+  const std::string size = std::to_string(camera.width) + "x" + std::to_string(camera.height);
+  if (camera.width <= 0 || camera.height <= 0) fail("width and height must be positive, got " + size);
+  if (camera.width > kMaxImageSide || camera.height > kMaxImageSide ||
+      static_cast<long long>(camera.width) * camera.height > kMaxImagePixels)
+    fail("an image of " + size + " is over the limit (" + std::to_string(kMaxImageSide) + " a side, " +
+         std::to_string(kMaxImagePixels) + " pixels in all)");
 }
 
 std::ostream& operator<<(std::ostream& out, const Camera& camera) {

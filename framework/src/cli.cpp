@@ -28,6 +28,11 @@ int run_render(const RenderOptions& options) {
   Scene scene = load_scene(options.scene_path);
   if (options.width > 0) scene.camera.width = options.width;
   if (options.height > 0) scene.camera.height = options.height;
+  try {
+    validate_camera(scene.camera);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--width/--height: ") + e.what());
+  }
   RenderSettings settings;
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.threads = options.threads;
@@ -78,6 +83,9 @@ int run_cli(int argc, char** argv) {
   } catch (const NotImplemented& e) {
     std::cerr << "raylab: " << e.what() << " (handout: docs/" << e.stage_id() << ".md)\n";
     return kExitNotImplemented;
+  } catch (const UsageError& e) {
+    std::cerr << "raylab: " << e.what() << "\n";
+    return kExitBadInput;
   } catch (const InputError& e) {
     std::cerr << "raylab: " << e.what() << "\n";
     return kExitBadInput;

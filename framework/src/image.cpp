@@ -72,7 +72,7 @@ Image read_image(const std::string& path) {
   oiio::ImageBuf buf(path);
   if (!buf.read(0, 0, true, oiio::TypeDesc::FLOAT))
     throw InputError(path + ": cannot read image: " + buf.geterror());
-  const oiio::TypeDesc stored = buf.spec().format;
+  const oiio::TypeDesc stored = buf.nativespec().format;  // the file's, not the float copy's
   if (stored == oiio::TypeDesc::UINT8 || stored == oiio::TypeDesc::UINT16)
     buf = oiio::ImageBufAlgo::colorconvert(buf, "sRGB", "linear");
   if (buf.has_error()) throw InputError(path + ": cannot read image: " + buf.geterror());

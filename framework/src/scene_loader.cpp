@@ -20,9 +20,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr int kMaxImageSide = 16384;
-constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;
-
 // Reads values out of a parsed document, naming the JSON path of anything wrong.
 class SceneReader {
  public:
@@ -122,9 +119,6 @@ Camera read_camera(const SceneReader& r, const json& node, const std::string& pa
     camera.fov_y_degrees = static_cast<float>(r.number(node["fov_y_degrees"], path + "/fov_y_degrees", 1e-3, 179.0));
   if (node.contains("width")) camera.width = r.integer(node["width"], path + "/width", 1, kMaxImageSide);
   if (node.contains("height")) camera.height = r.integer(node["height"], path + "/height", 1, kMaxImageSide);
-  if (static_cast<long long>(camera.width) * camera.height > kMaxImagePixels)
-    r.fail(path, "image of " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +
-                     " pixels is larger than the limit of " + std::to_string(kMaxImagePixels));
   try {
     validate_camera(camera);
   } catch (const std::invalid_argument& e) {

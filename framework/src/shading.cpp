@@ -62,8 +62,9 @@ namespace {
 glm::vec3 diffuse_color_at(const Material& material, const SurfaceHit& hit) {
   if (!material.checkerboard || !hit.has_texcoord) return material.diffuse_color;
   const Checkerboard& board = *material.checkerboard;
-  const bool s_half = std::fmod(hit.texcoord.x * board.scale, 1.0f) > 0.5f;
-  const bool t_half = std::fmod(hit.texcoord.y * board.scale, 1.0f) > 0.5f;
+  auto fraction = [](float x) { return x - std::floor(x); };  // in [0, 1), also below zero
+  const bool s_half = fraction(hit.texcoord.x * board.scale) > 0.5f;
+  const bool t_half = fraction(hit.texcoord.y * board.scale) > 0.5f;
   return (s_half != t_half) ? board.color_b : board.color_a;
 }
 

@@ -2,6 +2,8 @@
 // assignments/03_triangle/triangle.cpp and docs/03_triangle.md.
 #include "raylab/stages/03_triangle.h"
 
+#include <cmath>
+
 namespace raylab {
 
 std::optional<TriangleHit> intersect_ray_triangle(const Ray& ray, const glm::vec3& p0,

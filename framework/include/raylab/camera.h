@@ -14,6 +14,11 @@
 
 namespace raylab {
 
+// The largest image raylab renders: a side of 16384 pixels, 64 Mi pixels in all (768 MiB of
+// float RGB). Larger sizes are refused with a clear error rather than exhausting memory.
+constexpr int kMaxImageSide = 16384;
+constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;
+
 struct Camera {
   glm::vec3 position{0.0f};
   glm::vec3 look_at{0.0f, 0.0f, -1.0f};
@@ -27,7 +32,7 @@ struct Camera {
 
 // Throws std::invalid_argument naming the problem if the camera cannot form an image:
 // look_at equal to position, up parallel to the view direction, non-finite values,
-// fov outside (0, 180), non-positive size.
+// fov outside (0, 180), a size that is not positive or over the limits above.
 void validate_camera(const Camera& camera);
 
 std::ostream& operator<<(std::ostream& out, const Camera& camera);
