@@ -1,0 +1,141 @@
+// Autograder suite for stage 02_sphere (20 points).
+#include "grading.h"
+#include "support.h"
+
+#include "raylab/stages/02_sphere.h"
+
+#include <cmath>
+#include <optional>
+
+namespace raylab::grading {
+namespace {
+
+constexpr int kStage = 2;
+const bool kRegistered = register_stage({kStage, "02_sphere", "ray-sphere intersection", {1},
+                                         [] { (void)intersect_ray_sphere(Ray{}, glm::vec3(0, 0, -3), 1.0f); }});
+
+constexpr float kRelativeTolerance = 1e-4f;
+
+Ray make_ray(glm::vec3 origin, glm::vec3 direction, float t_min = 0.0f, float t_max = kInfinity) {
+  Ray ray;
+  ray.origin = origin;
+  ray.direction = direction;
+  ray.t_min = t_min;
+  ray.t_max = t_max;
+  return ray;
+}
+
+bool close(float got, float expected) {
+  return std::fabs(got - expected) <= kRelativeTolerance * std::max(1.0f, std::fabs(expected));
+}
+
+// Names the mistake behind a wrong answer, from the answer itself.
+void diagnose(const Ray& ray, const glm::vec3& center, float radius, std::optional<float> got, std::optional<float> expected) {
+  const bool origin_inside = glm::length(ray.origin - center) < radius;
+  if (got && !(*got > ray.t_min)) {
+    add_hint("returns a hit behind the ray (t = " + std::to_string(*got) + "): only t_min < t < t_max counts (docs/02_sphere.md, section 2)");
+  } else if (got && !(*got < ray.t_max)) {
+    add_hint("ignores t_max: a hit at t = " + std::to_string(*got) + " is beyond t_max = " + std::to_string(ray.t_max));
+  } else if (!got && expected && origin_inside) {
+    add_hint("misses when the origin is inside the sphere: the near root is then behind the ray, so return the far root");
+  } else if (got && expected && origin_inside && *got < *expected) {
+    add_hint("returns the near root when the origin is inside: it is behind the ray; return the far root");
+  } else if (got && expected) {
+    const float length = glm::length(ray.direction);
+    if (close(*got, *expected * length) || close(*got, *expected * length * length))
+      add_hint("assumes a unit-length direction: a = dot(d, d) is not 1 in general, and t must be in units of d");
+    else if (std::fabs(*got - *expected) < 1e-2f * std::max(1.0f, std::fabs(*expected)))
+      add_hint("close but not accurate: compute the roots in the stable form (docs/02_sphere.md, section 3)");
+  } else if (got && !expected) {
+    add_hint("reports a hit where there is none: check the sign test of the discriminant");
+  } else if (!got && expected) {
+    add_hint("misses a sphere that the ray hits: check a, b, c (b = 2 dot(origin - center, d)) and the discriminant");
+  }
+}
+
+void expect_sphere(const Ray& ray, glm::vec3 center, float radius, std::optional<float> expected) {
+  const std::optional<float> got = intersect_ray_sphere(ray, center, radius);
+  const bool ok = got.has_value() == expected.has_value() && (!got || close(*got, *expected));
+  if (!ok) diagnose(ray, center, radius, got, expected);
+  std::ostringstream got_text, expected_text;
+  if (got) got_text << "t = " << *got; else got_text << "no hit";
+  if (expected) expected_text << "t = " << *expected; else expected_text << "no hit";
+  EXPECT_TRUE(ok) << "ray " << ray << ", sphere centre " << center << " radius " << radius << ":\n  expected "
+                  << expected_text.str() << "\n  got      " << got_text.str();
+}
+
+GRADED_TEST(kStage, Stage02Sphere, HitInFront, 2) {
+  // From the origin down -z to a unit sphere at z = -5: the near surface is at z = -4.
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}), {0, 0, -5}, 1.0f, 4.0f);
+  // Off-centre: x = 0.6 meets the sphere where z = -5 + 0.8, at t = 4.2.
+  expect_sphere(make_ray({0.6f, 0, 0}, {0, 0, -1}), {0, 0, -5}, 1.0f, 4.2f);
+}
+
+GRADED_TEST(kStage, Stage02Sphere, MissBesideTheSphere, 2) {
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}), {3, 0, -5}, 1.0f, std::nullopt);
+  expect_sphere(make_ray({0, 1.0001f, 0}, {0, 0, -1}), {0, 0, -5}, 1.0f, std::nullopt);
+}
+
+GRADED_TEST(kStage, Stage02Sphere, SphereBehindTheRayIsMissed, 3) {
+  // The whole sphere is behind the origin: both roots are negative.
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}), {0, 0, 5}, 1.0f, std::nullopt);
+}
+
+GRADED_TEST(kStage, Stage02Sphere, OriginInsideGetsTheFarRoot, 3) {
+  // From the centre of a sphere of radius 2 the surface is 2 away, whichever way we look.
+  expect_sphere(make_ray({0, 0, -5}, {0, 0, -1}), {0, 0, -5}, 2.0f, 2.0f);
+  expect_sphere(make_ray({0, 0, -5}, {1, 0, 0}), {0, 0, -5}, 2.0f, 2.0f);
+  // Off-centre inside, looking back towards the near side.
+  expect_sphere(make_ray({0, 0, -4}, {0, 0, 1}), {0, 0, -5}, 2.0f, 1.0f);
+}
+
+GRADED_TEST(kStage, Stage02Sphere, DirectionNeedNotBeUnitLength, 2) {
+  // The same ray as HitInFront with a direction twice as long: t halves.
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -2}), {0, 0, -5}, 1.0f, 2.0f);
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -0.5f}), {0, 0, -5}, 1.0f, 8.0f);
+}
+
+GRADED_TEST(kStage, Stage02Sphere, RespectsTMinAndTMax, 3) {
+  // The near hit is at t = 4, the far at t = 6.
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}, 0.0f, 3.0f), {0, 0, -5}, 1.0f, std::nullopt);  // both beyond t_max
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}, 4.5f), {0, 0, -5}, 1.0f, 6.0f);               // near one before t_min
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}, 0.0f, 5.0f), {0, 0, -5}, 1.0f, 4.0f);
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}, 6.5f), {0, 0, -5}, 1.0f, std::nullopt);       // both before t_min
+}
+
+GRADED_TEST(kStage, Stage02Sphere, GrazingRays, 1) {
+  // Just inside the silhouette: a hit near z = -5; just outside: a miss.
+  const float inside = 0.999f, outside = 1.001f;
+  const float depth = std::sqrt(1.0f - inside * inside);
+  expect_sphere(make_ray({0, inside, 0}, {0, 0, -1}), {0, 0, -5}, 1.0f, 5.0f - depth);
+  expect_sphere(make_ray({0, outside, 0}, {0, 0, -1}), {0, 0, -5}, 1.0f, std::nullopt);
+}
+
+GRADED_TEST(kStage, Stage02Sphere, MatchesReferenceHits, 3) {
+  const nlohmann::json data = load_reference_cases("02_sphere");
+  int failures = 0;
+  for (const nlohmann::json& c : data.at("cases")) {
+    const Ray ray = make_ray(vec3_from_json(c.at("origin")), vec3_from_json(c.at("direction")),
+                             c.at("t_min").get<float>(), c.at("t_max").is_null() ? kInfinity : c.at("t_max").get<float>());
+    const glm::vec3 center = vec3_from_json(c.at("center"));
+    const float radius = c.at("radius").get<float>();
+    const std::optional<float> expected = c.at("t_hit").is_null() ? std::nullopt : std::optional<float>(c.at("t_hit").get<float>());
+    const std::optional<float> got = intersect_ray_sphere(ray, center, radius);
+    if (got.has_value() == expected.has_value() && (!got || close(*got, *expected))) continue;
+    if (++failures <= 3) {
+      diagnose(ray, center, radius, got, expected);
+      ADD_FAILURE() << "case " << c.at("id") << ": ray " << ray << ", sphere " << center << " radius " << radius
+                    << "\n  expected " << (expected ? "t = " + std::to_string(*expected) : "no hit") << "\n  got      "
+                    << (got ? "t = " + std::to_string(*got) : "no hit");
+    }
+  }
+  EXPECT_EQ(failures, 0) << failures << " of " << data.at("cases").size() << " reference cases differ (seed "
+                         << data.at("seed") << ")";
+}
+
+GRADED_TEST(kStage, Stage02Sphere, SpheresImageMatchesReference, 1) {
+  expect_image_matches_reference(kStage, "02_sphere", 0.05f, 0.005);
+}
+
+}  // namespace
+}  // namespace raylab::grading

@@ -1,0 +1,153 @@
+// Autograder suite for stage 03_triangle (20 points).
+#include "grading.h"
+#include "support.h"
+
+#include "raylab/stages/03_triangle.h"
+
+#include <cmath>
+#include <optional>
+
+namespace raylab::grading {
+namespace {
+
+constexpr int kStage = 3;
+const bool kRegistered = register_stage(
+    {kStage, "03_triangle", "ray-triangle intersection", {1, 2},
+     [] { (void)intersect_ray_triangle(Ray{}, glm::vec3(-1, -1, -2), glm::vec3(1, -1, -2), glm::vec3(0, 1, -2)); }});
+
+constexpr float kTolerance = 1e-4f;
+
+Ray make_ray(glm::vec3 origin, glm::vec3 direction, float t_min = 0.0f, float t_max = kInfinity) {
+  Ray ray;
+  ray.origin = origin;
+  ray.direction = direction;
+  ray.t_min = t_min;
+  ray.t_max = t_max;
+  return ray;
+}
+
+bool close(float got, float expected) { return std::fabs(got - expected) <= kTolerance * std::max(1.0f, std::fabs(expected)); }
+
+bool same_hit(const TriangleHit& a, const TriangleHit& b) {
+  return close(a.t_hit, b.t_hit) && close(a.barycentric_b1, b.barycentric_b1) && close(a.barycentric_b2, b.barycentric_b2);
+}
+
+void diagnose(const Ray& ray, std::optional<TriangleHit> got, std::optional<TriangleHit> expected, bool back_face) {
+  if (got && !(std::isfinite(got->t_hit) && std::isfinite(got->barycentric_b1) && std::isfinite(got->barycentric_b2))) {
+    add_hint("returns NaN or infinity: a zero determinant (parallel ray or degenerate triangle) must be a miss, not a division");
+  } else if (got && !(got->t_hit > ray.t_min)) {
+    add_hint("accepts a hit behind the ray (t = " + std::to_string(got->t_hit) + "): only t_min < t < t_max counts");
+  } else if (got && !(got->t_hit < ray.t_max)) {
+    add_hint("ignores t_max: a hit at t = " + std::to_string(got->t_hit) + " is beyond t_max");
+  } else if (got && !expected) {
+    const float b0 = 1.0f - got->barycentric_b1 - got->barycentric_b2;
+    if (got->barycentric_b1 < 0 || got->barycentric_b2 < 0 || b0 < 0)
+      add_hint("accepts points outside the triangle: require b1 >= 0, b2 >= 0 and b1 + b2 <= 1 (docs/03_triangle.md, section 2)");
+    else
+      add_hint("reports a hit where there is none");
+  } else if (got && expected) {
+    if (close(got->barycentric_b1, expected->barycentric_b2) && close(got->barycentric_b2, expected->barycentric_b1))
+      add_hint("barycentrics swapped: b1 is the weight of p1 and b2 of p2 (point = (1-b1-b2) p0 + b1 p1 + b2 p2)");
+    else if (!close(got->t_hit, expected->t_hit))
+      add_hint("t_hit is wrong while the hit itself is found: t_hit = dot(s2, edge_02) / det");
+    else
+      add_hint("the barycentric coordinates are wrong: b1 = dot(s1, s) / det, b2 = dot(s2, direction) / det");
+  } else if (!got && expected && back_face) {
+    add_hint("culls back faces: this course hits both faces, so do not reject det < 0, only det == 0");
+  } else if (!got && expected) {
+    add_hint("misses a triangle that the ray hits: check the determinant and the inside test (edges count as inside)");
+  }
+}
+
+std::string describe(const std::optional<TriangleHit>& hit) {
+  if (!hit) return "no hit";
+  std::ostringstream text;
+  text << *hit;
+  return text.str();
+}
+
+void expect_triangle(const Ray& ray, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, std::optional<TriangleHit> expected) {
+  const std::optional<TriangleHit> got = intersect_ray_triangle(ray, p0, p1, p2);
+  const bool ok = got.has_value() == expected.has_value() && (!got || same_hit(*got, *expected));
+  const bool back_face = glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) > 0;
+  if (!ok) diagnose(ray, got, expected, back_face);
+  EXPECT_TRUE(ok) << "ray " << ray << ", triangle " << p0 << " " << p1 << " " << p2 << ":\n  expected "
+                  << describe(expected) << "\n  got      " << describe(got);
+}
+
+// A right triangle in the plane z = -2: p0 at the origin's shadow, p1 along +x, p2 along +y.
+const glm::vec3 kP0(0, 0, -2), kP1(1, 0, -2), kP2(0, 1, -2);
+
+GRADED_TEST(kStage, Stage03Triangle, HitWithBarycentrics, 3) {
+  // Straight down -z at (0.2, 0.3): the point is 0.5 p0 + 0.2 p1 + 0.3 p2, at distance 2.
+  expect_triangle(make_ray({0.2f, 0.3f, 0}, {0, 0, -1}), kP0, kP1, kP2, TriangleHit{2.0f, 0.2f, 0.3f});
+  // The same with a non-unit direction: t is in units of the direction.
+  expect_triangle(make_ray({0.25f, 0.5f, 0}, {0, 0, -4}), kP0, kP1, kP2, TriangleHit{0.5f, 0.25f, 0.5f});
+}
+
+GRADED_TEST(kStage, Stage03Triangle, BothFacesAreHit, 2) {
+  // From behind (z = -4 looking +z) the winding is clockwise: still a hit.
+  expect_triangle(make_ray({0.2f, 0.3f, -4}, {0, 0, 1}), kP0, kP1, kP2, TriangleHit{2.0f, 0.2f, 0.3f});
+}
+
+GRADED_TEST(kStage, Stage03Triangle, PointsOutsideEachEdgeAreMissed, 4) {
+  expect_triangle(make_ray({-0.1f, 0.3f, 0}, {0, 0, -1}), kP0, kP1, kP2, std::nullopt);   // beyond edge p0-p2 (b1 < 0)
+  expect_triangle(make_ray({0.3f, -0.1f, 0}, {0, 0, -1}), kP0, kP1, kP2, std::nullopt);   // beyond edge p0-p1 (b2 < 0)
+  expect_triangle(make_ray({0.6f, 0.6f, 0}, {0, 0, -1}), kP0, kP1, kP2, std::nullopt);    // beyond the hypotenuse (b1 + b2 > 1)
+  expect_triangle(make_ray({1.5f, 0.1f, 0}, {0, 0, -1}), kP0, kP1, kP2, std::nullopt);    // b1 > 1
+}
+
+GRADED_TEST(kStage, Stage03Triangle, EdgesAndVerticesCountAsInside, 2) {
+  expect_triangle(make_ray({0.5f, 0.5f, 0}, {0, 0, -1}), kP0, kP1, kP2, TriangleHit{2.0f, 0.5f, 0.5f});
+  expect_triangle(make_ray({0.5f, 0.0f, 0}, {0, 0, -1}), kP0, kP1, kP2, TriangleHit{2.0f, 0.5f, 0.0f});
+  expect_triangle(make_ray({1.0f, 0.0f, 0}, {0, 0, -1}), kP0, kP1, kP2, TriangleHit{2.0f, 1.0f, 0.0f});
+}
+
+GRADED_TEST(kStage, Stage03Triangle, TriangleBehindTheRayIsMissed, 2) {
+  expect_triangle(make_ray({0.2f, 0.3f, -3}, {0, 0, -1}), kP0, kP1, kP2, std::nullopt);
+}
+
+GRADED_TEST(kStage, Stage03Triangle, RespectsTMinAndTMax, 2) {
+  expect_triangle(make_ray({0.2f, 0.3f, 0}, {0, 0, -1}, 0.0f, 1.5f), kP0, kP1, kP2, std::nullopt);
+  expect_triangle(make_ray({0.2f, 0.3f, 0}, {0, 0, -1}, 2.5f), kP0, kP1, kP2, std::nullopt);
+  expect_triangle(make_ray({0.2f, 0.3f, 0}, {0, 0, -1}, 1.5f, 2.5f), kP0, kP1, kP2, TriangleHit{2.0f, 0.2f, 0.3f});
+}
+
+GRADED_TEST(kStage, Stage03Triangle, ParallelRaysAndDegenerateTriangles, 2) {
+  // In the triangle's plane, and above it, parallel: no hit (and no division by zero).
+  expect_triangle(make_ray({-1, 0.2f, -2}, {1, 0, 0}), kP0, kP1, kP2, std::nullopt);
+  expect_triangle(make_ray({-1, 0.2f, 0}, {1, 0, 0}), kP0, kP1, kP2, std::nullopt);
+  // Zero area: three points on a line, and all three the same.
+  expect_triangle(make_ray({0.5f, 0, 0}, {0, 0, -1}), kP0, kP1, glm::vec3(2, 0, -2), std::nullopt);
+  expect_triangle(make_ray({0, 0, 0}, {0, 0, -1}), kP0, kP0, kP0, std::nullopt);
+}
+
+GRADED_TEST(kStage, Stage03Triangle, MatchesReferenceHits, 2) {
+  const nlohmann::json data = load_reference_cases("03_triangle");
+  int failures = 0;
+  for (const nlohmann::json& c : data.at("cases")) {
+    const Ray ray = make_ray(vec3_from_json(c.at("origin")), vec3_from_json(c.at("direction")), c.at("t_min").get<float>(),
+                             c.at("t_max").is_null() ? kInfinity : c.at("t_max").get<float>());
+    const glm::vec3 p0 = vec3_from_json(c.at("p0")), p1 = vec3_from_json(c.at("p1")), p2 = vec3_from_json(c.at("p2"));
+    std::optional<TriangleHit> expected;
+    if (!c.at("hit").is_null())
+      expected = TriangleHit{c["hit"].at(0).get<float>(), c["hit"].at(1).get<float>(), c["hit"].at(2).get<float>()};
+    const std::optional<TriangleHit> got = intersect_ray_triangle(ray, p0, p1, p2);
+    if (got.has_value() == expected.has_value() && (!got || same_hit(*got, *expected))) continue;
+    if (++failures <= 3) {
+      diagnose(ray, got, expected, glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) > 0);
+      ADD_FAILURE() << "case " << c.at("id") << ": ray " << ray << ", triangle " << p0 << " " << p1 << " " << p2
+                    << "\n  expected " << describe(expected) << "\n  got      " << describe(got);
+    }
+  }
+  EXPECT_EQ(failures, 0) << failures << " of " << data.at("cases").size() << " reference cases differ (seed "
+                         << data.at("seed") << ")";
+}
+
+GRADED_TEST(kStage, Stage03Triangle, WhittedImageMatchesReference, 1) {
+  // The floor's checkerboard is read through your barycentrics: swapped ones mirror it.
+  expect_image_matches_reference(kStage, "03_triangle", 0.05f, 0.005);
+}
+
+}  // namespace
+}  // namespace raylab::grading

@@ -1,0 +1,76 @@
+#include "support.h"
+
+#include "grading.h"
+
+#include "raylab/render.h"
+#include "raylab/scene_loader.h"
+#include "raylab/stages/01_camera_rays.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace raylab::grading {
+
+nlohmann::json to_json(const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+glm::vec3 vec3_from_json(const nlohmann::json& value) {
+  return {value.at(0).get<float>(), value.at(1).get<float>(), value.at(2).get<float>()};
+}
+
+nlohmann::json load_reference_cases(const std::string& stage_id) {
+  const std::string path = reference_path(stage_id + "_cases.json");
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("missing reference data " + path + " (run the regenerate tool)");
+  return nlohmann::json::parse(in);
+}
+
+std::string reference_image_name(const std::string& stage_id) { return stage_id + ".png"; }
+
+Image render_stage_image(int stage_number) {
+  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/whitted.json");
+  scene.camera.width = kImageWidth;
+  scene.camera.height = kImageHeight;
+  if (stage_number == 1) {
+    // Only camera rays: each pixel shows its ray's direction, (d + 1) / 2, as a colour.
+    Image image(kImageWidth, kImageHeight);
+    for (int y = 0; y < kImageHeight; ++y)
+      for (int x = 0; x < kImageWidth; ++x)
+        image.at(x, y) = 0.5f * (generate_camera_ray(scene.camera, x, y).direction + 1.0f);
+    return image;
+  }
+  if (stage_number == 2) scene.meshes.clear();  // spheres only
+  RenderSettings settings;
+  settings.max_depth = scene.max_depth;
+  return render(scene, settings);
+}
+
+void expect_image_matches_reference(int stage_number, const std::string& stage_id,
+                                    float channel_threshold, double max_fraction) {
+  hint_about_dependencies(stage_number);
+  const std::string directory = output_directory();
+  std::filesystem::create_directories(directory);
+  const std::string yours_path = directory + "/" + stage_id + "-yours.png";
+  const std::string comparison_path = directory + "/" + stage_id + ".png";
+
+  const Image rendered = render_stage_image(stage_number);
+  write_image(rendered, yours_path);
+  const Image yours = read_image(yours_path);
+  const Image expected = read_image(reference_path(reference_image_name(stage_id)));
+  const ImageDifference difference = compare_images(yours, expected, channel_threshold);
+  write_image(side_by_side_difference(yours, expected, 0.25f), comparison_path);
+
+  std::ostringstream note;
+  note << "image " << kImageWidth << "x" << kImageHeight << ": " << difference.pixels_over_threshold
+       << " pixels (" << 100.0 * difference.fraction_over_threshold << "%) differ by more than "
+       << channel_threshold << " (allowed: " << 100.0 * max_fraction << "%), RMS error "
+       << difference.rms_error << "; yours | reference | difference: " << comparison_path;
+  add_note(note.str());
+  EXPECT_LE(difference.fraction_over_threshold, max_fraction)
+      << "your picture differs from the reference: largest difference " << difference.max_error
+      << " at pixel (" << difference.max_x << ", " << difference.max_y << "). Open " << comparison_path;
+}
+
+}  // namespace raylab::grading

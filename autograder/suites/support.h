@@ -1,0 +1,52 @@
+// Helpers shared by the stage suites and the regenerate tool.
+#pragma once
+
+#include "raylab/image.h"
+#include "raylab/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <random>
+#include <string>
+
+namespace raylab::grading {
+
+// A seeded generator whose numbers are the same with every compiler and standard library
+// (std::uniform_real_distribution is not), so reference cases can be regenerated anywhere.
+class CaseRandom {
+ public:
+  explicit CaseRandom(std::uint32_t seed) : engine_(seed) {}
+  float uniform(float low, float high) {
+    return low + (high - low) * static_cast<float>(engine_() >> 8) * (1.0f / 16777216.0f);
+  }
+  int integer(int low, int high) {  // inclusive
+    return low + static_cast<int>(engine_() % static_cast<std::uint32_t>(high - low + 1));
+  }
+  glm::vec3 vec3(float low, float high) { return {uniform(low, high), uniform(low, high), uniform(low, high)}; }
+
+ private:
+  std::mt19937 engine_;
+};
+
+nlohmann::json to_json(const glm::vec3& v);
+glm::vec3 vec3_from_json(const nlohmann::json& value);
+
+// The checked-in reference cases of a stage: autograder/reference/<stage_id>_cases.json.
+nlohmann::json load_reference_cases(const std::string& stage_id);
+
+// The picture each stage's image test renders, the same for the student and the reference.
+// Stage 1: camera-ray directions as colours; 2: the spheres of the Whitted scene; 3: the
+// whole Whitted scene. kImageWidth x kImageHeight, small so grading stays fast.
+constexpr int kImageWidth = 320, kImageHeight = 240;
+Image render_stage_image(int stage_number);
+std::string reference_image_name(const std::string& stage_id);  // "<id>.png"
+
+// The image test: renders the stage's picture with the linked stage code, compares it with
+// the reference (both as 8-bit sRGB PNG, so quantisation is the same), writes
+// <output>/<stage_id>.png = yours | reference | difference, and fails when more than
+// max_fraction of the pixels differ by more than channel_threshold.
+void expect_image_matches_reference(int stage_number, const std::string& stage_id,
+                                    float channel_threshold, double max_fraction);
+
+}  // namespace raylab::grading

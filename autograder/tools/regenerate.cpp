@@ -1,0 +1,160 @@
+// autograder-regenerate: rebuilds autograder/reference/ from the solutions (instructors only;
+// built only when solutions/ exists). Deterministic: the same seed gives the same files, so
+// CI can check that what is checked in is what the solutions produce.
+//
+//   autograder-regenerate [--output DIR] [--seed N]
+#include "support.h"
+
+#include "raylab/stages/01_camera_rays.h"
+#include "raylab/stages/02_sphere.h"
+#include "raylab/stages/03_triangle.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace {
+
+using namespace raylab;
+using namespace raylab::grading;
+using nlohmann::json;
+
+void write_json(const std::string& path, const json& value) {
+  std::ofstream out(path);
+  out << value.dump(1) << "\n";
+  if (!out) throw std::runtime_error("cannot write " + path);
+  std::cout << "wrote " << path << "\n";
+}
+
+json camera_cases(std::uint32_t seed, int count) {
+  CaseRandom random(seed);
+  json cases = json::array();
+  while (static_cast<int>(cases.size()) < count) {
+    Camera camera;
+    camera.position = random.vec3(-10, 10);
+    camera.look_at = camera.position + random.vec3(-1, 1);
+    camera.up = random.vec3(-1, 1);
+    camera.fov_y_degrees = random.uniform(20, 120);
+    camera.width = random.integer(1, 1920);
+    camera.height = random.integer(1, 1080);
+    try {
+      validate_camera(camera);
+    } catch (const std::invalid_argument&) {
+      continue;
+    }
+    // Keep cameras whose basis is well conditioned: up far from the view direction.
+    const glm::vec3 forward = glm::normalize(camera.look_at - camera.position);
+    if (glm::length(glm::cross(forward, glm::normalize(camera.up))) < 0.2f) continue;
+    const int x = random.integer(0, camera.width - 1), y = random.integer(0, camera.height - 1);
+    cases.push_back({{"id", cases.size()}, {"position", to_json(camera.position)}, {"look_at", to_json(camera.look_at)},
+                     {"up", to_json(camera.up)}, {"fov_y_degrees", camera.fov_y_degrees}, {"width", camera.width},
+                     {"height", camera.height}, {"pixel_x", x}, {"pixel_y", y},
+                     {"direction", to_json(generate_camera_ray(camera, x, y).direction)}});
+  }
+  return cases;
+}
+
+json sphere_cases(std::uint32_t seed, int count) {
+  CaseRandom random(seed);
+  json cases = json::array();
+  while (static_cast<int>(cases.size()) < count) {
+    const glm::vec3 center = random.vec3(-10, 10);
+    const float radius = random.uniform(0.1f, 5.0f);
+    const bool inside = random.uniform(0, 1) < 0.15f;
+    const glm::vec3 origin = inside ? center + random.vec3(-0.5f, 0.5f) * radius : random.vec3(-20, 20);
+    // Aim near the sphere so that about half the rays hit.
+    const glm::vec3 target = center + random.vec3(-1.6f, 1.6f) * radius;
+    if (glm::length(target - origin) < 1e-3f) continue;
+    const glm::vec3 direction = glm::normalize(target - origin) * random.uniform(0.2f, 5.0f);
+    Ray ray;
+    ray.origin = origin;
+    ray.direction = direction;
+    ray.t_min = random.uniform(0, 1) < 0.3f ? random.uniform(0, 2) : 0.0f;
+    const bool finite_t_max = random.uniform(0, 1) < 0.3f;
+    ray.t_max = finite_t_max ? random.uniform(1, 30) : kInfinity;
+    // Leave out cases a correct float implementation may decide either way: near-tangent
+    // rays and hits within a hair of t_min or t_max (computed in double).
+    const glm::dvec3 o(origin - center), d(direction);
+    const double a = glm::dot(d, d), half_b = glm::dot(o, d), c = glm::dot(o, o) - double(radius) * radius;
+    const double discriminant = half_b * half_b - a * c;
+    if (std::fabs(discriminant) < 1e-3 * a * double(radius) * radius) continue;
+    bool ambiguous = false;
+    if (discriminant > 0)
+      for (double root : {(-half_b - std::sqrt(discriminant)) / a, (-half_b + std::sqrt(discriminant)) / a})
+        for (double limit : {double(ray.t_min), double(ray.t_max)})
+          if (std::isfinite(limit) && std::fabs(root - limit) < 1e-3 * std::max(1.0, std::fabs(limit))) ambiguous = true;
+    if (ambiguous) continue;
+    const std::optional<float> t = intersect_ray_sphere(ray, center, radius);
+    cases.push_back({{"id", cases.size()}, {"origin", to_json(origin)}, {"direction", to_json(direction)},
+                     {"t_min", ray.t_min}, {"t_max", finite_t_max ? json(ray.t_max) : json(nullptr)},
+                     {"center", to_json(center)}, {"radius", radius}, {"t_hit", t ? json(*t) : json(nullptr)}});
+  }
+  return cases;
+}
+
+json triangle_cases(std::uint32_t seed, int count) {
+  CaseRandom random(seed);
+  json cases = json::array();
+  while (static_cast<int>(cases.size()) < count) {
+    const glm::vec3 p0 = random.vec3(-5, 5), p1 = random.vec3(-5, 5), p2 = random.vec3(-5, 5);
+    const glm::vec3 normal = glm::cross(p1 - p0, p2 - p0);
+    if (glm::length(normal) < 0.5f) continue;  // keep triangles with a clear area
+    // Aim at a point with barycentrics in [-0.3, 1.3]: about half inside.
+    const float b1 = random.uniform(-0.3f, 1.3f), b2 = random.uniform(-0.3f, 1.3f);
+    const float b0 = 1.0f - b1 - b2;
+    const float margin = 1e-3f;
+    if (std::fabs(b1) < margin || std::fabs(b2) < margin || std::fabs(b0) < margin) continue;  // on an edge: either answer
+    const glm::vec3 target = b0 * p0 + b1 * p1 + b2 * p2;
+    const glm::vec3 origin = target + random.vec3(-8, 8);
+    const glm::vec3 direction = (target - origin) * random.uniform(0.2f, 3.0f);
+    if (std::fabs(glm::dot(glm::normalize(direction), glm::normalize(normal))) < 0.05f) continue;  // near-parallel
+    Ray ray;
+    ray.origin = origin;
+    ray.direction = direction;
+    ray.t_min = 0.0f;
+    const bool finite_t_max = random.uniform(0, 1) < 0.3f;
+    // t of the target is 1 / scale; keep t_max away from it.
+    const float t_target = glm::length(target - origin) / glm::length(direction);
+    ray.t_max = finite_t_max ? t_target * (random.uniform(0, 1) < 0.5f ? 0.7f : 1.3f) : kInfinity;
+    const std::optional<TriangleHit> hit = intersect_ray_triangle(ray, p0, p1, p2);
+    cases.push_back({{"id", cases.size()}, {"origin", to_json(origin)}, {"direction", to_json(direction)},
+                     {"t_min", ray.t_min}, {"t_max", finite_t_max ? json(ray.t_max) : json(nullptr)},
+                     {"p0", to_json(p0)}, {"p1", to_json(p1)}, {"p2", to_json(p2)},
+                     {"hit", hit ? json::array({hit->t_hit, hit->barycentric_b1, hit->barycentric_b2}) : json(nullptr)}});
+  }
+  return cases;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Regenerate the autograder's reference data from solutions/"};
+  std::string output = RAYLAB_REFERENCE_DIR;
+  std::uint32_t seed = 2026;
+  app.add_option("--output", output, "Folder to write into")->capture_default_str();
+  app.add_option("--seed", seed, "Seed of the random cases (a course may grade with its own)")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    std::filesystem::create_directories(output);
+    const struct {
+      const char* id;
+      json (*generate)(std::uint32_t, int);
+      int count;
+    } stages[] = {{"01_camera_rays", camera_cases, 200}, {"02_sphere", sphere_cases, 400}, {"03_triangle", triangle_cases, 400}};
+    for (std::size_t i = 0; i < std::size(stages); ++i) {
+      const std::uint32_t stage_seed = seed + static_cast<std::uint32_t>(i);
+      write_json(output + "/" + stages[i].id + "_cases.json",
+                 {{"stage", stages[i].id}, {"seed", stage_seed}, {"cases", stages[i].generate(stage_seed, stages[i].count)}});
+      const std::string image_path = output + "/" + reference_image_name(stages[i].id);
+      write_image(render_stage_image(static_cast<int>(i) + 1), image_path);
+      std::cout << "wrote " << image_path << "\n";
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "autograder-regenerate: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
