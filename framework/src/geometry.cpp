@@ -1,45 +1,212 @@
 #include "raylab/geometry.h"
 
+#include "raylab/error.h"
 #include "raylab/stages/02_sphere.h"
 #include "raylab/stages/03_triangle.h"
+#include "raylab/stages/04_box.h"
+#include "raylab/stages/05_bvh.h"
+
+#include <atomic>
+#include <cstdio>
 
 namespace raylab {
 
-SceneGeometry::SceneGeometry(const Scene& scene) : scene_(scene), spheres_(scene.spheres) {
+// What the primitive tests of one query share (the `void* context` of PrimitiveIntersector).
+struct SceneGeometry::Query {
+  const SceneGeometry* geometry;
+  HitRecord* record;
+  bool any_hit;
+  const Triangle* mesh_triangles = nullptr;  // the mesh being traversed: its first triangle
+  std::uint32_t mesh_first_triangle = 0;     // ... and that triangle's index in triangles_
+};
+
+namespace {
+
+// One line, once per process, however many scenes or threads: the student should see it,
+// not drown in it.
+void report_fallback_once(const NotImplemented& error) {
+  static std::atomic<bool> reported{false};
+  if (!reported.exchange(true))
+    std::fprintf(stderr, "raylab: stage %s not implemented yet: testing every primitive (slow)\n",
+                 error.stage_id().c_str());
+}
+
+Bounds3 triangle_bounds(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+  Bounds3 box;
+  box.extend(p0);
+  box.extend(p1);
+  box.extend(p2);
+  return box;
+}
+
+}  // namespace
+
+SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration)
+    : scene_(scene), spheres_(scene.spheres) {
   for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
     const TriangleMesh& mesh = scene.meshes[m];
-    for (std::uint32_t i = 0; i + 2 < mesh.indices.size(); i += 3)
-      triangles_.push_back({mesh.positions[mesh.indices[i]], mesh.positions[mesh.indices[i + 1]],
-                            mesh.positions[mesh.indices[i + 2]], m, i});
+    MeshPart part;
+    part.first_triangle = static_cast<std::uint32_t>(triangles_.size());
+    for (std::uint32_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+      const Triangle triangle{mesh.positions[mesh.indices[i]], mesh.positions[mesh.indices[i + 1]],
+                              mesh.positions[mesh.indices[i + 2]], m, i};
+      part.bounds.extend(triangle_bounds(triangle.p0, triangle.p1, triangle.p2));
+      triangles_.push_back(triangle);
+    }
+    part.triangle_count = static_cast<std::uint32_t>(triangles_.size()) - part.first_triangle;
+    meshes_.push_back(std::move(part));
   }
+  if (acceleration == Acceleration::Bvh) build_bvhs();
+}
+
+void SceneGeometry::build_bvhs() {
+  try {
+    for (MeshPart& mesh : meshes_) {
+      if (mesh.triangle_count <= kBruteForceLimit) continue;
+      Triangle* first = triangles_.data() + mesh.first_triangle;
+      std::vector<Bounds3> boxes;
+      boxes.reserve(mesh.triangle_count);
+      for (std::uint32_t i = 0; i < mesh.triangle_count; ++i)
+        boxes.push_back(triangle_bounds(first[i].p0, first[i].p1, first[i].p2));
+      mesh.bvh = build_bvh(boxes, kBvhLeafSize);
+      // Store the triangles in leaf order, so that a leaf's triangles are adjacent in memory;
+      // the BVH's primitive_order then becomes the identity.
+      std::vector<Triangle> reordered;
+      reordered.reserve(mesh.triangle_count);
+      for (std::uint32_t i = 0; i < mesh.triangle_count; ++i) {
+        const std::uint32_t original = mesh.bvh.primitive_order.at(i);
+        reordered.push_back(first[original < mesh.triangle_count ? original : 0]);
+        mesh.bvh.primitive_order[i] = i;
+      }
+      std::copy(reordered.begin(), reordered.end(), first);
+    }
+    const std::size_t object_count = spheres_.size() + meshes_.size();
+    if (object_count > kBruteForceLimit) {
+      std::vector<Bounds3> boxes;
+      boxes.reserve(object_count);
+      for (const Sphere& sphere : spheres_)
+        boxes.emplace_back(sphere.center - glm::vec3(sphere.radius), sphere.center + glm::vec3(sphere.radius));
+      for (const MeshPart& mesh : meshes_) boxes.push_back(mesh.bounds);
+      objects_bvh_ = build_bvh(boxes, kBvhLeafSize);
+    }
+    // A traversal needs the box test (stage 04_box) and intersect_bvh: find out now, with one
+    // query, whether they are still stubs, rather than in the middle of the render.
+    // The probe's intersector hits nothing, so that only stages 04 and 05 run here.
+    const Bvh* probe_bvh = !objects_bvh_.nodes.empty() ? &objects_bvh_ : nullptr;
+    for (const MeshPart& mesh : meshes_)
+      if (!probe_bvh && !mesh.bvh.nodes.empty()) probe_bvh = &mesh.bvh;
+    if (probe_bvh) {
+      Ray probe;
+      probe.origin = probe_bvh->nodes[0].bounds.centroid();  // inside the root's box
+      probe.direction = glm::vec3(0.0f, 0.0f, 1.0f);
+      (void)intersect_ray_box(probe, ray_direction_inverse_of(probe), probe_bvh->nodes[0].bounds);
+      const PrimitiveIntersector hits_nothing{
+          [](void*, const Ray&, std::uint32_t) -> std::optional<float> { return std::nullopt; }, nullptr};
+      BvhTraversalStats stats;
+      (void)intersect_bvh(*probe_bvh, probe, hits_nothing, /*any_hit=*/false, stats);
+    }
+  } catch (const NotImplemented& error) {
+    for (MeshPart& mesh : meshes_) mesh.bvh = Bvh();
+    objects_bvh_ = Bvh();
+    report_fallback_once(error);
+  }
+}
+
+std::size_t SceneGeometry::bvh_count() const {
+  std::size_t count = objects_bvh_.nodes.empty() ? 0 : 1;
+  for (const MeshPart& mesh : meshes_) count += mesh.bvh.nodes.empty() ? 0 : 1;
+  return count;
+}
+
+// ---- The primitive tests ----------------------------------------------------------------
+// Each is called with a ray whose t_max is the closest hit so far, so a hit it finds is the
+// new closest: it records it in the query's HitRecord unconditionally.
+
+std::optional<float> SceneGeometry::test_triangle(void* context, const Ray& ray, std::uint32_t triangle) {
+  Query& query = *static_cast<Query*>(context);
+  const Triangle& tri = query.mesh_triangles[triangle];
+  const std::optional<TriangleHit> hit = intersect_ray_triangle(ray, tri.p0, tri.p1, tri.p2);
+  if (!hit) return std::nullopt;
+  query.record->kind = Kind::Triangle;
+  query.record->index = query.mesh_first_triangle + triangle;
+  query.record->triangle_hit = *hit;
+  return hit->t_hit;
+}
+
+std::optional<float> SceneGeometry::test_object(void* context, const Ray& ray, std::uint32_t object) {
+  Query& query = *static_cast<Query*>(context);
+  return query.geometry->intersect_object(object, ray, query);
+}
+
+std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const Ray& ray, Query& query) const {
+  query.mesh_triangles = triangles_.data() + mesh.first_triangle;
+  query.mesh_first_triangle = mesh.first_triangle;
+  if (!mesh.bvh.nodes.empty()) {
+    BvhTraversalStats stats;
+    const PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
+    const std::optional<BvhHit> hit = intersect_bvh(mesh.bvh, ray, intersector, query.any_hit, stats);
+    if (!hit) return std::nullopt;
+    return hit->t_hit;
+  }
+  Ray search = ray;
+  std::optional<float> closest;
+  for (std::uint32_t i = 0; i < mesh.triangle_count; ++i) {
+    if (const std::optional<float> t = test_triangle(&query, search, i)) {
+      search.t_max = *t;
+      closest = t;
+      if (query.any_hit) break;
+    }
+  }
+  return closest;
+}
+
+std::optional<float> SceneGeometry::intersect_object(std::uint32_t object, const Ray& ray, Query& query) const {
+  if (object < spheres_.size()) {
+    const Sphere& sphere = spheres_[object];
+    const std::optional<float> t = intersect_ray_sphere(ray, sphere.center, sphere.radius);
+    if (t) {
+      query.record->kind = Kind::Sphere;
+      query.record->index = object;
+    }
+    return t;
+  }
+  return intersect_mesh(meshes_[object - spheres_.size()], ray, query);
+}
+
+std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& query) const {
+  if (!objects_bvh_.nodes.empty()) {
+    BvhTraversalStats stats;
+    const PrimitiveIntersector intersector{&SceneGeometry::test_object, &query};
+    const std::optional<BvhHit> hit = intersect_bvh(objects_bvh_, ray, intersector, query.any_hit, stats);
+    if (!hit) return std::nullopt;
+    return hit->t_hit;
+  }
+  // Few objects: each in turn (spheres first, as the brute force always did), t_max shrinking.
+  Ray search = ray;
+  std::optional<float> closest;
+  const auto object_count = static_cast<std::uint32_t>(spheres_.size() + meshes_.size());
+  for (std::uint32_t object = 0; object < object_count; ++object) {
+    if (const std::optional<float> t = intersect_object(object, search, query)) {
+      search.t_max = *t;
+      closest = t;
+      if (query.any_hit) break;
+    }
+  }
+  return closest;
 }
 
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
   // Find the closest t first (shrinking t_max after every hit), then fill the record once.
-  Ray search = ray;
-  Kind kind = Kind::None;
-  std::size_t index = 0;
-  TriangleHit triangle_hit;
-  for (std::size_t i = 0; i < spheres_.size(); ++i) {
-    if (const auto t = intersect_ray_sphere(search, spheres_[i].center, spheres_[i].radius)) {
-      search.t_max = *t;
-      kind = Kind::Sphere;
-      index = i;
-    }
-  }
-  for (std::size_t i = 0; i < triangles_.size(); ++i) {
-    const Triangle& tri = triangles_[i];
-    if (const auto hit = intersect_ray_triangle(search, tri.p0, tri.p1, tri.p2)) {
-      search.t_max = hit->t_hit;
-      kind = Kind::Triangle;
-      index = i;
-      triangle_hit = *hit;
-    }
-  }
-  if (kind == Kind::None) return std::nullopt;
+  HitRecord record;
+  Query query{this, &record, /*any_hit=*/false};
+  const std::optional<float> t_hit = intersect_objects(ray, query);
+  if (!t_hit || record.kind == Kind::None) return std::nullopt;
+  const Kind kind = record.kind;
+  const std::size_t index = record.index;
+  const TriangleHit& triangle_hit = record.triangle_hit;
 
   SurfaceHit hit;
-  hit.t_hit = search.t_max;
+  hit.t_hit = *t_hit;
   if (kind == Kind::Sphere) {
     const Sphere& sphere = spheres_[index];
     // Re-project the hit point onto the surface: its error is then a few ulps (pbrt-v4 6.8.5).
@@ -72,11 +239,9 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
 }
 
 bool SceneGeometry::occluded(const Ray& ray) const {
-  for (const Sphere& sphere : spheres_)
-    if (intersect_ray_sphere(ray, sphere.center, sphere.radius)) return true;
-  for (const Triangle& tri : triangles_)
-    if (intersect_ray_triangle(ray, tri.p0, tri.p1, tri.p2)) return true;
-  return false;
+  HitRecord record;
+  Query query{this, &record, /*any_hit=*/true};
+  return intersect_objects(ray, query).has_value();
 }
 
 }  // namespace raylab

@@ -1,9 +1,18 @@
 // The scene's geometry as the renderer sees it: closest-hit and any-hit queries over all
 // spheres and triangles, calling the stage functions (02_sphere, 03_triangle) for each test.
+//
+// Acceleration (stages 04_box, 05_bvh): every mesh of more than a few triangles gets its own
+// BVH over its triangles, and a scene of more than a few objects (spheres and meshes) a
+// top-level BVH over the objects' boxes; smaller sets are tested one by one. If build_bvh,
+// intersect_bvh or intersect_ray_box is still a stub (throws NotImplemented), the geometry
+// says so once on stderr ("stage 05_bvh not implemented yet: testing every primitive (slow)")
+// and tests every primitive: a student who has not reached stage 5 can still render.
 #pragma once
 
 #include "raylab/ray.h"
 #include "raylab/scene.h"
+#include "raylab/stages/03_triangle.h"
+#include "raylab/stages/05_bvh.h"
 
 #include <cstdint>
 #include <optional>
@@ -22,9 +31,16 @@ struct SurfaceHit {
   std::uint32_t material = 0;
 };
 
+// How SceneGeometry finds hits.
+enum class Acceleration {
+  Bvh,         // BVHs where they pay (the default), or every primitive if stage 5 is a stub
+  BruteForce,  // test every primitive (an oracle for tests, a baseline for bench/)
+};
+
 class SceneGeometry {
  public:
-  explicit SceneGeometry(const Scene& scene);
+  // The scene must outlive the geometry (its meshes' texture coordinates are read at hits).
+  explicit SceneGeometry(const Scene& scene, Acceleration acceleration = Acceleration::Bvh);
 
   // The closest hit in (ray.t_min, ray.t_max), or nullopt.
   std::optional<SurfaceHit> intersect(const Ray& ray) const;
@@ -33,6 +49,14 @@ class SceneGeometry {
 
   std::size_t sphere_count() const { return spheres_.size(); }
   std::size_t triangle_count() const { return triangles_.size(); }
+  // The number of BVHs in use (per mesh and top level); 0 when every primitive is tested.
+  std::size_t bvh_count() const;
+
+  // Over the objects: spheres first, then meshes. Top-level BVHs are built from more than
+  // this many objects, per-mesh BVHs from more than this many triangles; leaves hold at most
+  // kBvhLeafSize primitives.
+  static constexpr std::size_t kBruteForceLimit = 4;
+  static constexpr int kBvhLeafSize = 4;
 
  private:
   struct Triangle {
@@ -41,10 +65,34 @@ class SceneGeometry {
     std::uint32_t first_index;  // into the mesh's indices: its 3 vertices start here
   };
   enum class Kind : std::uint8_t { None, Sphere, Triangle };
+  // One mesh's triangles: triangles_[first_triangle .. first_triangle + triangle_count), in
+  // its BVH's leaf order when it has one (then the BVH's primitive_order is the identity).
+  struct MeshPart {
+    std::uint32_t first_triangle = 0;
+    std::uint32_t triangle_count = 0;
+    Bounds3 bounds;
+    Bvh bvh;  // empty: test every triangle
+  };
+  // The closest hit so far, written by the primitive tests of one query.
+  struct HitRecord {
+    Kind kind = Kind::None;
+    std::uint32_t index = 0;  // into spheres_ or triangles_
+    TriangleHit triangle_hit;
+  };
+  struct Query;
+
+  void build_bvhs();
+  std::optional<float> intersect_objects(const Ray& ray, Query& query) const;
+  std::optional<float> intersect_object(std::uint32_t object, const Ray& ray, Query& query) const;
+  std::optional<float> intersect_mesh(const MeshPart& mesh, const Ray& ray, Query& query) const;
+  static std::optional<float> test_object(void* query, const Ray& ray, std::uint32_t object);
+  static std::optional<float> test_triangle(void* query, const Ray& ray, std::uint32_t triangle);
 
   const Scene& scene_;
   std::vector<Sphere> spheres_;
   std::vector<Triangle> triangles_;
+  std::vector<MeshPart> meshes_;
+  Bvh objects_bvh_;  // over spheres_ then meshes_; empty: test every object
 };
 
 }  // namespace raylab
