@@ -1,0 +1,594 @@
+// raylab-bench-bvh: how fast are the reference BVHs (stage 05_bvh), and how far from Embree?
+//
+//   build-bvh/bin/raylab-bench-bvh [--triangles N] [--threads T] [Google Benchmark flags]
+//
+// Meshes: the Stanford bunny (scenes/bunny.obj, 3674 triangles) and a displaced sphere of
+// about N triangles (default 1,000,000) made by make_displaced_sphere: no big files.
+// Accelerators: brute force (bunny only: every ray tests every triangle), the reference
+// median-split BVH, the reference binned-SAH BVH, and Embree 3 when CMake found it.
+// Rays: "primary" (a 512 x 384 camera framing the mesh) and "random" (origins spread over
+// 1.5 times the mesh's box, directions uniform on the sphere), each traced as closest hit
+// and as any hit (t_max = infinity). Each timed iteration traces the whole set on one thread
+// (with --threads T > 1, a second series spreads the rays over T threads in chunks).
+//
+// After Google Benchmark's own table the program prints a summary: build times, and each
+// traversal as Mrays/s and as a ratio to Embree's time in the same run (2.0 = twice Embree's
+// time), with the exact work per ray (nodes visited, triangles tested: identical on every
+// machine) and the SAH cost of each tree. Before timing, every BVH's closest hits are checked
+// ray by ray against an oracle (brute force on the bunny, Embree or the other BVH otherwise).
+#include "raylab/bounds.h"
+#include "raylab/camera.h"
+#include "raylab/mesh_generator.h"
+#include "raylab/scene_loader.h"
+#include "raylab/stages/01_camera_rays.h"
+#include "raylab/stages/03_triangle.h"
+#include "raylab/stages/05_bvh.h"
+
+#include <benchmark/benchmark.h>
+
+#ifdef RAYLAB_HAVE_EMBREE
+#include <embree3/rtcore.h>
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using namespace raylab;
+
+constexpr int kLeafSize = 4;                       // as the renderer (SceneGeometry)
+constexpr int kPrimaryWidth = 512, kPrimaryHeight = 384;
+constexpr std::size_t kRandomRayCount = kPrimaryWidth * kPrimaryHeight;
+constexpr std::size_t kBruteForceStride = 16;      // brute force traces every 16th ray
+
+// ---- Deterministic inputs ---------------------------------------------------------------
+
+std::uint64_t splitmix64(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+float unit_float(std::uint64_t& state) {  // [0, 1), 24 random bits: the same everywhere
+  return static_cast<float>(splitmix64(state) >> 40) * (1.0f / 16777216.0f);
+}
+
+struct TestMesh {
+  std::string name;
+  std::vector<glm::vec3> corners;  // 3 per triangle
+  Bounds3 bounds;
+  bool brute_force = false;        // small enough to trace with brute force
+  std::size_t triangle_count() const { return corners.size() / 3; }
+};
+
+TestMesh make_test_mesh(const std::string& name, const TriangleMesh& mesh, bool brute_force) {
+  TestMesh test{name, {}, {}, brute_force};
+  test.corners.reserve(mesh.indices.size());
+  for (std::uint32_t index : mesh.indices) {
+    test.corners.push_back(mesh.positions[index]);
+    test.bounds.extend(mesh.positions[index]);
+  }
+  return test;
+}
+
+struct RaySet {
+  std::string name;
+  std::vector<Ray> rays;
+};
+
+RaySet primary_rays(const Bounds3& bounds) {
+  Camera camera;
+  const glm::vec3 center = bounds.centroid();
+  const float radius = 0.5f * glm::length(bounds.extent());
+  camera.look_at = center;
+  camera.position = center + 2.4f * radius * glm::normalize(glm::vec3(-0.45f, 0.35f, 1.0f));
+  camera.fov_y_degrees = 40.0f;
+  camera.width = kPrimaryWidth;
+  camera.height = kPrimaryHeight;
+  RaySet set{"primary", {}};
+  set.rays.reserve(static_cast<std::size_t>(camera.width) * camera.height);
+  for (int y = 0; y < camera.height; ++y)
+    for (int x = 0; x < camera.width; ++x) set.rays.push_back(generate_camera_ray(camera, x, y));
+  return set;
+}
+
+RaySet random_rays(const Bounds3& bounds, std::uint64_t seed) {
+  RaySet set{"random", {}};
+  set.rays.reserve(kRandomRayCount);
+  const glm::vec3 center = bounds.centroid(), half = 0.75f * bounds.extent();
+  std::uint64_t state = seed;
+  while (set.rays.size() < kRandomRayCount) {
+    Ray ray;
+    ray.origin = center + half * glm::vec3(2.0f * unit_float(state) - 1.0f, 2.0f * unit_float(state) - 1.0f,
+                                           2.0f * unit_float(state) - 1.0f);
+    // Uniform direction: rejection from the cube, then normalise.
+    glm::vec3 d;
+    do {
+      d = glm::vec3(2.0f * unit_float(state) - 1.0f, 2.0f * unit_float(state) - 1.0f,
+                    2.0f * unit_float(state) - 1.0f);
+    } while (glm::dot(d, d) > 1.0f || glm::dot(d, d) < 1e-4f);
+    ray.direction = glm::normalize(d);
+    set.rays.push_back(ray);
+  }
+  return set;
+}
+
+// ---- The reference BVHs, with triangles in leaf order (as the renderer stores them) ----
+
+struct TriangleContext {
+  const glm::vec3* corners;
+  TriangleHit best;  // the renderer keeps the barycentrics of the best hit: so do we
+};
+
+std::optional<float> test_triangle(void* context, const Ray& ray, std::uint32_t triangle) {
+  auto& ctx = *static_cast<TriangleContext*>(context);
+  const glm::vec3* p = ctx.corners + 3 * static_cast<std::size_t>(triangle);
+  const std::optional<TriangleHit> hit = intersect_ray_triangle(ray, p[0], p[1], p[2]);
+  if (!hit) return std::nullopt;
+  ctx.best = *hit;
+  return hit->t_hit;
+}
+
+std::vector<Bounds3> triangle_boxes(const TestMesh& mesh) {
+  std::vector<Bounds3> boxes(mesh.triangle_count());
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (int k = 0; k < 3; ++k) boxes[i].extend(mesh.corners[3 * i + k]);
+  return boxes;
+}
+
+struct ReferenceBvh {
+  std::string name;  // "median" or "sah"
+  Bvh bvh;
+  std::vector<glm::vec3> corners;  // in leaf order; bvh.primitive_order is the identity
+};
+
+ReferenceBvh build_reference(const TestMesh& mesh, bool sah) {
+  ReferenceBvh result{sah ? "sah" : "median", {}, {}};
+  const std::vector<Bounds3> boxes = triangle_boxes(mesh);
+  result.bvh = sah ? build_bvh_sah(boxes, kLeafSize) : build_bvh(boxes, kLeafSize);
+  result.corners.reserve(mesh.corners.size());
+  for (std::uint32_t& primitive : result.bvh.primitive_order) {
+    for (int k = 0; k < 3; ++k) result.corners.push_back(mesh.corners[3 * std::size_t(primitive) + k]);
+    primitive = static_cast<std::uint32_t>(&primitive - result.bvh.primitive_order.data());
+  }
+  return result;
+}
+
+// Traces rays[begin, end) (every `stride`-th); writes t (infinity for a miss) when t_out.
+void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std::size_t begin,
+                     std::size_t end, bool any_hit, float* t_out, BvhTraversalStats& stats) {
+  TriangleContext context{tree.corners.data(), {}};
+  const PrimitiveIntersector intersector{&test_triangle, &context};
+  for (std::size_t i = begin; i < end; ++i) {
+    const std::optional<BvhHit> hit = intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
+    if (t_out) t_out[i] = hit ? hit->t_hit : kInfinity;
+    benchmark::DoNotOptimize(hit);
+  }
+}
+
+void trace_brute_force(const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
+                       float* t_out, BvhTraversalStats& stats) {
+  TriangleContext context{mesh.corners.data(), {}};
+  const auto count = static_cast<std::uint32_t>(mesh.triangle_count());
+  for (std::size_t i = 0; i < rays.size(); i += kBruteForceStride) {
+    Ray search = rays[i];
+    float t_best = kInfinity;
+    for (std::uint32_t triangle = 0; triangle < count; ++triangle) {
+      ++stats.primitives_tested;
+      if (const std::optional<float> t = test_triangle(&context, search, triangle)) {
+        search.t_max = t_best = *t;
+        if (any_hit) break;
+      }
+    }
+    if (t_out) t_out[i] = t_best;
+    benchmark::DoNotOptimize(t_best);
+  }
+}
+
+// ---- Embree 3 -----------------------------------------------------------------------------
+
+#ifdef RAYLAB_HAVE_EMBREE
+struct EmbreeScene {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  EmbreeScene() = default;
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+  ~EmbreeScene() {
+    if (scene) rtcReleaseScene(scene);
+  }
+};
+
+RTCDevice embree_device(int threads) {
+  const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
+  RTCDevice device = rtcNewDevice(config.c_str());
+  if (!device) {
+    std::fprintf(stderr, "raylab-bench-bvh: rtcNewDevice failed (error %d)\n", rtcGetDeviceError(nullptr));
+    std::exit(1);
+  }
+  return device;
+}
+
+// Default build quality (medium), as an application would start; a static scene.
+void build_embree(EmbreeScene& out, RTCDevice device, const TestMesh& mesh) {
+  if (out.scene) rtcReleaseScene(out.scene);
+  out.device = device;
+  out.scene = rtcNewScene(device);
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  const std::size_t triangles = mesh.triangle_count();
+  // Embree's own buffers are aligned and padded as it wants; one vertex per corner.
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.corners.size()));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles));
+  std::memcpy(vertices, mesh.corners.data(), mesh.corners.size() * sizeof(glm::vec3));
+  for (std::size_t i = 0; i < 3 * triangles; ++i) indices[i] = static_cast<unsigned>(i);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(out.scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(out.scene);
+}
+
+void trace_embree(const EmbreeScene& embree, const std::vector<Ray>& rays, std::size_t begin,
+                  std::size_t end, bool any_hit, float* t_out) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  for (std::size_t i = begin; i < end; ++i) {
+    const Ray& ray = rays[i];
+    RTCRayHit query;
+    query.ray.org_x = ray.origin.x;
+    query.ray.org_y = ray.origin.y;
+    query.ray.org_z = ray.origin.z;
+    query.ray.dir_x = ray.direction.x;
+    query.ray.dir_y = ray.direction.y;
+    query.ray.dir_z = ray.direction.z;
+    query.ray.tnear = ray.t_min;
+    query.ray.tfar = ray.t_max;
+    query.ray.time = 0.0f;
+    query.ray.mask = 0xffffffffu;
+    query.ray.id = 0;
+    query.ray.flags = 0;
+    float t = kInfinity;
+    if (any_hit) {
+      rtcOccluded1(embree.scene, &context, &query.ray);
+      if (query.ray.tfar < 0.0f) t = 0.0f;  // occluded: Embree sets tfar to -infinity
+    } else {
+      query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(embree.scene, &context, &query);
+      if (query.hit.geomID != RTC_INVALID_GEOMETRY_ID) t = query.ray.tfar;
+    }
+    if (t_out) t_out[i] = t;
+    benchmark::DoNotOptimize(t);
+  }
+}
+#endif
+
+// ---- Running on several threads: contiguous chunks of the ray set ----------------------
+
+template <typename TraceChunk>
+void parallel_for_chunks(std::size_t count, int threads, TraceChunk&& trace_chunk) {
+  if (threads <= 1) {
+    trace_chunk(std::size_t{0}, count);
+    return;
+  }
+  std::vector<std::thread> workers;
+  const std::size_t chunk = (count + static_cast<std::size_t>(threads) - 1) / static_cast<std::size_t>(threads);
+  for (int t = 0; t < threads; ++t) {
+    const std::size_t begin = std::min(count, chunk * static_cast<std::size_t>(t));
+    const std::size_t end = std::min(count, begin + chunk);
+    workers.emplace_back([&trace_chunk, begin, end] { trace_chunk(begin, end); });
+  }
+  for (std::thread& worker : workers) worker.join();
+}
+
+// ---- Collecting Google Benchmark's results for the summary ------------------------------
+
+class CollectingReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    // Keyed by the registered name (without "/iterations:3", "/real_time"); with
+    // --benchmark_repetitions the fastest repetition is kept: the least disturbed by load.
+    for (const Run& run : runs) {
+      if (run.error_occurred || run.iterations <= 0 || run.run_type != Run::RT_Iteration) continue;
+      const double s = run.real_accumulated_time / static_cast<double>(run.iterations);
+      const auto [it, inserted] = seconds_per_iteration.emplace(run.run_name.function_name, s);
+      if (!inserted) it->second = std::min(it->second, s);
+    }
+  }
+  std::map<std::string, double> seconds_per_iteration;
+};
+
+// One row of the summary: what was traced, and its exact work.
+struct TraceRow {
+  std::string mesh, rays, query, accelerator;
+  int threads;
+  std::size_t ray_count;  // rays traced per iteration
+  double nodes_per_ray, triangles_per_ray;
+  bool has_counts;
+};
+
+struct Fixture {
+  TestMesh mesh;
+  std::vector<RaySet> ray_sets;
+  std::vector<ReferenceBvh> trees;
+};
+
+std::string trace_name(const std::string& mesh, const std::string& rays, const std::string& query,
+                       const std::string& accelerator, int threads) {
+  return "trace/" + mesh + "/" + rays + "/" + query + "/" + accelerator + "/threads:" + std::to_string(threads);
+}
+
+// Compares closest-hit distances ray by ray; returns how many rays disagree.
+std::size_t count_disagreements(const std::vector<float>& a, const std::vector<float>& b, std::size_t stride) {
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < a.size(); i += stride) {
+    const bool hit_a = a[i] < kInfinity, hit_b = b[i] < kInfinity;
+    if (hit_a != hit_b || (hit_a && std::fabs(a[i] - b[i]) > 1e-4f * std::max(1.0f, a[i]))) ++bad;
+  }
+  return bad;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Our own flags first; the rest go to Google Benchmark.
+  std::uint32_t large_triangles = 1000000;
+  int threads = 1;
+  std::vector<char*> benchmark_args{argv[0]};
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--triangles") && i + 1 < argc) large_triangles = static_cast<std::uint32_t>(std::atol(argv[++i]));
+    else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::max(1, std::atoi(argv[++i]));
+    else benchmark_args.push_back(argv[i]);
+  }
+  int benchmark_argc = static_cast<int>(benchmark_args.size());
+  benchmark::Initialize(&benchmark_argc, benchmark_args.data());
+
+  std::vector<std::unique_ptr<Fixture>> fixtures;
+  try {
+    const TriangleMesh bunny = load_obj_mesh(std::string(RAYLAB_SOURCE_DIR) + "/scenes/bunny.obj");
+    fixtures.push_back(std::make_unique<Fixture>(Fixture{make_test_mesh("bunny", bunny, true), {}, {}}));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "raylab-bench-bvh: %s\n", e.what());
+    return 1;
+  }
+  const TriangleMesh sphere = make_displaced_sphere(large_triangles, 1.0f, 1);
+  const std::string sphere_name = "sphere" + std::to_string(sphere.triangle_count() / 1000) + "k";
+  fixtures.push_back(std::make_unique<Fixture>(Fixture{make_test_mesh(sphere_name, sphere, false), {}, {}}));
+
+#ifdef RAYLAB_HAVE_EMBREE
+  RTCDevice device_single = embree_device(1);
+  std::vector<std::unique_ptr<EmbreeScene>> embree_scenes;
+#endif
+
+  std::vector<TraceRow> rows;
+  std::printf("raylab-bench-bvh: leaf size %d, %d x %d primary rays, %zu random rays, brute force on every %zu-th ray\n",
+              kLeafSize, kPrimaryWidth, kPrimaryHeight, kRandomRayCount, kBruteForceStride);
+  std::printf("\nTrees and correctness (closest hits compared ray by ray):\n");
+  for (auto& fixture_pointer : fixtures) {
+    Fixture& f = *fixture_pointer;
+    f.ray_sets.push_back(primary_rays(f.mesh.bounds));
+    f.ray_sets.push_back(random_rays(f.mesh.bounds, 20260101));
+    f.trees.push_back(build_reference(f.mesh, false));
+    f.trees.push_back(build_reference(f.mesh, true));
+    for (const ReferenceBvh& tree : f.trees) {
+      std::printf("  %-12s %-7s %9zu triangles  %9zu nodes  depth %2d  SAH cost %8.2f\n",
+                  f.mesh.name.c_str(), tree.name.c_str(), f.mesh.triangle_count(), tree.bvh.nodes.size(),
+                  bvh_depth(tree.bvh), bvh_sah_cost(tree.bvh));
+    }
+#ifdef RAYLAB_HAVE_EMBREE
+    embree_scenes.push_back(std::make_unique<EmbreeScene>());
+    build_embree(*embree_scenes.back(), device_single, f.mesh);
+    const EmbreeScene* embree = embree_scenes.back().get();
+#endif
+    // Correctness and exact counts (single-threaded, untimed).
+    for (const RaySet& set : f.ray_sets) {
+      for (bool any_hit : {false, true}) {
+        const std::string query = any_hit ? "any" : "closest";
+        std::vector<float> oracle(set.rays.size(), kInfinity);
+        std::string oracle_name;
+        std::size_t stride = 1;
+        if (f.mesh.brute_force) {
+          BvhTraversalStats stats;
+          trace_brute_force(f.mesh, set.rays, any_hit, oracle.data(), stats);
+          oracle_name = "brute force";
+          stride = kBruteForceStride;
+          const double traced = static_cast<double>((set.rays.size() + stride - 1) / stride);
+          rows.push_back({f.mesh.name, set.name, query, "brute", 1, set.rays.size() / stride + (set.rays.size() % stride != 0),
+                          0.0, static_cast<double>(stats.primitives_tested) / traced, true});
+        }
+#ifdef RAYLAB_HAVE_EMBREE
+        std::vector<float> embree_t(set.rays.size(), kInfinity);
+        trace_embree(*embree, set.rays, 0, set.rays.size(), any_hit, embree_t.data());
+        rows.push_back({f.mesh.name, set.name, query, "embree", 1, set.rays.size(), 0.0, 0.0, false});
+        if (!f.mesh.brute_force) {
+          oracle = embree_t;
+          oracle_name = "Embree";
+        }
+#endif
+        for (const ReferenceBvh& tree : f.trees) {
+          std::vector<float> t(set.rays.size(), kInfinity);
+          BvhTraversalStats stats;
+          trace_reference(tree, set.rays, 0, set.rays.size(), any_hit, t.data(), stats);
+          const auto n = static_cast<double>(set.rays.size());
+          rows.push_back({f.mesh.name, set.name, query, tree.name, 1, set.rays.size(),
+                          static_cast<double>(stats.nodes_visited) / n,
+                          static_cast<double>(stats.primitives_tested) / n, true});
+          if (oracle_name.empty()) {  // no Embree, no brute force: the other tree is the oracle
+            if (&tree == &f.trees.front()) {
+              oracle = t;
+              continue;
+            }
+            oracle_name = f.trees.front().name + " BVH";
+          }
+          // Any hit: only "hit or not" must agree.
+          std::vector<float> compared = t;
+          if (any_hit)
+            for (std::size_t i = 0; i < t.size(); ++i) {
+              compared[i] = t[i] < kInfinity ? 0.0f : kInfinity;
+              oracle[i] = oracle[i] < kInfinity ? 0.0f : kInfinity;
+            }
+          const std::size_t bad = count_disagreements(compared, oracle, stride);
+          std::printf("  %-12s %-7s %-7s %-7s vs %-12s: %zu of %zu rays disagree%s\n", f.mesh.name.c_str(),
+                      tree.name.c_str(), set.name.c_str(), query.c_str(), oracle_name.c_str(), bad,
+                      set.rays.size() / stride, bad ? "  <-- CHECK" : "");
+        }
+      }
+    }
+    for (const ReferenceBvh& tree : f.trees) {
+      const std::string problem = bvh_invariant_violation(tree.bvh, [&] {
+        // The tree's primitives are now in leaf order: their boxes in that order.
+        std::vector<Bounds3> boxes(tree.corners.size() / 3);
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+          for (int k = 0; k < 3; ++k) boxes[i].extend(tree.corners[3 * i + k]);
+        return boxes;
+      }(), kLeafSize);
+      std::printf("  %-12s %-7s invariants: %s\n", f.mesh.name.c_str(), tree.name.c_str(),
+                  problem.empty() ? "all hold" : problem.c_str());
+    }
+  }
+  std::printf("\n");
+  std::fflush(stdout);
+
+  // ---- Register the timed runs ------------------------------------------------------------
+  for (auto& fixture_pointer : fixtures) {
+    Fixture* f = fixture_pointer.get();
+    const int build_iterations = f->mesh.triangle_count() > 100000 ? 3 : 50;
+    auto boxes = std::make_shared<std::vector<Bounds3>>(triangle_boxes(f->mesh));
+    for (bool sah : {false, true}) {
+      benchmark::RegisterBenchmark(("build/" + f->mesh.name + (sah ? "/sah" : "/median")).c_str(),
+                                   [boxes, sah](benchmark::State& state) {
+                                     for (auto _ : state) {
+                                       Bvh bvh = sah ? build_bvh_sah(*boxes, kLeafSize) : build_bvh(*boxes, kLeafSize);
+                                       benchmark::DoNotOptimize(bvh.nodes.data());
+                                     }
+                                   })
+          ->Unit(benchmark::kMillisecond)->Iterations(build_iterations);
+    }
+#ifdef RAYLAB_HAVE_EMBREE
+    benchmark::RegisterBenchmark(("build/" + f->mesh.name + "/embree").c_str(),
+                                 [f, device_single](benchmark::State& state) {
+                                   for (auto _ : state) {
+                                     EmbreeScene scene;
+                                     build_embree(scene, device_single, f->mesh);
+                                   }
+                                 })
+        ->Unit(benchmark::kMillisecond)->Iterations(build_iterations);
+    const std::size_t fixture_index = static_cast<std::size_t>(&fixture_pointer - fixtures.data());
+    EmbreeScene* embree = embree_scenes[fixture_index].get();
+#endif
+    for (const RaySet& set : f->ray_sets) {
+      const RaySet* rays = &set;
+      for (bool any_hit : {false, true}) {
+        const std::string query = any_hit ? "any" : "closest";
+        if (f->mesh.brute_force)
+          benchmark::RegisterBenchmark(trace_name(f->mesh.name, set.name, query, "brute", 1).c_str(),
+                                       [f, rays, any_hit](benchmark::State& state) {
+                                         for (auto _ : state) {
+                                           BvhTraversalStats stats;
+                                           trace_brute_force(f->mesh, rays->rays, any_hit, nullptr, stats);
+                                         }
+                                       })
+              ->Unit(benchmark::kMillisecond);
+        for (int thread_count : {1, threads}) {
+#ifdef RAYLAB_HAVE_EMBREE
+          benchmark::RegisterBenchmark(trace_name(f->mesh.name, set.name, query, "embree", thread_count).c_str(),
+                                       [embree, rays, any_hit, thread_count](benchmark::State& state) {
+                                         for (auto _ : state)
+                                           parallel_for_chunks(rays->rays.size(), thread_count,
+                                                               [&](std::size_t begin, std::size_t end) {
+                                                                 trace_embree(*embree, rays->rays, begin, end, any_hit, nullptr);
+                                                               });
+                                       })
+              ->Unit(benchmark::kMillisecond)->UseRealTime();
+#endif
+          for (const ReferenceBvh& tree : f->trees) {
+            const ReferenceBvh* tree_pointer = &tree;
+            benchmark::RegisterBenchmark(trace_name(f->mesh.name, set.name, query, tree.name, thread_count).c_str(),
+                                         [tree_pointer, rays, any_hit, thread_count](benchmark::State& state) {
+                                           for (auto _ : state)
+                                             parallel_for_chunks(rays->rays.size(), thread_count,
+                                                                 [&](std::size_t begin, std::size_t end) {
+                                                                   BvhTraversalStats stats;
+                                                                   trace_reference(*tree_pointer, rays->rays, begin, end,
+                                                                                   any_hit, nullptr, stats);
+                                                                 });
+                                         })
+                ->Unit(benchmark::kMillisecond)->UseRealTime();
+          }
+          if (threads == 1) break;  // {1, 1}: once
+        }
+      }
+    }
+  }
+
+  CollectingReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  const auto& seconds = reporter.seconds_per_iteration;
+  auto find_seconds = [&](const std::string& name) -> double {
+    const auto it = seconds.find(name);
+    return it == seconds.end() ? 0.0 : it->second;
+  };
+
+  // ---- Summary ------------------------------------------------------------------------------
+  std::printf("\nBuild times (one thread; Embree: device threads=1, default quality):\n");
+  std::printf("  %-12s %-8s %10s %12s\n", "mesh", "builder", "ms", "vs Embree");
+  for (const auto& f : fixtures)
+    for (const char* builder : {"median", "sah", "embree"}) {
+      const double s = find_seconds("build/" + f->mesh.name + "/" + builder);
+      const double e = find_seconds("build/" + f->mesh.name + "/embree");
+      if (s <= 0.0) continue;
+      char ratio[32] = "n/a";
+      if (e > 0.0) std::snprintf(ratio, sizeof ratio, "%.2fx", s / e);
+      std::printf("  %-12s %-8s %10.2f %12s\n", f->mesh.name.c_str(), builder, s * 1e3, ratio);
+    }
+
+  std::printf("\nTraversal (time vs Embree: this accelerator's time per ray / Embree's, same rays,\n"
+              "same threads; nodes and triangles per ray are exact counts, single-threaded pass):\n");
+  std::printf("  %-12s %-8s %-8s %-7s %-8s %9s %12s %11s %11s\n", "mesh", "rays", "query", "threads", "accel",
+              "Mrays/s", "vs Embree", "nodes/ray", "tris/ray");
+  for (const TraceRow& row : rows) {
+    for (int thread_count : {1, threads}) {
+      if (thread_count > 1 && row.accelerator == "brute") continue;
+      const double s = find_seconds(trace_name(row.mesh, row.rays, row.query, row.accelerator, thread_count));
+      const double e = find_seconds(trace_name(row.mesh, row.rays, row.query, "embree", thread_count));
+      if (s <= 0.0) {
+        if (threads == 1 || thread_count > 1) break;
+        continue;
+      }
+      // Per ray: brute force traces a subset of the rays, Embree always the whole set.
+      const double per_ray = s / static_cast<double>(row.ray_count);
+      char ratio[32] = "n/a";
+      double embree_per_ray = 0.0;
+      for (const TraceRow& other : rows)
+        if (other.mesh == row.mesh && other.rays == row.rays && other.query == row.query && other.accelerator == "embree")
+          embree_per_ray = e / static_cast<double>(other.ray_count);
+      if (embree_per_ray > 0.0) std::snprintf(ratio, sizeof ratio, "%.2fx", per_ray / embree_per_ray);
+      char nodes[32] = "-", triangles[32] = "-";
+      if (row.has_counts) {
+        if (row.accelerator != "brute") std::snprintf(nodes, sizeof nodes, "%.1f", row.nodes_per_ray);
+        std::snprintf(triangles, sizeof triangles, "%.1f", row.triangles_per_ray);
+      }
+      std::printf("  %-12s %-8s %-8s %-7d %-8s %9.2f %12s %11s %11s\n", row.mesh.c_str(), row.rays.c_str(),
+                  row.query.c_str(), thread_count, row.accelerator.c_str(), 1e-6 / per_ray, ratio, nodes, triangles);
+      if (threads == 1) break;
+    }
+  }
+#ifdef RAYLAB_HAVE_EMBREE
+  embree_scenes.clear();
+  rtcReleaseDevice(device_single);
+#endif
+  return 0;
+}
