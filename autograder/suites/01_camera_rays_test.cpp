@@ -89,7 +89,7 @@ void expect_camera_ray(const Camera& camera, int pixel_x, int pixel_y, const glm
   const glm::vec3 expected = glm::normalize(expected_direction);
   const bool ok = glm::all(glm::lessThanEqual(glm::abs(ray.direction - expected), glm::vec3(kDirectionTolerance)));
   if (!ok) diagnose(camera, pixel_x, pixel_y, ray.direction, expected);
-  EXPECT_TRUE(ok) << "pixel (" << pixel_x << ", " << pixel_y << ") of a " << camera << ":\n  expected direction "
+  if (!ok) ADD_FAILURE() << "pixel (" << pixel_x << ", " << pixel_y << ") of a " << camera << ":\n  expected direction "
                   << expected << " (each component within " << kDirectionTolerance << ")\n  got               "
                   << ray.direction;
 }

@@ -71,7 +71,7 @@ void expect_triangle(const Ray& ray, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, s
   const bool ok = got.has_value() == expected.has_value() && (!got || same_hit(*got, *expected));
   const bool back_face = glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) > 0;
   if (!ok) diagnose(ray, got, expected, back_face);
-  EXPECT_TRUE(ok) << "ray " << ray << ", triangle " << p0 << " " << p1 << " " << p2 << ":\n  expected "
+  if (!ok) ADD_FAILURE() << "ray " << ray << ", triangle " << p0 << " " << p1 << " " << p2 << ":\n  expected "
                   << describe(expected) << "\n  got      " << describe(got);
 }
 

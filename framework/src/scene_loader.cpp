@@ -245,7 +245,12 @@ Scene read_scene(const SceneReader& r, const json& root, const std::string& base
       r.check_keys(object, path, {"type", "file", "scale", "translate", "material"});
       const std::string file = r.string(r.require(object, path, "file"), path + "/file");
       const std::filesystem::path resolved = std::filesystem::path(base_directory) / file;
-      TriangleMesh mesh = load_obj_mesh(resolved.lexically_normal().string());
+      TriangleMesh mesh;
+      try {
+        mesh = load_obj_mesh(resolved.lexically_normal().string());
+      } catch (const InputError& e) {
+        r.fail(path + "/file", e.what());  // the scene's place, then the OBJ's own message
+      }
       const float scale = object.contains("scale")
           ? static_cast<float>(r.number(object["scale"], path + "/scale", 1e-30, 1e30)) : 1.0f;
       const glm::vec3 translate = object.contains("translate")

@@ -1,0 +1,193 @@
+// Images: write_image / read_image round trips, extension checks, and the comparison tools
+// the autograder uses (compare_images, side_by_side_difference).
+//
+// image.h: .exr keeps linear floats exactly; .png and .ppm store 8-bit sRGB, so a value comes
+// back within half an 8-bit step of sRGB (checked below as 1/255 in sRGB units).
+#include "raylab/error.h"
+#include "raylab/image.h"
+
+#include "test_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+
+namespace raylab {
+namespace {
+
+using testing::scratch_dir;
+
+// The sRGB transfer curve (IEC 61966-2-1), linear -> encoded, for comparing 8-bit files.
+float linear_to_srgb(float linear) {
+  const float v = std::clamp(linear, 0.0f, 1.0f);
+  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+}
+
+// A 4x3 test image whose every pixel differs: a gradient plus a few special values.
+Image make_test_image() {
+  Image image(4, 3);
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      image.at(x, y) = glm::vec3(x / 3.0f, y / 2.0f, (x + 4 * y) / 11.0f);
+  image.at(1, 1) = glm::vec3(0.5f, 0.5f, 0.5f);  // mid grey
+  image.at(2, 1) = glm::vec3(0.001f, 0.04f, 0.2f);  // the steep toe of the sRGB curve
+  return image;
+}
+
+std::string read_bytes(const std::filesystem::path& path, std::size_t count) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(count, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(count));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  return bytes;
+}
+
+TEST(Image, ExrRoundTripKeepsExactFloats) {
+  // EXR is the reference-image format: any loss would show up as a grading difference.
+  Image image = make_test_image();
+  image.at(0, 0) = glm::vec3(2.75f, 1000.5f, 1e-6f);      // HDR and tiny values
+  image.at(3, 2) = glm::vec3(0.1f, 1.0f / 3.0f, 0.7f);    // not exact in binary
+  const std::string path = (scratch_dir() / "round_trip.exr").string();
+  write_image(image, path);
+  const Image back = read_image(path);
+  ASSERT_EQ(back.width(), image.width()) << path;
+  ASSERT_EQ(back.height(), image.height()) << path;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      for (int c = 0; c < 3; ++c)
+        EXPECT_EQ(back.at(x, y)[c], image.at(x, y)[c])
+            << path << ", pixel (" << x << ", " << y << ") channel " << c;
+}
+
+class EightBitImage : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EightBitImage, RoundTripWithinOneSrgbStep) {
+  const Image image = make_test_image();
+  const std::string path = (scratch_dir() / ("round_trip." + GetParam())).string();
+  write_image(image, path);
+  const Image back = read_image(path);
+  ASSERT_EQ(back.width(), image.width()) << path;
+  ASSERT_EQ(back.height(), image.height()) << path;
+  // Linear 0.5 is stored as sRGB 188/255 = 0.737; reading must undo the curve. Getting 0.737
+  // back means the file was read as if its 8-bit values were linear.
+  EXPECT_NEAR(back.at(1, 1).x, 0.5f, 0.005f) << path << ": mid grey, written as linear 0.5";
+  int wrong = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float written = image.at(x, y)[c], read = back.at(x, y)[c];
+        if (std::abs(linear_to_srgb(read) - linear_to_srgb(written)) > 1.0f / 255.0f &&
+            ++wrong <= 5)
+          ADD_FAILURE() << path << ", pixel (" << x << ", " << y << ") channel " << c
+                        << ": wrote linear " << written << " (sRGB " << linear_to_srgb(written)
+                        << "), read back linear " << read << " (sRGB " << linear_to_srgb(read)
+                        << "); expected within 1/255 in sRGB";
+      }
+  EXPECT_EQ(wrong, 0) << "channel values off by more than one 8-bit sRGB step, out of "
+                      << 3 * image.width() * image.height();
+}
+
+TEST_P(EightBitImage, ValuesOutsideZeroToOneAreClamped) {
+  Image image(2, 1);
+  image.at(0, 0) = glm::vec3(4.0f, 1.5f, 1.0f);
+  image.at(1, 0) = glm::vec3(-1.0f, -0.01f, 0.0f);
+  const std::string path = (scratch_dir() / ("clamped." + GetParam())).string();
+  write_image(image, path);
+  const Image back = read_image(path);
+  EXPECT_TRUE(testing::vec3_near(back.at(0, 0), glm::vec3(1.0f), 1e-6f)) << path << ": above 1";
+  EXPECT_TRUE(testing::vec3_near(back.at(1, 0), glm::vec3(0.0f), 1e-6f)) << path << ": below 0";
+}
+
+INSTANTIATE_TEST_SUITE_P(PngAndPpm, EightBitImage, ::testing::Values("png", "ppm"));
+
+TEST(Image, PpmIsBinaryP6AndPngHasItsSignature) {
+  // Students open .ppm files in a text editor to debug: it must be the binary P6 variant that
+  // the handout describes.
+  const std::filesystem::path dir = scratch_dir();
+  write_image(make_test_image(), (dir / "image.ppm").string());
+  write_image(make_test_image(), (dir / "image.png").string());
+  EXPECT_EQ(read_bytes(dir / "image.ppm", 2), "P6") << dir / "image.ppm";
+  EXPECT_EQ(read_bytes(dir / "image.png", 4), "\x89PNG") << dir / "image.png";
+}
+
+TEST(Image, UnknownExtensionThrowsInputError) {
+  const std::filesystem::path dir = scratch_dir();
+  for (const std::string name : {"picture.bmp", "picture", "picture.png.txt"}) {
+    const std::string path = (dir / name).string();
+    EXPECT_THROW(write_image(make_test_image(), path), InputError) << path;
+    EXPECT_THROW(check_image_extension(path), InputError) << path;
+    EXPECT_FALSE(std::filesystem::exists(path)) << path << " must not be written";
+  }
+  // Extensions are case-insensitive (Windows users write .PNG).
+  EXPECT_NO_THROW(check_image_extension("picture.PNG"));
+  EXPECT_NO_THROW(check_image_extension("picture.exr"));
+}
+
+TEST(Image, ReadingAMissingFileNamesThePath) {
+  const std::string path = (scratch_dir() / "no_such_image.exr").string();
+  try {
+    read_image(path);
+    FAIL() << "read_image(" << path << ") returned instead of throwing InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos)
+        << "the message should name the file; got: " << e.what();
+  }
+}
+
+TEST(CompareImages, IdenticalImagesHaveNoError) {
+  const Image image = make_test_image();
+  const ImageDifference difference = compare_images(image, image, 1e-6f);
+  EXPECT_EQ(difference.max_error, 0.0);
+  EXPECT_EQ(difference.mean_error, 0.0);
+  EXPECT_EQ(difference.rms_error, 0.0);
+  EXPECT_EQ(difference.pixels_over_threshold, 0);
+  EXPECT_EQ(difference.fraction_over_threshold, 0.0);
+}
+
+TEST(CompareImages, FindsTheOneChangedPixel) {
+  // The autograder points students at max_x / max_y: they must be the changed pixel's column
+  // and row, not swapped (a non-square image and an off-diagonal pixel tell them apart).
+  const Image expected = make_test_image();
+  Image actual = expected;
+  actual.at(3, 1).y += 0.25f;
+  const ImageDifference difference = compare_images(actual, expected, 0.01f);
+  EXPECT_EQ(difference.max_x, 3);
+  EXPECT_EQ(difference.max_y, 1);
+  EXPECT_NEAR(difference.max_error, 0.25, 1e-6);
+  EXPECT_EQ(difference.pixels_over_threshold, 1);
+  EXPECT_NEAR(difference.fraction_over_threshold, 1.0 / 12.0, 1e-12);
+  EXPECT_GT(difference.mean_error, 0.0);
+}
+
+TEST(CompareImages, DifferentSizesThrow) {
+  EXPECT_THROW(compare_images(Image(4, 3), Image(3, 4), 0.0f), std::invalid_argument);
+}
+
+TEST(SideBySideDifference, IsActualExpectedAndHeatMapInARow) {
+  const Image expected = make_test_image();
+  Image actual = expected;
+  actual.at(2, 0) = glm::vec3(1.0f, 0.0f, 1.0f);
+  const int w = expected.width(), h = expected.height();
+  const Image panel = side_by_side_difference(actual, expected, 0.5f);
+  ASSERT_EQ(panel.width(), 3 * w);
+  ASSERT_EQ(panel.height(), h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      EXPECT_TRUE(testing::vec3_near(panel.at(x, y), actual.at(x, y), 1e-6f))
+          << "left third is `actual`, pixel (" << x << ", " << y << ")";
+      EXPECT_TRUE(testing::vec3_near(panel.at(w + x, y), expected.at(x, y), 1e-6f))
+          << "middle third is `expected`, pixel (" << x << ", " << y << ")";
+    }
+  // Heat map: (almost) black where equal, bright where they differ.
+  const glm::vec3 equal = panel.at(2 * w + 0, 0), changed = panel.at(2 * w + 2, 0);
+  EXPECT_LT(std::max({equal.x, equal.y, equal.z}), 0.01f) << "heat map where equal: " << equal;
+  EXPECT_GT(std::max({changed.x, changed.y, changed.z}), 0.5f) << "heat map at the change: " << changed;
+}
+
+}  // namespace
+}  // namespace raylab

@@ -1,0 +1,209 @@
+// The renderer end to end, with the reference stages: determinism across thread counts, the
+// background, hard shadows without light leaks, and no shadow acne at grazing light.
+// Scenes are written as JSON in the test and read through parse_scene, like any scene file.
+#include "raylab/geometry.h"
+#include "raylab/render.h"
+#include "raylab/scene_loader.h"
+#include "raylab/stages/01_camera_rays.h"
+
+#include "test_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <sstream>
+#include <string>
+
+namespace raylab {
+namespace {
+
+using testing::source_path;
+
+Image render_with_threads(const Scene& scene, int threads) {
+  RenderSettings settings;
+  settings.max_depth = scene.max_depth;
+  settings.threads = threads;
+  return render(scene, settings);
+}
+
+float brightest_channel(const glm::vec3& c) { return std::max({c.x, c.y, c.z}); }
+
+TEST(Render, OneAndTwoThreadsGiveIdenticalPixels) {
+  // render.h promises bit-identical images for any thread count: the autograder compares
+  // students' images with references rendered on other machines.
+  Scene scene = load_scene(source_path("scenes/whitted.json"));
+  scene.camera.width = 32;
+  scene.camera.height = 24;
+  const Image one = render_with_threads(scene, 1);
+  const Image two = render_with_threads(scene, 2);
+  ASSERT_EQ(one.width(), 32);
+  ASSERT_EQ(one.height(), 24);
+  ASSERT_EQ(two.width(), 32);
+  ASSERT_EQ(two.height(), 24);
+  int differing = 0;
+  for (int y = 0; y < one.height(); ++y)
+    for (int x = 0; x < one.width(); ++x)
+      if (std::memcmp(&one.at(x, y), &two.at(x, y), sizeof(glm::vec3)) != 0 && ++differing <= 5)
+        ADD_FAILURE() << "pixel (" << x << ", " << y << "): 1 thread " << one.at(x, y)
+                      << ", 2 threads " << two.at(x, y);
+  EXPECT_EQ(differing, 0) << "pixels that differ between --threads 1 and --threads 2";
+
+  // The picture must show something besides the background, or the comparison proves little.
+  int not_background = 0;
+  for (const glm::vec3& pixel : one.pixels()) not_background += pixel != scene.background;
+  EXPECT_GT(not_background, 32 * 24 / 20)
+      << "pixels other than the background, out of " << 32 * 24 << " (the spheres and floor "
+         "cover about a tenth of the picture)";
+}
+
+TEST(Render, EmptySceneIsAllBackground) {
+  const Scene scene = parse_scene(R"({
+    "camera": { "width": 9, "height": 7 },
+    "background": [0.25, 0.5, 0.75],
+    "objects": []
+  })", "empty_scene", ".");
+  const Image image = render_with_threads(scene, 2);
+  ASSERT_EQ(image.width(), 9);
+  ASSERT_EQ(image.height(), 7);
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      EXPECT_EQ(image.at(x, y), scene.background) << "pixel (" << x << ", " << y << ")";
+}
+
+// The floor point seen by pixel (x, y): where the camera ray meets the plane y = floor_y,
+// computed in double. Returns false if the ray does not go down to it.
+bool floor_point_of_pixel(const Camera& camera, int x, int y, double floor_y, glm::dvec3& point) {
+  const Ray ray = generate_camera_ray(camera, x, y);
+  const glm::dvec3 origin(ray.origin), direction(ray.direction);
+  if (direction.y >= 0.0) return false;
+  point = origin + (floor_y - origin.y) / direction.y * direction;
+  return true;
+}
+
+// Distance from `center` to the segment from `a` to `b`.
+double distance_to_segment(const glm::dvec3& center, const glm::dvec3& a, const glm::dvec3& b) {
+  const glm::dvec3 ab = b - a;
+  const double s = std::clamp(glm::dot(center - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+  return glm::length(a + s * ab - center);
+}
+
+TEST(Render, OpaqueSphereCastsAShadowWithoutLeaks) {
+  // A camera looks straight down at a white floor (y = 0). A light at (4, 2, 0) shines past
+  // an opaque sphere at (2, 1, 0), radius 0.5, straight onto the floor around (0, 0, 0).
+  // Every floor pixel is classified in double precision: its segment to the light passes
+  // through the sphere (shadow: must be exactly black, as ks = 0 and there is no ambient term)
+  // or clearly misses it (lit: must be bright). Pixels within 0.02 of the shadow's edge, and
+  // pixels that see the sphere itself, are skipped.
+  const std::string text = R"({
+    "camera": { "position": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, -1],
+                "fov_y_degrees": 90, "width": 41, "height": 41 },
+    "background": [0.3, 0.3, 0.3],
+    "materials": {
+      "white": { "type": "diffuse_glossy", "diffuse_color": [1, 1, 1], "kd": 1, "ks": 0 }
+    },
+    "objects": [
+      { "type": "sphere", "center": [2, 1, 0], "radius": 0.5, "material": "white" },
+      { "type": "mesh", "positions": [[-20, 0, -20], [23, 0, -20], [23, 0, 21], [-20, 0, 21]],
+        "triangles": [[0, 1, 2], [0, 2, 3]], "material": "white" }
+    ],
+    "lights": [ { "type": "point", "position": [4, 2, 0], "intensity": 1 } ]
+  })";
+  const Scene scene = parse_scene(text, "shadow_scene", ".");
+  const Image image = render_with_threads(scene, 2);
+  const glm::dvec3 light(4.0, 2.0, 0.0), sphere_center(2.0, 1.0, 0.0);
+  constexpr double kRadius = 0.5, kMargin = 0.02;
+
+  int shadowed = 0, lit = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      glm::dvec3 floor_point;
+      ASSERT_TRUE(floor_point_of_pixel(scene.camera, x, y, 0.0, floor_point));
+      const Ray camera_ray = generate_camera_ray(scene.camera, x, y);
+      if (distance_to_segment(sphere_center, glm::dvec3(camera_ray.origin), floor_point) <
+          kRadius + kMargin)
+        continue;  // the camera sees the sphere (or nearly) here
+      const double clearance = distance_to_segment(sphere_center, floor_point, light) - kRadius;
+      const glm::vec3 pixel = image.at(x, y);
+      if (clearance < -kMargin) {
+        ++shadowed;
+        EXPECT_EQ(pixel, glm::vec3(0.0f))
+            << "light leak: pixel (" << x << ", " << y << ") sees floor point " << glm::vec3(floor_point)
+            << ", whose path to the light at " << glm::vec3(light) << " passes "
+            << -clearance << " inside the sphere; expected black";
+      } else if (clearance > kMargin) {
+        ++lit;
+        EXPECT_GT(brightest_channel(pixel), 0.01f)
+            << "pixel (" << x << ", " << y << ") sees floor point " << glm::vec3(floor_point)
+            << ", which the light reaches with " << clearance << " to spare; got " << pixel;
+      }
+    }
+  // The set-up must produce both kinds of pixel, including the one under the centre.
+  EXPECT_GT(shadowed, 10) << "too few shadowed pixels to test";
+  EXPECT_GT(lit, 100) << "too few lit pixels to test";
+  EXPECT_EQ(image.at(20, 20), glm::vec3(0.0f)) << "the centre pixel sees (0, 0, 0), in full shadow";
+}
+
+TEST(Render, NoShadowAcneAtGrazingLight) {
+  // A tilted floor whose points cannot be represented exactly in float, lit by a distant light
+  // about 3 degrees above its plane. A shadow ray started exactly at the computed hit point
+  // would find the floor itself (at t near 0) for many pixels and draw them black: shadow
+  // acne. The renderer's offset origins must keep every pixel lit.
+  const glm::dvec3 u = glm::normalize(glm::dvec3(1.0, 0.3, 0.1));       // in the plane
+  const glm::dvec3 v = glm::normalize(glm::cross(glm::dvec3(0.2, 0.1, 1.0), u));  // in the plane
+  const glm::dvec3 normal = glm::normalize(glm::cross(u, v));
+  const glm::dvec3 centre(0.37, -1.29, -3.71);
+  const double elevation = 3.0 * 3.14159265358979 / 180.0;
+  const glm::dvec3 light = centre + 1000.0 * (std::cos(elevation) * u + std::sin(elevation) * normal);
+  const glm::dvec3 eye = centre + 4.0 * normal + 0.5 * v;
+  auto corner = [&](double a, double b) { return centre + a * u + b * v; };
+  auto json_vec = [](const glm::dvec3& p) {
+    std::ostringstream out;
+    out.precision(17);
+    out << '[' << p.x << ", " << p.y << ", " << p.z << ']';
+    return out.str();
+  };
+  const std::string text = R"({
+    "camera": { "position": )" + json_vec(eye) + R"(, "look_at": )" + json_vec(centre) +
+      R"(, "up": [0, 1, 0], "fov_y_degrees": 60, "width": 48, "height": 48 },
+    "background": [0, 0, 0],
+    "materials": { "white": { "type": "diffuse_glossy", "diffuse_color": [1, 1, 1], "kd": 1, "ks": 0 } },
+    "objects": [
+      { "type": "mesh", "material": "white",
+        "positions": [)" + json_vec(corner(-50, -50)) + ", " + json_vec(corner(50, -50)) + ", " +
+      json_vec(corner(50, 50)) + ", " + json_vec(corner(-50, 50)) + R"(],
+        "triangles": [[0, 1, 2], [0, 2, 3]] }
+    ],
+    "lights": [ { "type": "point", "position": )" + json_vec(light) + R"(, "intensity": 1 } ]
+  })";
+  const Scene scene = parse_scene(text, "grazing_light_scene", ".");
+  const Image image = render_with_threads(scene, 2);
+  // Lit means about sin(3 degrees) = 0.05; black means the floor shadowed itself.
+  int black = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      if (!(brightest_channel(image.at(x, y)) > 0.02f) && ++black <= 5)
+        ADD_FAILURE() << "shadow acne: pixel (" << x << ", " << y << ") is " << image.at(x, y)
+                      << "; every pixel sees the lit floor";
+  EXPECT_EQ(black, 0) << "black pixels out of " << image.width() * image.height()
+                      << "\nscene: " << text;
+
+  // The scene must be hard enough to matter: from the exact hit points, without the offset,
+  // some shadow rays should hit the floor they start on.
+  const SceneGeometry geometry(scene);
+  int self_hits = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const auto hit = geometry.intersect(generate_camera_ray(scene.camera, x, y));
+      ASSERT_TRUE(hit.has_value()) << "pixel (" << x << ", " << y << ") must see the floor";
+      Ray shadow;
+      shadow.origin = hit->point;
+      shadow.direction = glm::vec3(light) - hit->point;
+      shadow.t_max = 1.0f - 1e-4f;
+      self_hits += geometry.occluded(shadow);
+    }
+  EXPECT_GT(self_hits, 0) << "no pixel self-shadows without an offset: the test proves nothing";
+}
+
+}  // namespace
+}  // namespace raylab
