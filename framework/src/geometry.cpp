@@ -182,17 +182,51 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
     return hit->t_hit;
   }
   // Few objects: each in turn (spheres first, as the brute force always did), t_max shrinking.
+  // Written out flat, without the per-object dispatch: this is also the whole render of a
+  // small scene, and of every scene while stage 5 is a stub.
+  // The best hit is kept in locals (registers) and written to the record once, at the end.
   Ray search = ray;
-  std::optional<float> closest;
-  const auto object_count = static_cast<std::uint32_t>(spheres_.size() + meshes_.size());
-  for (std::uint32_t object = 0; object < object_count; ++object) {
-    if (const std::optional<float> t = intersect_object(object, search, query)) {
+  HitRecord best;
+  bool any_hit_found = false;
+  for (std::uint32_t i = 0; i < spheres_.size(); ++i) {
+    if (const std::optional<float> t = intersect_ray_sphere(search, spheres_[i].center, spheres_[i].radius)) {
       search.t_max = *t;
-      closest = t;
-      if (query.any_hit) break;
+      best.kind = Kind::Sphere;
+      best.index = i;
+      if (query.any_hit) {
+        any_hit_found = true;
+        break;
+      }
     }
   }
-  return closest;
+  for (std::size_t m = 0; m < meshes_.size() && !any_hit_found; ++m) {
+    const MeshPart& mesh = meshes_[m];
+    if (!mesh.bvh.nodes.empty()) {
+      if (const std::optional<float> t = intersect_mesh(mesh, search, query)) {
+        search.t_max = *t;
+        best = *query.record;  // intersect_mesh wrote it
+        any_hit_found = query.any_hit;
+      }
+      continue;
+    }
+    const std::uint32_t end = mesh.first_triangle + mesh.triangle_count;
+    for (std::uint32_t i = mesh.first_triangle; i < end; ++i) {
+      const Triangle& tri = triangles_[i];
+      if (const std::optional<TriangleHit> hit = intersect_ray_triangle(search, tri.p0, tri.p1, tri.p2)) {
+        search.t_max = hit->t_hit;
+        best.kind = Kind::Triangle;
+        best.index = i;
+        best.triangle_hit = *hit;
+        if (query.any_hit) {
+          any_hit_found = true;
+          break;
+        }
+      }
+    }
+  }
+  if (best.kind == Kind::None) return std::nullopt;
+  *query.record = best;
+  return search.t_max;
 }
 
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
