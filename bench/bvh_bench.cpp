@@ -276,19 +276,22 @@ void trace_embree(const EmbreeScene& embree, const std::vector<Ray>& rays, std::
 
 // ---- Running on several threads: contiguous chunks of the ray set ----------------------
 
+// Threads take blocks of 1024 rays in turn (block b to thread b mod T): a camera's rows of
+// sky and of geometry are spread evenly, and each block is still coherent.
 template <typename TraceChunk>
 void parallel_for_chunks(std::size_t count, int threads, TraceChunk&& trace_chunk) {
   if (threads <= 1) {
     trace_chunk(std::size_t{0}, count);
     return;
   }
+  constexpr std::size_t kBlock = 1024;
   std::vector<std::thread> workers;
-  const std::size_t chunk = (count + static_cast<std::size_t>(threads) - 1) / static_cast<std::size_t>(threads);
-  for (int t = 0; t < threads; ++t) {
-    const std::size_t begin = std::min(count, chunk * static_cast<std::size_t>(t));
-    const std::size_t end = std::min(count, begin + chunk);
-    workers.emplace_back([&trace_chunk, begin, end] { trace_chunk(begin, end); });
-  }
+  for (int t = 0; t < threads; ++t)
+    workers.emplace_back([&trace_chunk, count, threads, t] {
+      for (std::size_t begin = kBlock * static_cast<std::size_t>(t); begin < count;
+           begin += kBlock * static_cast<std::size_t>(threads))
+        trace_chunk(begin, std::min(count, begin + kBlock));
+    });
   for (std::thread& worker : workers) worker.join();
 }
 
@@ -330,12 +333,12 @@ std::string trace_name(const std::string& mesh, const std::string& rays, const s
   return "trace/" + mesh + "/" + rays + "/" + query + "/" + accelerator + "/threads:" + std::to_string(threads);
 }
 
-// Compares closest-hit distances ray by ray; returns how many rays disagree.
-std::size_t count_disagreements(const std::vector<float>& a, const std::vector<float>& b, std::size_t stride) {
-  std::size_t bad = 0;
+// Compares closest-hit distances ray by ray; returns the rays that disagree.
+std::vector<std::size_t> disagreements(const std::vector<float>& a, const std::vector<float>& b, std::size_t stride) {
+  std::vector<std::size_t> bad;
   for (std::size_t i = 0; i < a.size(); i += stride) {
     const bool hit_a = a[i] < kInfinity, hit_b = b[i] < kInfinity;
-    if (hit_a != hit_b || (hit_a && std::fabs(a[i] - b[i]) > 1e-4f * std::max(1.0f, a[i]))) ++bad;
+    if (hit_a != hit_b || (hit_a && std::fabs(a[i] - b[i]) > 1e-4f * std::max(1.0f, a[i]))) bad.push_back(i);
   }
   return bad;
 }
@@ -439,10 +442,23 @@ int main(int argc, char** argv) {
               compared[i] = t[i] < kInfinity ? 0.0f : kInfinity;
               oracle[i] = oracle[i] < kInfinity ? 0.0f : kInfinity;
             }
-          const std::size_t bad = count_disagreements(compared, oracle, stride);
-          std::printf("  %-12s %-7s %-7s %-7s vs %-12s: %zu of %zu rays disagree%s\n", f.mesh.name.c_str(),
-                      tree.name.c_str(), set.name.c_str(), query.c_str(), oracle_name.c_str(), bad,
-                      set.rays.size() / stride, bad ? "  <-- CHECK" : "");
+          const std::vector<std::size_t> bad = disagreements(compared, oracle, stride);
+          std::printf("  %-12s %-7s %-7s %-7s vs %-12s: %zu of %zu rays disagree\n", f.mesh.name.c_str(),
+                      tree.name.c_str(), set.name.c_str(), query.c_str(), oracle_name.c_str(), bad.size(),
+                      set.rays.size() / stride);
+          // Who is right? Brute force (the same triangle test as the BVH) settles whether the
+          // traversal lost a hit or the two triangle tests differ (e.g. on a shared edge).
+          for (std::size_t k = 0; k < std::min<std::size_t>(bad.size(), 3); ++k) {
+            const std::size_t i = bad[k];
+            std::vector<float> brute_t(1, kInfinity);
+            BvhTraversalStats ignored;
+            trace_brute_force(f.mesh, {set.rays[i]}, any_hit, brute_t.data(), ignored);
+            std::printf("      ray %zu: this BVH t = %.9g, %s t = %.9g, brute force (stage 03 test) t = %.9g: %s\n", i,
+                        compared[i], oracle_name.c_str(), oracle[i], any_hit && brute_t[0] < kInfinity ? 0.0f : brute_t[0],
+                        (brute_t[0] < kInfinity) == (t[i] < kInfinity) && (!(t[i] < kInfinity) || brute_t[0] == t[i])
+                            ? "the BVH agrees with brute force (a triangle-test difference)"
+                            : "the BVH LOST A HIT <-- CHECK");
+          }
         }
       }
     }
