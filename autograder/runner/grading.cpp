@@ -107,6 +107,10 @@ const StageInfo* find_stage(int number) {
   return nullptr;
 }
 
+std::string handout_of(const StageInfo& stage) {
+  return stage.handout.empty() ? "docs/" + stage.id + ".md" : stage.handout;
+}
+
 const std::vector<TestInfo>& tests() { return test_registry(); }
 
 void add_hint(const std::string& hint) {

@@ -18,6 +18,7 @@ struct StageInfo {
   int number = 0;
   std::string id;                // "01_camera_rays": folder, handout and suite share it
   std::string title;
+  std::string handout;           // "docs/<id>.md" when empty
   std::vector<int> depends_on;   // earlier stages its image test renders with
   std::function<void()> probe;   // calls the stage's function(s) once; a stub throws
 };
@@ -27,6 +28,7 @@ bool register_test(int stage, const char* suite, const char* name, int points);
 
 const std::vector<StageInfo>& stages();
 const StageInfo* find_stage(int number);
+std::string handout_of(const StageInfo& stage);
 
 struct TestInfo {
   int stage;

@@ -268,7 +268,8 @@ void print_results(const std::vector<StageResult>& results, const SupervisorOpti
       const bool show = t.status != Status::Passed || (options.verbose && !t.notes.empty());
       if (!show) continue;
       if (!header) {
-        std::printf("\n%s: %s (handout: docs/%s.md)\n", stage.stage->id.c_str(), stage.stage->title.c_str(), stage.stage->id.c_str());
+        std::printf("\n%s: %s (handout: %s)\n", stage.stage->id.c_str(), stage.stage->title.c_str(),
+                    handout_of(*stage.stage).c_str());
         header = true;
       }
       const char* label = t.status == Status::Passed ? "passed" : t.status == Status::Lost ? "LOST" : "FAILED";

@@ -11,8 +11,7 @@ namespace raylab::grading {
 namespace {
 
 constexpr int kStage = 1;
-const bool kRegistered = register_stage(
-    {kStage, "01_camera_rays", "camera rays", {}, [] { (void)generate_camera_ray(Camera{}, 0, 0); }});
+const bool kRegistered = register_stage({kStage, "01_camera_rays", "camera rays", "", {}, [] { (void)generate_camera_ray(Camera{}, 0, 0); }});
 
 constexpr float kDirectionTolerance = 1e-4f;
 

@@ -12,7 +12,7 @@ namespace raylab::grading {
 namespace {
 
 constexpr int kStage = 2;
-const bool kRegistered = register_stage({kStage, "02_sphere", "ray-sphere intersection", {1},
+const bool kRegistered = register_stage({kStage, "02_sphere", "ray-sphere intersection", "", {1},
                                          [] { (void)intersect_ray_sphere(Ray{}, glm::vec3(0, 0, -3), 1.0f); }});
 
 constexpr float kRelativeTolerance = 1e-4f;

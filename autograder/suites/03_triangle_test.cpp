@@ -11,8 +11,7 @@ namespace raylab::grading {
 namespace {
 
 constexpr int kStage = 3;
-const bool kRegistered = register_stage(
-    {kStage, "03_triangle", "ray-triangle intersection", {1, 2},
+const bool kRegistered = register_stage({kStage, "03_triangle", "ray-triangle intersection", "", {1, 2},
      [] { (void)intersect_ray_triangle(Ray{}, glm::vec3(-1, -1, -2), glm::vec3(1, -1, -2), glm::vec3(0, 1, -2)); }});
 
 constexpr float kTolerance = 1e-4f;

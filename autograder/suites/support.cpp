@@ -30,7 +30,8 @@ nlohmann::json load_reference_cases(const std::string& stage_id) {
 std::string reference_image_name(const std::string& stage_id) { return stage_id + ".png"; }
 
 Image render_stage_image(int stage_number) {
-  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/whitted.json");
+  const char* scene_file = stage_number == 5 ? "/scenes/bunny.json" : "/scenes/whitted.json";
+  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + scene_file);
   scene.camera.width = kImageWidth;
   scene.camera.height = kImageHeight;
   if (stage_number == 1) {

@@ -37,7 +37,7 @@ nlohmann::json load_reference_cases(const std::string& stage_id);
 
 // The picture each stage's image test renders, the same for the student and the reference.
 // Stage 1: camera-ray directions as colours; 2: the spheres of the Whitted scene; 3: the
-// whole Whitted scene. kImageWidth x kImageHeight, small so grading stays fast.
+// whole Whitted scene; 5: the bunny scene (through your BVH). kImageWidth x kImageHeight, small so grading stays fast.
 constexpr int kImageWidth = 320, kImageHeight = 240;
 Image render_stage_image(int stage_number);
 std::string reference_image_name(const std::string& stage_id);  // "<id>.png"

@@ -8,6 +8,10 @@
 #include "raylab/stages/01_camera_rays.h"
 #include "raylab/stages/02_sphere.h"
 #include "raylab/stages/03_triangle.h"
+#include "raylab/stages/04_box.h"
+#include "raylab/stages/05_bvh.h"
+
+#include "bvh_support.h"
 
 #include <CLI/CLI.hpp>
 
@@ -128,6 +132,53 @@ json triangle_cases(std::uint32_t seed, int count) {
   return cases;
 }
 
+json box_cases(std::uint32_t seed, int count) {
+  CaseRandom random(seed);
+  json cases = json::array();
+  while (static_cast<int>(cases.size()) < count) {
+    const glm::vec3 corner = random.vec3(-10, 10);
+    glm::vec3 size = random.vec3(0, 5);
+    if (random.uniform(0, 1) < 0.15f) size[random.integer(0, 2)] = 0.0f;  // flat boxes
+    const Bounds3 box{corner, corner + size};
+    const bool inside = random.uniform(0, 1) < 0.15f;
+    Ray ray;
+    ray.origin = inside ? box.min + glm::vec3(random.uniform(0, 1), random.uniform(0, 1), random.uniform(0, 1)) * size
+                        : random.vec3(-20, 20);
+    const glm::vec3 target = box.min + random.vec3(-0.5f, 1.5f) * size + random.vec3(-1, 1);
+    if (glm::length(target - ray.origin) < 1e-3f) continue;
+    ray.direction = glm::normalize(target - ray.origin) * random.uniform(0.2f, 5.0f);
+    if (random.uniform(0, 1) < 0.2f) ray.direction[random.integer(0, 2)] = random.integer(0, 1) ? 0.0f : -0.0f;
+    if (glm::length(ray.direction) == 0.0f) continue;
+    ray.t_min = random.uniform(0, 1) < 0.3f ? random.uniform(0, 3) : 0.0f;
+    const bool finite_t_max = random.uniform(0, 1) < 0.3f;
+    ray.t_max = finite_t_max ? random.uniform(1, 30) : kInfinity;
+    // Leave out cases a correct float implementation may decide either way (in double): a
+    // slab interval that almost closes, or an entry or exit within a hair of t_min or t_max.
+    double enter = ray.t_min, exit = ray.t_max;
+    bool degenerate = false;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double o = ray.origin[axis], d = ray.direction[axis], lo = box.min[axis], hi = box.max[axis];
+      if (d == 0.0) {
+        if (std::fabs(o - lo) < 1e-4 || std::fabs(o - hi) < 1e-4) degenerate = true;
+        if (o < lo || o > hi) exit = -1.0;  // misses the slab
+        continue;
+      }
+      double t0 = (lo - o) / d, t1 = (hi - o) / d;
+      if (t0 > t1) std::swap(t0, t1);
+      enter = std::max(enter, t0);
+      exit = std::min(exit, t1);
+    }
+    const double gap = exit - enter;
+    if (degenerate || (std::isfinite(gap) && std::fabs(gap) < 1e-3 * std::max(1.0, std::fabs(enter)))) continue;
+    if (std::fabs(enter - ray.t_min) < 1e-4 && enter != ray.t_min) continue;
+    const std::optional<float> t = intersect_ray_box(ray, ray_direction_inverse_of(ray), box);
+    cases.push_back({{"id", cases.size()}, {"origin", to_json(ray.origin)}, {"direction", to_json(ray.direction)},
+                     {"t_min", ray.t_min}, {"t_max", finite_t_max ? json(ray.t_max) : json(nullptr)},
+                     {"min", to_json(box.min)}, {"max", to_json(box.max)}, {"t_enter", t ? json(*t) : json(nullptr)}});
+  }
+  return cases;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -139,17 +190,33 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     std::filesystem::create_directories(output);
+    // Seeded random cases with the reference's answers, for the stages that take them.
     const struct {
       const char* id;
       json (*generate)(std::uint32_t, int);
       int count;
-    } stages[] = {{"01_camera_rays", camera_cases, 200}, {"02_sphere", sphere_cases, 400}, {"03_triangle", triangle_cases, 400}};
-    for (std::size_t i = 0; i < std::size(stages); ++i) {
+    } case_stages[] = {{"01_camera_rays", camera_cases, 200}, {"02_sphere", sphere_cases, 400},
+                       {"03_triangle", triangle_cases, 400}, {"04_box", box_cases, 400}};
+    for (std::size_t i = 0; i < std::size(case_stages); ++i) {
       const std::uint32_t stage_seed = seed + static_cast<std::uint32_t>(i);
-      write_json(output + "/" + stages[i].id + "_cases.json",
-                 {{"stage", stages[i].id}, {"seed", stage_seed}, {"cases", stages[i].generate(stage_seed, stages[i].count)}});
-      const std::string image_path = output + "/" + reference_image_name(stages[i].id);
-      write_image(render_stage_image(static_cast<int>(i) + 1), image_path);
+      write_json(output + "/" + case_stages[i].id + "_cases.json",
+                 {{"stage", case_stages[i].id}, {"seed", stage_seed},
+                  {"cases", case_stages[i].generate(stage_seed, case_stages[i].count)}});
+    }
+    // The BVH stages are compared with brute force live; the SAH bonus needs the reference's costs.
+    const TestMesh& bunny = bvh_test_meshes().front();
+    write_json(output + "/05_bvh_cases.json",
+               {{"stage", "05_bvh"}, {"seed", nullptr},
+                {"bunny_median_cost", bvh_sah_cost(build_bvh(bunny.bounds, 4))},
+                {"bunny_sah_cost", bvh_sah_cost(build_bvh_sah(bunny.bounds, 4))}});
+    // The stage pictures.
+    const struct {
+      int number;
+      const char* id;
+    } image_stages[] = {{1, "01_camera_rays"}, {2, "02_sphere"}, {3, "03_triangle"}, {5, "05_bvh"}};
+    for (const auto& stage : image_stages) {
+      const std::string image_path = output + "/" + reference_image_name(stage.id);
+      write_image(render_stage_image(stage.number), image_path);
       std::cout << "wrote " << image_path << "\n";
     }
   } catch (const std::exception& e) {

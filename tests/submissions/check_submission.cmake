@@ -1,6 +1,7 @@
 # Runs one grader and checks its results.json (see CMakeLists.txt here for the modes).
 cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
-# Variables: GRADER, MODE (full | zero | broken), EXPECT_STAGE, EXPECT_HINT, TIMEOUT, WORK.
+# Variables: GRADER, MODE (full | zero | broken), EXPECT_STAGE, EXPECT_HINT, ALSO_AFFECTED
+# (optional regex of later tests that may lose points too), TIMEOUT, WORK.
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 execute_process(COMMAND "${GRADER}" --json "${WORK}/results.json" --output "${WORK}/images" --timeout ${TIMEOUT}
@@ -31,7 +32,11 @@ foreach(i RANGE ${last})
   math(EXPR earned_${stage} "${earned_${stage}} + ${score}")
   math(EXPR max_${stage} "${max_${stage}} + ${max_score}")
   # A stage after the broken one may lose its image test (it renders with the broken stage), nothing else.
-  if(MODE STREQUAL "broken" AND stage STRGREATER EXPECT_STAGE AND NOT name MATCHES "Image"
+  set(expected_loss FALSE)
+  if(name MATCHES "Image" OR (ALSO_AFFECTED AND name MATCHES "${ALSO_AFFECTED}"))
+    set(expected_loss TRUE)
+  endif()
+  if(MODE STREQUAL "broken" AND stage STRGREATER EXPECT_STAGE AND NOT expected_loss
      AND NOT score EQUAL max_score)
     list(APPEND problems "${name} lost points, but only ${EXPECT_STAGE} is broken")
   endif()

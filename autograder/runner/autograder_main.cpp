@@ -1,4 +1,5 @@
-// autograder / autograder-reference: grades the stage functions it is linked with.
+// The autograder's entry point, shared by every variant (variant_main.cpp calls it):
+// grades the stage functions it is linked with.
 //
 //   autograder [--stage N]... [--json results.json] [--output DIR] [--timeout S]
 //
@@ -79,14 +80,14 @@ int run_child(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int raylab_autograder_main(int argc, char** argv, const char* description) {
   for (int i = 1; i < argc; ++i)
     if (std::strcmp(argv[i], "--child") == 0) return run_child(argc, argv);
 
   CLI::App app{"raylab autograder: grades your stage functions against the reference"};
   SupervisorOptions options;
   options.output_directory = "grading-output";
-  options.description = RAYLAB_VARIANT_DESCRIPTION;
+  options.description = description;
   bool list = false;
   app.add_option("--stage", options.stages, "Grade only this stage (number; repeat for several)");
   app.add_option("--json", options.json_path, "Also write a Gradescope-style results.json here");

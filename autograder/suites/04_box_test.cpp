@@ -1,0 +1,143 @@
+// Autograder suite for stage 04_box (20 points).
+#include "grading.h"
+#include "support.h"
+
+#include "raylab/stages/04_box.h"
+
+#include <cmath>
+#include <optional>
+
+namespace raylab::grading {
+namespace {
+
+constexpr int kStage = 4;
+const bool kRegistered = register_stage({kStage, "04_box", "ray-box intersection (slab test)", "", {}, [] {
+                                           Ray ray;
+                                           (void)intersect_ray_box(ray, ray_direction_inverse_of(ray),
+                                                                   Bounds3{glm::vec3(-1), glm::vec3(1)});
+                                         }});
+
+Ray make_ray(glm::vec3 origin, glm::vec3 direction, float t_min = 0.0f, float t_max = kInfinity) {
+  Ray ray;
+  ray.origin = origin;
+  ray.direction = direction;
+  ray.t_min = t_min;
+  ray.t_max = t_max;
+  return ray;
+}
+
+const Bounds3 kUnitBox{glm::vec3(-1.0f), glm::vec3(1.0f)};
+
+bool close(float got, float expected) { return std::fabs(got - expected) <= 1e-4f * std::max(1.0f, std::fabs(expected)); }
+
+// Whether a reported entry lies beyond t_max (the mistake of starting t_exit at infinity).
+bool box_beyond_t_max(const Ray& ray, std::optional<float> got) { return got && *got > ray.t_max; }
+
+void diagnose(const Ray& ray, std::optional<float> got, std::optional<float> expected) {
+  const bool zero_component = ray.direction.x == 0.0f || ray.direction.y == 0.0f || ray.direction.z == 0.0f;
+  if (got && !std::isfinite(*got)) {
+    add_hint("returns NaN or infinity: with a zero direction component, (bound - origin) * inverse can be 0 * inf = NaN; "
+             "order the comparisons so that NaN loses (docs/04_box.md)");
+  } else if (got && !expected && *got < ray.t_min) {
+    add_hint("accepts a box behind the ray: require t_exit >= t_min (the whole box is behind when t_exit < t_min)");
+  } else if (got && !expected && !std::isinf(ray.t_max) && box_beyond_t_max(ray, got)) {
+    add_hint("ignores t_max: a box that starts beyond t_max does not count (clip t_exit to t_max)");
+  } else if (got && !expected) {
+    add_hint("reports a box that the ray misses: clip [t_enter, t_exit] to [t_min, t_max] and require t_enter <= t_exit; "
+             "a box beyond t_max does not count");
+  } else if (!got && expected && zero_component) {
+    add_hint("misses a box when a direction component is zero: 1 / 0 is +-infinity, which the slab test handles by itself; "
+             "do not skip or special-case that axis wrongly, and keep NaN from turning a hit into a miss");
+  } else if (!got && expected) {
+    add_hint("misses a box that the ray passes through: t_enter = max of the three entries, t_exit = min of the three exits");
+  } else if (got && expected && *got < ray.t_min - 1e-6f) {
+    add_hint("the entry is not clipped to t_min: when the origin is inside (t_enter < t_min) return t_min");
+  } else if (got && expected) {
+    add_hint("the entry distance is wrong: per axis, entry = min((min - o) * inv, (max - o) * inv)");
+  }
+}
+
+std::string describe(std::optional<float> t) { return t ? "entry at t = " + std::to_string(*t) : std::string("no hit"); }
+
+void expect_box(const Ray& ray, const Bounds3& box, std::optional<float> expected) {
+  const std::optional<float> got = intersect_ray_box(ray, ray_direction_inverse_of(ray), box);
+  const bool ok = got.has_value() == expected.has_value() && (!got || close(*got, *expected));
+  if (!ok) {
+    diagnose(ray, got, expected);
+    ADD_FAILURE() << "ray " << ray << ", box " << box << ":\n  expected " << describe(expected) << "\n  got      "
+                  << describe(got);
+  }
+}
+
+GRADED_TEST(kStage, Stage04Box, HitFromOutside, 3) {
+  expect_box(make_ray({0, 0, -5}, {0, 0, 1}), kUnitBox, 4.0f);
+  expect_box(make_ray({-5, -5, -5}, {1, 1, 1}), kUnitBox, 4.0f);        // diagonal, through a corner region
+  expect_box(make_ray({0.5f, 0.5f, 5}, {0, 0, -2}), kUnitBox, 2.0f);    // non-unit direction: t in its units
+}
+
+GRADED_TEST(kStage, Stage04Box, MissBesideTheBox, 2) {
+  expect_box(make_ray({3, 0, -5}, {0, 0, 1}), kUnitBox, std::nullopt);
+  expect_box(make_ray({-5, 0, -5}, {1, 0, 0.5f}), kUnitBox, std::nullopt);  // passes the corner region
+}
+
+GRADED_TEST(kStage, Stage04Box, BoxBehindTheRayIsMissed, 3) {
+  expect_box(make_ray({0, 0, 5}, {0, 0, 1}), kUnitBox, std::nullopt);
+  expect_box(make_ray({3, 3, 3}, {1, 2, 3}), kUnitBox, std::nullopt);
+}
+
+GRADED_TEST(kStage, Stage04Box, OriginInsideEntersAtTMin, 2) {
+  expect_box(make_ray({0, 0, 0}, {0, 0, 1}), kUnitBox, 0.0f);
+  expect_box(make_ray({0.5f, 0, 0}, {1, 1, 0}, 0.25f), kUnitBox, 0.25f);
+}
+
+GRADED_TEST(kStage, Stage04Box, RespectsTMinAndTMax, 2) {
+  // The box spans t in [4, 6] along this ray.
+  expect_box(make_ray({0, 0, -5}, {0, 0, 1}, 0.0f, 3.0f), kUnitBox, std::nullopt);  // ends before the box
+  expect_box(make_ray({0, 0, -5}, {0, 0, 1}, 6.5f), kUnitBox, std::nullopt);        // starts after it
+  expect_box(make_ray({0, 0, -5}, {0, 0, 1}, 5.0f, 8.0f), kUnitBox, 5.0f);          // starts inside it
+}
+
+GRADED_TEST(kStage, Stage04Box, ZeroDirectionComponents, 3) {
+  // Axis-aligned rays: two components are +0 or -0, so two reciprocals are +-infinity.
+  expect_box(make_ray({0.5f, -0.5f, -5}, {0, 0, 1}), kUnitBox, 4.0f);
+  expect_box(make_ray({0.5f, -0.5f, -5}, {-0.0f, -0.0f, 1}), kUnitBox, 4.0f);
+  expect_box(make_ray({5, 0.25f, 0.25f}, {-1, 0, -0.0f}), kUnitBox, 4.0f);
+  expect_box(make_ray({0.5f, 2, -5}, {0, 0, 1}), kUnitBox, std::nullopt);  // parallel to y slabs, outside them
+}
+
+GRADED_TEST(kStage, Stage04Box, RaysInAFacePlane, 2) {
+  // The origin lies in the plane x = 1 of a face and d.x = 0: (1 - 1) * inf is NaN. The box is
+  // closed, so the ray touches it; NaN must not turn this into a miss.
+  expect_box(make_ray({1, 0, -5}, {0, 0, 1}), kUnitBox, 4.0f);
+  expect_box(make_ray({-1, -1, -5}, {0, -0.0f, 1}), kUnitBox, 4.0f);  // along an edge
+}
+
+GRADED_TEST(kStage, Stage04Box, FlatBoxes, 1) {
+  // The box of a flat mesh has zero thickness: t_enter == t_exit must count as a hit.
+  const Bounds3 flat{glm::vec3(-1, -1, 0), glm::vec3(1, 1, 0)};
+  expect_box(make_ray({0, 0, -3}, {0, 0, 1}), flat, 3.0f);
+  expect_box(make_ray({0.5f, 0.5f, 3}, {0.1f, 0, -1}), flat, 3.0f);
+}
+
+GRADED_TEST(kStage, Stage04Box, MatchesReferenceBoxes, 2) {
+  const nlohmann::json data = load_reference_cases("04_box");
+  int failures = 0;
+  for (const nlohmann::json& c : data.at("cases")) {
+    const Ray ray = make_ray(vec3_from_json(c.at("origin")), vec3_from_json(c.at("direction")), c.at("t_min").get<float>(),
+                             c.at("t_max").is_null() ? kInfinity : c.at("t_max").get<float>());
+    const Bounds3 box{vec3_from_json(c.at("min")), vec3_from_json(c.at("max"))};
+    const std::optional<float> expected = c.at("t_enter").is_null() ? std::nullopt : std::optional<float>(c.at("t_enter").get<float>());
+    const std::optional<float> got = intersect_ray_box(ray, ray_direction_inverse_of(ray), box);
+    if (got.has_value() == expected.has_value() && (!got || close(*got, *expected))) continue;
+    if (++failures <= 3) {
+      diagnose(ray, got, expected);
+      ADD_FAILURE() << "case " << c.at("id") << ": ray " << ray << ", box " << box << "\n  expected " << describe(expected)
+                    << "\n  got      " << describe(got);
+    }
+  }
+  EXPECT_EQ(failures, 0) << failures << " of " << data.at("cases").size() << " reference cases differ (seed "
+                         << data.at("seed") << ")";
+}
+
+}  // namespace
+}  // namespace raylab::grading
