@@ -16,14 +16,6 @@ namespace {
 
 constexpr float kTolerance = 1e-5f;
 
-Ray make_ray(glm::vec3 origin, glm::vec3 direction, float t_min = 0.0f, float t_max = kInfinity) {
-  Ray ray;
-  ray.origin = origin;
-  ray.direction = direction;
-  ray.t_min = t_min;
-  ray.t_max = t_max;
-  return ray;
-}
 
 // What came back, printable: "no hit" or "t = ...".
 std::string describe(const std::optional<float>& t) {

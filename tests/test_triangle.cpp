@@ -26,14 +26,6 @@ using testing::vec3_near;
 constexpr float kTolerance = 1e-6f;
 const glm::vec3 kP0(-1.0f, -1.0f, -2.0f), kP1(1.0f, -1.0f, -2.0f), kP2(-1.0f, 1.0f, -2.0f);
 
-Ray make_ray(glm::vec3 origin, glm::vec3 direction, float t_min = 0.0f, float t_max = kInfinity) {
-  Ray ray;
-  ray.origin = origin;
-  ray.direction = direction;
-  ray.t_min = t_min;
-  ray.t_max = t_max;
-  return ray;
-}
 
 // A ray straight down -z from z = 0 through the triangle's plane at (x, y): t_hit = 2.
 Ray ray_down_through(float x, float y) {

@@ -16,14 +16,6 @@ const bool kRegistered = register_stage({kStage, "03_triangle", "ray-triangle in
 
 constexpr float kTolerance = 1e-4f;
 
-Ray make_ray(glm::vec3 origin, glm::vec3 direction, float t_min = 0.0f, float t_max = kInfinity) {
-  Ray ray;
-  ray.origin = origin;
-  ray.direction = direction;
-  ray.t_min = t_min;
-  ray.t_max = t_max;
-  return ray;
-}
 
 bool close(float got, float expected) { return std::fabs(got - expected) <= kTolerance * std::max(1.0f, std::fabs(expected)); }
 

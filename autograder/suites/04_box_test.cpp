@@ -17,14 +17,6 @@ const bool kRegistered = register_stage({kStage, "04_box", "ray-box intersection
                                                                    Bounds3{glm::vec3(-1), glm::vec3(1)});
                                          }});
 
-Ray make_ray(glm::vec3 origin, glm::vec3 direction, float t_min = 0.0f, float t_max = kInfinity) {
-  Ray ray;
-  ray.origin = origin;
-  ray.direction = direction;
-  ray.t_min = t_min;
-  ray.t_max = t_max;
-  return ray;
-}
 
 const Bounds3 kUnitBox{glm::vec3(-1.0f), glm::vec3(1.0f)};
 
