@@ -24,11 +24,11 @@ namespace {
 
 // One line, once per process, however many scenes or threads: the student should see it,
 // not drown in it.
-void report_fallback_once(const NotImplemented& error) {
+void report_fallback_once(const std::string& stage_id) {
   static std::atomic<bool> reported{false};
-  if (!reported.exchange(true))
+  if (!reported.load(std::memory_order_relaxed) && !reported.exchange(true))
     std::fprintf(stderr, "raylab: stage %s not implemented yet: testing every primitive (slow)\n",
-                 error.stage_id().c_str());
+                 stage_id.c_str());
 }
 
 Bounds3 triangle_bounds(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
@@ -108,7 +108,7 @@ void SceneGeometry::build_bvhs() {
   } catch (const NotImplemented& error) {
     for (MeshPart& mesh : meshes_) mesh.bvh = Bvh();
     objects_bvh_ = Bvh();
-    report_fallback_once(error);
+    fallback_stage_ = error.stage_id();
   }
 }
 
@@ -184,6 +184,7 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
   // Few objects: each in turn (spheres first, as the brute force always did), t_max shrinking.
   // Written out flat, without the per-object dispatch: this is also the whole render of a
   // small scene, and of every scene while stage 5 is a stub.
+  if (!fallback_stage_.empty()) report_fallback_once(fallback_stage_);
   // The best hit is kept in locals (registers) and written to the record once, at the end.
   Ray search = ray;
   HitRecord best;

@@ -5,8 +5,8 @@
 // BVH over its triangles, and a scene of more than a few objects (spheres and meshes) a
 // top-level BVH over the objects' boxes; smaller sets are tested one by one. If build_bvh,
 // intersect_bvh or intersect_ray_box is still a stub (throws NotImplemented), the geometry
-// says so once on stderr ("stage 05_bvh not implemented yet: testing every primitive (slow)")
-// and tests every primitive: a student who has not reached stage 5 can still render.
+// tests every primitive and says so once per process on stderr, at the first query:
+// "raylab: stage 05_bvh not implemented yet: testing every primitive (slow)": a student who has not reached stage 5 can still render.
 #pragma once
 
 #include "raylab/ray.h"
@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace raylab {
@@ -93,6 +94,9 @@ class SceneGeometry {
   std::vector<Triangle> triangles_;
   std::vector<MeshPart> meshes_;
   Bvh objects_bvh_;  // over spheres_ then meshes_; empty: test every object
+  // The stub stage ("05_bvh" or "04_box") that made us fall back to testing every primitive;
+  // said on stderr at the first query, so that nothing is said if the render fails before.
+  std::string fallback_stage_;
 };
 
 }  // namespace raylab
