@@ -8,6 +8,8 @@
 
 #include <atomic>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 namespace raylab {
 
@@ -29,6 +31,16 @@ void report_fallback_once(const std::string& stage_id) {
   if (!reported.load(std::memory_order_relaxed) && !reported.exchange(true))
     std::fprintf(stderr, "raylab: stage %s not implemented yet: testing every primitive (slow)\n",
                  stage_id.c_str());
+}
+
+// A student's build_bvh may return a tree that would send the traversal out of its arrays:
+// stop with the broken rule in words rather than crash (or render garbage) later.
+void check_tree(const Bvh& bvh, const std::vector<Bounds3>& boxes, const std::string& what) {
+  const std::string problem = bvh_invariant_violation(bvh, boxes, SceneGeometry::kBvhLeafSize);
+  if (!problem.empty())
+    throw std::logic_error("stage 05_bvh: build_bvh over " + std::to_string(boxes.size()) + " boxes (" +
+                           what + ") returned a broken tree: " + problem +
+                           " (the autograder's stage 5 tests say more)");
 }
 
 Bounds3 triangle_bounds(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
@@ -69,13 +81,13 @@ void SceneGeometry::build_bvhs() {
       for (std::uint32_t i = 0; i < mesh.triangle_count; ++i)
         boxes.push_back(triangle_bounds(first[i].p0, first[i].p1, first[i].p2));
       mesh.bvh = build_bvh(boxes, kBvhLeafSize);
+      check_tree(mesh.bvh, boxes, scene_.meshes[first->mesh].name);
       // Store the triangles in leaf order, so that a leaf's triangles are adjacent in memory;
       // the BVH's primitive_order then becomes the identity.
       std::vector<Triangle> reordered;
       reordered.reserve(mesh.triangle_count);
       for (std::uint32_t i = 0; i < mesh.triangle_count; ++i) {
-        const std::uint32_t original = mesh.bvh.primitive_order.at(i);
-        reordered.push_back(first[original < mesh.triangle_count ? original : 0]);
+        reordered.push_back(first[mesh.bvh.primitive_order[i]]);
         mesh.bvh.primitive_order[i] = i;
       }
       std::copy(reordered.begin(), reordered.end(), first);
@@ -88,6 +100,7 @@ void SceneGeometry::build_bvhs() {
         boxes.emplace_back(sphere.center - glm::vec3(sphere.radius), sphere.center + glm::vec3(sphere.radius));
       for (const MeshPart& mesh : meshes_) boxes.push_back(mesh.bounds);
       objects_bvh_ = build_bvh(boxes, kBvhLeafSize);
+      check_tree(objects_bvh_, boxes, "the scene's objects");
     }
     // A traversal needs the box test (stage 04_box) and intersect_bvh: find out now, with one
     // query, whether they are still stubs, rather than in the middle of the render.
