@@ -7,6 +7,7 @@ set(RAYLAB_STAGE_FILES
   01_camera_rays/camera_rays.cpp
   02_sphere/sphere.cpp
   03_triangle/triangle.cpp
+  03b_watertight/watertight.cpp
   04_box/box.cpp
   05_bvh/bvh.cpp
 )
