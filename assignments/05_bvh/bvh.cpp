@@ -138,7 +138,7 @@ Bvh build_bvh_sah(const std::vector<Bounds3>& primitive_bounds, int max_leaf_siz
   (void)primitive_bounds;
   (void)max_leaf_size;
   // Bonus (stage 5b): do build_bvh first. Delete the line below when you are done.
-  throw NotImplemented("05_bvh", "build_bvh_sah", "assignments/05_bvh/bvh.cpp");
+  throw NotImplemented("05b_bvh_sah", "build_bvh_sah", "assignments/05_bvh/bvh.cpp");
 }
 
 }  // namespace raylab
