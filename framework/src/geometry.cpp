@@ -198,12 +198,20 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
   // Written out flat, without the per-object dispatch: this is also the whole render of a
   // small scene, and of every scene while stage 5 is a stub.
   if (!fallback_stage_.empty()) report_fallback_once(fallback_stage_);
+  if (query.any_hit) return occluded_by_any_object(ray, query) ? std::optional<float>(ray.t_min) : std::nullopt;
   // The best hit is kept in locals (registers) and written to the record once, at the end.
+  // (Array pointers and sizes in locals: the stage functions are opaque calls, after which
+  // the compiler would otherwise reload them from the vectors.)
   Ray search = ray;
   HitRecord best;
   bool any_hit_found = false;
-  for (std::uint32_t i = 0; i < spheres_.size(); ++i) {
-    if (const std::optional<float> t = intersect_ray_sphere(search, spheres_[i].center, spheres_[i].radius)) {
+  const Sphere* const spheres = spheres_.data();
+  const auto sphere_count = static_cast<std::uint32_t>(spheres_.size());
+  const Triangle* const triangles = triangles_.data();
+  const MeshPart* const meshes = meshes_.data();
+  const std::size_t mesh_count = meshes_.size();
+  for (std::uint32_t i = 0; i < sphere_count; ++i) {
+    if (const std::optional<float> t = intersect_ray_sphere(search, spheres[i].center, spheres[i].radius)) {
       search.t_max = *t;
       best.kind = Kind::Sphere;
       best.index = i;
@@ -213,8 +221,8 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
       }
     }
   }
-  for (std::size_t m = 0; m < meshes_.size() && !any_hit_found; ++m) {
-    const MeshPart& mesh = meshes_[m];
+  for (std::size_t m = 0; m < mesh_count && !any_hit_found; ++m) {
+    const MeshPart& mesh = meshes[m];
     if (!mesh.bvh.nodes.empty()) {
       if (const std::optional<float> t = intersect_mesh(mesh, search, query)) {
         search.t_max = *t;
@@ -225,7 +233,7 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
     }
     const std::uint32_t end = mesh.first_triangle + mesh.triangle_count;
     for (std::uint32_t i = mesh.first_triangle; i < end; ++i) {
-      const Triangle& tri = triangles_[i];
+      const Triangle& tri = triangles[i];
       if (const std::optional<TriangleHit> hit = intersect_ray_triangle(search, tri.p0, tri.p1, tri.p2)) {
         search.t_max = hit->t_hit;
         best.kind = Kind::Triangle;
@@ -241,6 +249,23 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
   if (best.kind == Kind::None) return std::nullopt;
   *query.record = best;
   return search.t_max;
+}
+
+// The any-hit form of the loops above: t_max never shrinks, so the ray is used as it is (no
+// copy: a shadow ray was just written field by field, and reading it back whole would stall).
+bool SceneGeometry::occluded_by_any_object(const Ray& ray, Query& query) const {
+  for (const Sphere& sphere : spheres_)
+    if (intersect_ray_sphere(ray, sphere.center, sphere.radius)) return true;
+  for (const MeshPart& mesh : meshes_) {
+    if (!mesh.bvh.nodes.empty()) {
+      if (intersect_mesh(mesh, ray, query)) return true;
+      continue;
+    }
+    const Triangle* const first = triangles_.data() + mesh.first_triangle;
+    for (std::uint32_t i = 0; i < mesh.triangle_count; ++i)
+      if (intersect_ray_triangle(ray, first[i].p0, first[i].p1, first[i].p2)) return true;
+  }
+  return false;
 }
 
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {

@@ -84,6 +84,7 @@ class SceneGeometry {
 
   void build_bvhs();
   std::optional<float> intersect_objects(const Ray& ray, Query& query) const;
+  bool occluded_by_any_object(const Ray& ray, Query& query) const;
   std::optional<float> intersect_object(std::uint32_t object, const Ray& ray, Query& query) const;
   std::optional<float> intersect_mesh(const MeshPart& mesh, const Ray& ray, Query& query) const;
   static std::optional<float> test_object(void* query, const Ray& ray, std::uint32_t object);
