@@ -2,6 +2,7 @@
 // assignments/03b_watertight/watertight.cpp and docs/03b_watertight.md.
 #include "raylab/stages/03b_watertight.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -59,6 +60,21 @@ std::optional<TriangleHit> intersect_ray_triangle_watertight(const Ray& ray, con
   const float inverse_determinant = 1.0f / determinant;
   const float t_hit = (u * s0.z + v * s1.z + w * s2.z) * inverse_determinant;
   if (!(t_hit > ray.t_min && t_hit < ray.t_max)) return std::nullopt;
+
+  // t itself carries rounding error; a hit closer than that bound may be the ray's own
+  // surface (a shadow ray leaving a large triangle). pbrt-v4 (Triangle::Intersect) bounds it
+  // from the sheared z values, x and y values and edge functions, each with its gamma term.
+  const float max_z = std::max({std::fabs(s0.z), std::fabs(s1.z), std::fabs(s2.z)});
+  const float max_x = std::max({std::fabs(s0.x), std::fabs(s1.x), std::fabs(s2.x)});
+  const float max_y = std::max({std::fabs(s0.y), std::fabs(s1.y), std::fabs(s2.y)});
+  const float delta_z = gamma_bound(3) * max_z;
+  const float delta_x = gamma_bound(5) * (max_x + max_z);
+  const float delta_y = gamma_bound(5) * (max_y + max_z);
+  const float delta_e = 2.0f * (gamma_bound(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+  const float max_e = std::max({std::fabs(u), std::fabs(v), std::fabs(w)});
+  const float delta_t =
+      3.0f * (gamma_bound(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * std::fabs(inverse_determinant);
+  if (!(t_hit > delta_t)) return std::nullopt;
   return TriangleHit{t_hit, v * inverse_determinant, w * inverse_determinant};
 }
 
