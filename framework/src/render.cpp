@@ -1,7 +1,6 @@
 #include "raylab/render.h"
 
 #include "raylab/geometry.h"
-#include "raylab/shading.h"
 #include "raylab/stages/01_camera_rays.h"
 
 #include <algorithm>
@@ -49,7 +48,8 @@ Image render(const Scene& scene, const RenderSettings& settings, RenderStats* st
   const auto start = std::chrono::steady_clock::now();
   const Camera& camera = scene.camera;
   Image image(camera.width, camera.height);
-  const SceneGeometry geometry(scene);
+  const SceneGeometry geometry(scene, Acceleration::Bvh, settings.triangle_test);
+  const Integrator integrator(scene, geometry, settings.max_depth, settings.skip_unneeded_work);
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
 
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
@@ -58,6 +58,8 @@ Image render(const Scene& scene, const RenderSettings& settings, RenderStats* st
   std::atomic<std::size_t> next_tile{0}, tiles_done{0};
   std::atomic<std::uint64_t> rays{0};
   std::atomic<bool> stop{false};
+  ShadingStats total_work;
+  std::mutex work_mutex;
   std::exception_ptr first_error;
   std::mutex error_mutex;
 
@@ -70,9 +72,13 @@ Image render(const Scene& scene, const RenderSettings& settings, RenderStats* st
         for (int y = tile.y0; y < tile.y1; ++y)
           for (int x = tile.x0; x < tile.x1; ++x) {
             const Ray ray = generate_camera_ray(camera, x, y);
-            image.at(x, y) = trace_whitted(scene, geometry, ray, 0, settings.max_depth, tile_stats);
+            image.at(x, y) = trace_camera_ray(integrator, ray, tile_stats);
           }
-        rays += tile_stats.rays;
+        rays += tile_stats.rays();
+        {
+          std::lock_guard<std::mutex> lock(work_mutex);
+          total_work += tile_stats;
+        }
         ++tiles_done;
       }
     } catch (...) {
@@ -98,6 +104,7 @@ Image render(const Scene& scene, const RenderSettings& settings, RenderStats* st
   if (stats) {
     stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats->rays = rays;
+    stats->work = total_work;
     stats->threads = thread_count;
   }
   return image;

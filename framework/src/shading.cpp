@@ -57,6 +57,19 @@ glm::vec3 offset_ray_origin(const SurfaceHit& hit, const glm::vec3& direction) {
   return origin;
 }
 
+ShadingStats& ShadingStats::operator+=(const ShadingStats& other) {
+  camera_rays += other.camera_rays;
+  reflection_rays += other.reflection_rays;
+  refraction_rays += other.refraction_rays;
+  shadow_rays += other.shadow_rays;
+  rays_outside_bounds += other.rays_outside_bounds;
+  return *this;
+}
+
+Integrator::Integrator(const Scene& scene_, const SceneGeometry& geometry_, int max_depth_, bool skip_unneeded_work_)
+    : scene(scene_), geometry(geometry_), needs(analyse_scene(scene_)), max_depth(max_depth_),
+      skip_unneeded_work(skip_unneeded_work_) {}
+
 namespace {
 
 glm::vec3 diffuse_color_at(const Material& material, const SurfaceHit& hit) {
@@ -77,61 +90,86 @@ Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& direction) {
 
 }  // namespace
 
-glm::vec3 trace_whitted(const Scene& scene, const SceneGeometry& geometry, const Ray& ray,
-                        int depth, int max_depth, ShadingStats& stats) {
-  if (depth > max_depth) return glm::vec3(0.0f);
-  ++stats.rays;
-  const std::optional<SurfaceHit> hit = geometry.intersect(ray);
+namespace {
+
+enum class RayKind { Camera, Reflection, Refraction };
+
+// The colour arriving along `ray`, which is `depth` bounces from the camera.
+glm::vec3 trace(const Integrator& integrator, const Ray& ray, int depth, RayKind kind, ShadingStats& stats) {
+  const Scene& scene = integrator.scene;
+  const bool skip = integrator.skip_unneeded_work;
+  switch (kind) {
+    case RayKind::Camera: ++stats.camera_rays; break;
+    case RayKind::Reflection: ++stats.reflection_rays; break;
+    case RayKind::Refraction: ++stats.refraction_rays; break;
+  }
+  if (skip && !may_hit_scene(integrator.needs, ray)) {
+    ++stats.rays_outside_bounds;
+    return scene.background;
+  }
+  const std::optional<SurfaceHit> hit = integrator.geometry.intersect(ray);
   if (!hit) return scene.background;
 
   const Material& material = scene.materials[hit->material];
   const glm::vec3 direction = glm::normalize(ray.direction);
   const glm::vec3& normal = hit->geometric_normal;
+  // A bounce is traced only when it can contribute: within max_depth, and (when skipping) with
+  // a weight above zero.
+  const bool may_bounce = depth < integrator.max_depth;
+  auto bounce = [&](float weight, const glm::vec3& bounce_direction, RayKind bounce_kind) {
+    if (!may_bounce || (skip && weight == 0.0f)) return glm::vec3(0.0f);
+    return weight * trace(integrator, spawn_ray(*hit, bounce_direction), depth + 1, bounce_kind, stats);
+  };
 
   switch (material.kind) {
     case MaterialKind::ReflectiveRefractive: {
       const float reflectance = fresnel_reflectance(direction, normal, material.index_of_refraction);
-      const glm::vec3 reflected = glm::normalize(reflect(direction, normal));
-      glm::vec3 color = reflectance *
-          trace_whitted(scene, geometry, spawn_ray(*hit, reflected), depth + 1, max_depth, stats);
-      if (reflectance < 1.0f) {  // no refracted ray under total internal reflection
-        const glm::vec3 refracted = glm::normalize(refract(direction, normal, material.index_of_refraction));
-        color += (1.0f - reflectance) *
-            trace_whitted(scene, geometry, spawn_ray(*hit, refracted), depth + 1, max_depth, stats);
-      }
+      glm::vec3 color = bounce(reflectance, glm::normalize(reflect(direction, normal)), RayKind::Reflection);
+      if (reflectance < 1.0f)  // no refracted ray under total internal reflection
+        color += bounce(1.0f - reflectance, glm::normalize(refract(direction, normal, material.index_of_refraction)),
+                        RayKind::Refraction);
       return color;
     }
     case MaterialKind::Reflective: {
       const float reflectance = fresnel_reflectance(direction, normal, material.index_of_refraction);
-      const glm::vec3 reflected = reflect(direction, normal);
-      return reflectance *
-             trace_whitted(scene, geometry, spawn_ray(*hit, reflected), depth + 1, max_depth, stats);
+      return bounce(reflectance, reflect(direction, normal), RayKind::Reflection);
     }
     case MaterialKind::DiffuseGlossy:
     default: {
       // Surfaces are two-sided: shade with the normal that faces the viewer.
       const glm::vec3 facing_normal = glm::dot(direction, normal) < 0.0f ? normal : -normal;
+      const glm::vec3 diffuse_color = diffuse_color_at(material, *hit);
+      const bool diffuse_visible = material.kd != 0.0f && diffuse_color != glm::vec3(0.0f);
       glm::vec3 light_amount(0.0f), specular(0.0f);
       for (const PointLight& light : scene.lights) {
-        const glm::vec3 to_light = light.position - hit->point;
-        const glm::vec3 light_direction = glm::normalize(to_light);
+        const glm::vec3 light_direction = glm::normalize(light.position - hit->point);
         const float cos_light = glm::dot(light_direction, facing_normal);
-        if (cos_light > 0.0f) {
-          // Shadow ray towards the light, stopping just short of it, any hit ends it.
+        // A light behind the surface, or a surface with no diffuse colour, needs no shadow ray.
+        const bool needs_shadow_ray = !skip || (cos_light > 0.0f && diffuse_visible);
+        if (needs_shadow_ray) {
+          // Towards the light, stopping just short of it.
           Ray shadow;
           shadow.origin = offset_ray_origin(*hit, light_direction);
           shadow.direction = light.position - shadow.origin;
           shadow.t_max = 1.0f - 1e-4f;
-          ++stats.rays;
-          if (!geometry.occluded(shadow)) light_amount += light.intensity * cos_light;
+          ++stats.shadow_rays;
+          // Any hit ends a shadow ray; without the skips, the closest hit is searched instead.
+          const bool blocked = skip ? integrator.geometry.occluded(shadow) : integrator.geometry.intersect(shadow).has_value();
+          if (!blocked && cos_light > 0.0f) light_amount += light.intensity * cos_light;
         }
         const glm::vec3 light_reflected = reflect(-light_direction, facing_normal);
-        specular += std::pow(std::max(0.0f, -glm::dot(light_reflected, direction)),
-                             material.specular_exponent) * light.intensity;
+        specular += std::pow(std::max(0.0f, -glm::dot(light_reflected, direction)), material.specular_exponent) *
+                    light.intensity;
       }
-      return light_amount * diffuse_color_at(material, *hit) * material.kd + specular * material.ks;
+      return light_amount * diffuse_color * material.kd + specular * material.ks;
     }
   }
+}
+
+}  // namespace
+
+glm::vec3 trace_camera_ray(const Integrator& integrator, const Ray& ray, ShadingStats& stats) {
+  return trace(integrator, ray, 0, RayKind::Camera, stats);
 }
 
 }  // namespace raylab

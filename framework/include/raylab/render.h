@@ -2,8 +2,10 @@
 // pixel), so any thread count gives bit-identical images.
 #pragma once
 
+#include "raylab/geometry.h"
 #include "raylab/image.h"
 #include "raylab/scene.h"
+#include "raylab/shading.h"
 
 #include <cstdint>
 
@@ -13,11 +15,16 @@ struct RenderSettings {
   int max_depth = 5;
   int threads = 0;             // 0: every core
   bool show_progress = false;  // progress, ETA and rays/s on stderr
+  // Leave out what the scene cannot use (Integrator::skip_unneeded_work); the same image
+  // either way. Off only to measure the difference (bench/render_bench.cpp).
+  bool skip_unneeded_work = true;
+  TriangleTest triangle_test = TriangleTest::MollerTrumbore;  // --watertight: stage 03b's test
 };
 
 struct RenderStats {
   double seconds = 0.0;
   std::uint64_t rays = 0;
+  ShadingStats work;  // rays by kind, counted
   int threads = 0;
 };
 
