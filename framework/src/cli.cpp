@@ -21,6 +21,7 @@ struct RenderOptions {
   int max_depth = -1;         // -1: the scene's
   int threads = 0;            // 0: every core
   bool quiet = false;
+  bool watertight = false;
 };
 
 int run_render(const RenderOptions& options) {
@@ -36,6 +37,7 @@ int run_render(const RenderOptions& options) {
   RenderSettings settings;
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.threads = options.threads;
+  if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
   settings.show_progress = !options.quiet && isatty(fileno(stderr));
   RenderStats stats;
   const Image image = render(scene, settings, &stats);
@@ -65,6 +67,8 @@ int run_cli(int argc, char** argv) {
       ->check(CLI::Range(0, 64));
   render_command->add_option("--threads", options.threads, "Worker threads (default: every core)")
       ->check(CLI::Range(1, 1024));
+  render_command->add_flag("--watertight", options.watertight,
+                           "Use the watertight triangle test (stage 03b) instead of stage 03's");
   render_command->add_flag("-q,--quiet", options.quiet, "No progress and no summary line");
 
   try {

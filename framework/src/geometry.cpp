@@ -53,8 +53,10 @@ Bounds3 triangle_bounds(const glm::vec3& p0, const glm::vec3& p1, const glm::vec
 
 }  // namespace
 
-SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration)
-    : scene_(scene), spheres_(scene.spheres) {
+SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, TriangleTest triangle_test)
+    : scene_(scene), spheres_(scene.spheres),
+      intersect_triangle_(triangle_test == TriangleTest::Watertight ? intersect_ray_triangle_watertight
+                                                                     : intersect_ray_triangle) {
   for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
     const TriangleMesh& mesh = scene.meshes[m];
     MeshPart part;
@@ -138,7 +140,7 @@ std::size_t SceneGeometry::bvh_count() const {
 std::optional<float> SceneGeometry::test_triangle(void* context, const Ray& ray, std::uint32_t triangle) {
   Query& query = *static_cast<Query*>(context);
   const Triangle& tri = query.mesh_triangles[triangle];
-  const std::optional<TriangleHit> hit = intersect_ray_triangle(ray, tri.p0, tri.p1, tri.p2);
+  const std::optional<TriangleHit> hit = query.geometry->intersect_triangle_(ray, tri.p0, tri.p1, tri.p2);
   if (!hit) return std::nullopt;
   query.record->kind = Kind::Triangle;
   query.record->index = query.mesh_first_triangle + triangle;
@@ -234,7 +236,7 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
     const std::uint32_t end = mesh.first_triangle + mesh.triangle_count;
     for (std::uint32_t i = mesh.first_triangle; i < end; ++i) {
       const Triangle& tri = triangles[i];
-      if (const std::optional<TriangleHit> hit = intersect_ray_triangle(search, tri.p0, tri.p1, tri.p2)) {
+      if (const std::optional<TriangleHit> hit = intersect_triangle_(search, tri.p0, tri.p1, tri.p2)) {
         search.t_max = hit->t_hit;
         best.kind = Kind::Triangle;
         best.index = i;
@@ -263,7 +265,7 @@ bool SceneGeometry::occluded_by_any_object(const Ray& ray, Query& query) const {
     }
     const Triangle* const first = triangles_.data() + mesh.first_triangle;
     for (std::uint32_t i = 0; i < mesh.triangle_count; ++i)
-      if (intersect_ray_triangle(ray, first[i].p0, first[i].p1, first[i].p2)) return true;
+      if (intersect_triangle_(ray, first[i].p0, first[i].p1, first[i].p2)) return true;
   }
   return false;
 }

@@ -12,6 +12,7 @@
 #include "raylab/ray.h"
 #include "raylab/scene.h"
 #include "raylab/stages/03_triangle.h"
+#include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/05_bvh.h"
 
 #include <cstdint>
@@ -38,10 +39,17 @@ enum class Acceleration {
   BruteForce,  // test every primitive (an oracle for tests, a baseline for bench/)
 };
 
+// Which ray-triangle test every triangle query uses.
+enum class TriangleTest {
+  MollerTrumbore,  // stage 03_triangle, intersect_ray_triangle (the default)
+  Watertight,      // stage 03b_watertight: no ray slips through a closed mesh's shared edges
+};
+
 class SceneGeometry {
  public:
   // The scene must outlive the geometry (its meshes' texture coordinates are read at hits).
-  explicit SceneGeometry(const Scene& scene, Acceleration acceleration = Acceleration::Bvh);
+  explicit SceneGeometry(const Scene& scene, Acceleration acceleration = Acceleration::Bvh,
+                         TriangleTest triangle_test = TriangleTest::MollerTrumbore);
 
   // The closest hit in (ray.t_min, ray.t_max), or nullopt.
   std::optional<SurfaceHit> intersect(const Ray& ray) const;
@@ -98,6 +106,9 @@ class SceneGeometry {
   // The stub stage ("05_bvh" or "04_box") that made us fall back to testing every primitive;
   // said on stderr at the first query, so that nothing is said if the render fails before.
   std::string fallback_stage_;
+  using TriangleTestFunction = std::optional<TriangleHit> (*)(const Ray&, const glm::vec3&, const glm::vec3&,
+                                                              const glm::vec3&);
+  TriangleTestFunction intersect_triangle_ = intersect_ray_triangle;
 };
 
 }  // namespace raylab
