@@ -70,13 +70,14 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
     part.triangle_count = static_cast<std::uint32_t>(triangles_.size()) - part.first_triangle;
     meshes_.push_back(std::move(part));
   }
-  if (acceleration == Acceleration::Bvh) build_bvhs();
+  if (acceleration == Acceleration::BvhAlways) brute_force_limit_ = 0;
+  if (acceleration != Acceleration::BruteForce) build_bvhs();
 }
 
 void SceneGeometry::build_bvhs() {
   try {
     for (MeshPart& mesh : meshes_) {
-      if (mesh.triangle_count <= kBruteForceLimit) continue;
+      if (mesh.triangle_count <= brute_force_limit_) continue;
       Triangle* first = triangles_.data() + mesh.first_triangle;
       std::vector<Bounds3> boxes;
       boxes.reserve(mesh.triangle_count);
@@ -95,7 +96,7 @@ void SceneGeometry::build_bvhs() {
       std::copy(reordered.begin(), reordered.end(), first);
     }
     const std::size_t object_count = spheres_.size() + meshes_.size();
-    if (object_count > kBruteForceLimit) {
+    if (object_count > brute_force_limit_) {
       std::vector<Bounds3> boxes;
       boxes.reserve(object_count);
       for (const Sphere& sphere : spheres_)

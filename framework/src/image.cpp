@@ -101,6 +101,14 @@ ImageDifference compare_images(const Image& actual, const Image& expected, float
   return difference;
 }
 
+Image resize_image(const Image& image, int width, int height) {
+  const oiio::ImageBuf source = to_image_buf(image);
+  const oiio::ImageBuf resized =
+      oiio::ImageBufAlgo::resize(source, "", 0.0f, oiio::ROI(0, width, 0, height, 0, 1, 0, 3));
+  if (resized.has_error()) throw std::runtime_error("resize_image: " + resized.geterror());
+  return from_image_buf(resized);
+}
+
 Image side_by_side_difference(const Image& actual, const Image& expected, float full_scale) {
   const oiio::ImageBuf a = to_image_buf(actual), b = to_image_buf(expected);
   oiio::ImageBuf difference = oiio::ImageBufAlgo::absdiff(a, b);

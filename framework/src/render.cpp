@@ -48,8 +48,9 @@ Image render(const Scene& scene, const RenderSettings& settings, RenderStats* st
   const auto start = std::chrono::steady_clock::now();
   const Camera& camera = scene.camera;
   Image image(camera.width, camera.height);
-  const SceneGeometry geometry(scene, Acceleration::Bvh, settings.triangle_test);
-  const Integrator integrator(scene, geometry, settings.max_depth, settings.skip_unneeded_work);
+  const SceneGeometry geometry(scene, settings.skips.no_bvh_for_small_sets ? Acceleration::Bvh : Acceleration::BvhAlways,
+                               settings.triangle_test);
+  const Integrator integrator(scene, geometry, settings.max_depth, settings.skips);
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
 
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());

@@ -7,14 +7,6 @@ namespace raylab {
 
 SceneNeeds analyse_scene(const Scene& scene) {
   SceneNeeds needs;
-  bool diffuse = false;
-  for (const Material& material : scene.materials) {
-    diffuse = diffuse || material.kind == MaterialKind::DiffuseGlossy;
-    needs.reflection_rays = needs.reflection_rays || material.kind != MaterialKind::DiffuseGlossy;
-    needs.refraction_rays = needs.refraction_rays || material.kind == MaterialKind::ReflectiveRefractive;
-  }
-  needs.shadow_rays = diffuse && !scene.lights.empty();
-
   // A bounding box of everything, then the sphere around it, grown by a relative margin far
   // above float rounding so that no hit on its edge is lost.
   glm::dvec3 low(INFINITY), high(-INFINITY);

@@ -66,9 +66,8 @@ ShadingStats& ShadingStats::operator+=(const ShadingStats& other) {
   return *this;
 }
 
-Integrator::Integrator(const Scene& scene_, const SceneGeometry& geometry_, int max_depth_, bool skip_unneeded_work_)
-    : scene(scene_), geometry(geometry_), needs(analyse_scene(scene_)), max_depth(max_depth_),
-      skip_unneeded_work(skip_unneeded_work_) {}
+Integrator::Integrator(const Scene& scene_, const SceneGeometry& geometry_, int max_depth_, const Skips& skips_)
+    : scene(scene_), geometry(geometry_), needs(analyse_scene(scene_)), max_depth(max_depth_), skips(skips_) {}
 
 namespace {
 
@@ -97,13 +96,13 @@ enum class RayKind { Camera, Reflection, Refraction };
 // The colour arriving along `ray`, which is `depth` bounces from the camera.
 glm::vec3 trace(const Integrator& integrator, const Ray& ray, int depth, RayKind kind, ShadingStats& stats) {
   const Scene& scene = integrator.scene;
-  const bool skip = integrator.skip_unneeded_work;
+  const Skips& skips = integrator.skips;
   switch (kind) {
     case RayKind::Camera: ++stats.camera_rays; break;
     case RayKind::Reflection: ++stats.reflection_rays; break;
     case RayKind::Refraction: ++stats.refraction_rays; break;
   }
-  if (skip && !may_hit_scene(integrator.needs, ray)) {
+  if (skips.rays_outside_bounds && !may_hit_scene(integrator.needs, ray)) {
     ++stats.rays_outside_bounds;
     return scene.background;
   }
@@ -117,7 +116,7 @@ glm::vec3 trace(const Integrator& integrator, const Ray& ray, int depth, RayKind
   // a weight above zero.
   const bool may_bounce = depth < integrator.max_depth;
   auto bounce = [&](float weight, const glm::vec3& bounce_direction, RayKind bounce_kind) {
-    if (!may_bounce || (skip && weight == 0.0f)) return glm::vec3(0.0f);
+    if (!may_bounce || (skips.zero_weight_bounces && weight == 0.0f)) return glm::vec3(0.0f);
     return weight * trace(integrator, spawn_ray(*hit, bounce_direction), depth + 1, bounce_kind, stats);
   };
 
@@ -145,7 +144,7 @@ glm::vec3 trace(const Integrator& integrator, const Ray& ray, int depth, RayKind
         const glm::vec3 light_direction = glm::normalize(light.position - hit->point);
         const float cos_light = glm::dot(light_direction, facing_normal);
         // A light behind the surface, or a surface with no diffuse colour, needs no shadow ray.
-        const bool needs_shadow_ray = !skip || (cos_light > 0.0f && diffuse_visible);
+        const bool needs_shadow_ray = !skips.needless_shadow_rays || (cos_light > 0.0f && diffuse_visible);
         if (needs_shadow_ray) {
           // Towards the light, stopping just short of it.
           Ray shadow;
@@ -153,8 +152,9 @@ glm::vec3 trace(const Integrator& integrator, const Ray& ray, int depth, RayKind
           shadow.direction = light.position - shadow.origin;
           shadow.t_max = 1.0f - 1e-4f;
           ++stats.shadow_rays;
-          // Any hit ends a shadow ray; without the skips, the closest hit is searched instead.
-          const bool blocked = skip ? integrator.geometry.occluded(shadow) : integrator.geometry.intersect(shadow).has_value();
+          // Any hit ends a shadow ray; without that skip, the closest hit is searched instead.
+          const bool blocked = skips.any_hit_shadow_rays ? integrator.geometry.occluded(shadow)
+                                                         : integrator.geometry.intersect(shadow).has_value();
           if (!blocked && cos_light > 0.0f) light_amount += light.intensity * cos_light;
         }
         const glm::vec3 light_reflected = reflect(-light_direction, facing_normal);

@@ -36,6 +36,7 @@ struct SurfaceHit {
 // How SceneGeometry finds hits.
 enum class Acceleration {
   Bvh,         // BVHs where they pay (the default), or every primitive if stage 5 is a stub
+  BvhAlways,   // BVHs even for a handful of primitives (to measure what skipping them saves)
   BruteForce,  // test every primitive (an oracle for tests, a baseline for bench/)
 };
 
@@ -106,6 +107,7 @@ class SceneGeometry {
   // The stub stage ("05_bvh" or "04_box") that made us fall back to testing every primitive;
   // said on stderr at the first query, so that nothing is said if the render fails before.
   std::string fallback_stage_;
+  std::size_t brute_force_limit_ = kBruteForceLimit;
   using TriangleTestFunction = std::optional<TriangleHit> (*)(const Ray&, const glm::vec3&, const glm::vec3&,
                                                               const glm::vec3&);
   TriangleTestFunction intersect_triangle_ = intersect_ray_triangle;

@@ -57,6 +57,10 @@ struct ImageDifference {
 // Compares two images of the same size (throws std::invalid_argument otherwise).
 ImageDifference compare_images(const Image& actual, const Image& expected, float threshold);
 
+// The image resampled to width x height with OpenImageIO's default filter (to compare images
+// of different sizes).
+Image resize_image(const Image& image, int width, int height);
+
 // A side-by-side picture for students: actual | expected | difference heat map
 // (black = equal, through red to yellow = a difference of `full_scale` or more).
 Image side_by_side_difference(const Image& actual, const Image& expected, float full_scale);

@@ -15,9 +15,8 @@ struct RenderSettings {
   int max_depth = 5;
   int threads = 0;             // 0: every core
   bool show_progress = false;  // progress, ETA and rays/s on stderr
-  // Leave out what the scene cannot use (Integrator::skip_unneeded_work); the same image
-  // either way. Off only to measure the difference (bench/render_bench.cpp).
-  bool skip_unneeded_work = true;
+  // What to leave out (shading.h); the same image either way. Changed only to measure.
+  Skips skips;
   TriangleTest triangle_test = TriangleTest::MollerTrumbore;  // --watertight: stage 03b's test
 };
 

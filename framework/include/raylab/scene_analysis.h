@@ -1,7 +1,6 @@
-// What a scene can use, decided once before rendering, so that the renderer leaves out the
-// rest: no shadow rays without lights (or without a surface they could light), no reflection
-// or refraction rays without materials that make them, and camera rays that miss the
-// scene's bounding sphere end at once.
+// What a scene can use, decided once before rendering. Some skips need no analysis: without
+// lights no shadow ray is made, without glass no refraction ray (shading.cpp). What does: the
+// scene's bounding sphere, so that rays that miss it end at once.
 #pragma once
 
 #include "raylab/ray.h"
@@ -10,9 +9,6 @@
 namespace raylab {
 
 struct SceneNeeds {
-  bool shadow_rays = false;      // point lights and a diffuse_glossy material to light
-  bool reflection_rays = false;  // a reflective or glass material
-  bool refraction_rays = false;  // a glass material
   bool has_geometry = false;
   // A sphere around every object (in double: the test must never reject a real hit).
   glm::dvec3 bounds_center{0.0};

@@ -36,18 +36,27 @@ struct ShadingStats {
   ShadingStats& operator+=(const ShadingStats& other);
 };
 
+// The work the renderer leaves out because it cannot change the image. Each can be turned off
+// to measure what it saves (bench/render_bench.cpp); the image is the same either way.
+struct Skips {
+  bool rays_outside_bounds = true;      // rays that miss the scene's bounding sphere end at once
+  bool zero_weight_bounces = true;      // no reflection or refraction ray whose weight is 0
+  bool needless_shadow_rays = true;     // none towards a light behind the surface, or from a black one
+  bool any_hit_shadow_rays = true;      // a shadow ray ends at its first hit, not its closest
+  bool no_bvh_for_small_sets = true;    // a handful of primitives is tested one by one
+
+  static Skips none() { return Skips{false, false, false, false, false}; }
+};
+
 // Everything the rays of one render share.
 struct Integrator {
   const Scene& scene;
   const SceneGeometry& geometry;
   SceneNeeds needs;
   int max_depth = 5;  // bounces after the camera ray
-  // Leave out work that cannot change the image (scene_analysis.h; zero-weight bounces; shadow
-  // rays towards lights behind the surface; any-hit instead of closest hit for shadows). Off
-  // only to measure what the skips save: the image is the same either way.
-  bool skip_unneeded_work = true;
+  Skips skips;
 
-  Integrator(const Scene& scene_, const SceneGeometry& geometry_, int max_depth_, bool skip_unneeded_work_);
+  Integrator(const Scene& scene_, const SceneGeometry& geometry_, int max_depth_, const Skips& skips_);
 };
 
 // The colour seen along a camera ray: background if nothing is hit.
