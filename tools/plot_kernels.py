@@ -30,6 +30,7 @@ def main(csv_path, png_path):
         rows = list(csv.DictReader(f))
     fig, (errors, wrong, leaks) = plt.subplots(1, 3, figsize=(16, 5.6))
     seen = {}
+    zeros = {}  # labels already on the zero line of each panel: stack the next one above them
     for index, row in enumerate(rows):
         group = row["group"]
         marker = MARKERS[seen.setdefault(group, 0) % len(MARKERS)]
@@ -50,9 +51,14 @@ def main(csv_path, png_path):
             if not row[column]:
                 continue
             value = float(row[column])
+            label_offset = offset
+            if value == 0:
+                stacked = zeros.setdefault(column, 0)
+                zeros[column] += 1
+                label_offset = (8, 5 + 11 * stacked)
             axes.scatter([ns], [max(value, FLOOR)], color=colour, marker=marker, s=70, zorder=3)
             axes.annotate(f"{name}: {value:.0f}", (ns, max(value, FLOOR)), textcoords="offset points",
-                          xytext=offset, fontsize=8)
+                          xytext=label_offset, fontsize=8)
     errors.set_yscale("log")
     errors.set_ylabel("relative error of t against long double\n(filled: 99.9th percentile, open: max)")
     errors.set_title("error of t on adversarial inputs")
