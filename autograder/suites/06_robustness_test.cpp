@@ -18,6 +18,7 @@
 #include "raylab/stages/03b_watertight.h"
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -76,7 +77,9 @@ void check_sphere_cases(const std::string& kind) {
     }
   }
   if (failures > 0) add_hint(kCancellationHint);
-  add_note(kind + ": largest relative error of t " + std::to_string(worst) + " over " + std::to_string(checked) + " spheres");
+  char worst_text[32];
+  std::snprintf(worst_text, sizeof worst_text, "%.2e", worst);
+  add_note(kind + ": largest relative error of t " + worst_text + " over " + std::to_string(checked) + " spheres");
   EXPECT_EQ(failures, 0) << failures << " of " << checked << " " << kind << " spheres wrong (seed " << data.at("seed") << ")";
 }
 
