@@ -14,6 +14,7 @@
 #include "stress_kernels.h"
 
 #include "raylab/geometry.h"
+#include "raylab/render.h"
 #include "raylab/scene_loader.h"
 #include "raylab/shading.h"
 #include "raylab/stages/01_camera_rays.h"
@@ -436,6 +437,11 @@ TruthHit truth_closest(const Scene& scene, const Ray& ray, int skip_object, bool
   return best;
 }
 
+struct View {
+  const char* name;
+  glm::vec3 position, look_at;
+};
+
 struct OffsetPolicy {
   const char* name;
   float epsilon;  // 0: the framework's error-bound offset (offset_ray_origin)
@@ -509,10 +515,6 @@ TEST(StressOffsets, ErrorBoundOffsetHasNoAcneNearAndFar) {
   Scene scene = parse_scene(vignette_scene_json(), "stress_vignettes", ".");
   const std::vector<OffsetPolicy> policies = {{"fixed_1e-4", 1e-4f}, {"fixed_1e-3", 1e-3f}, {"error_bound", 0.0f}};
   const int width = full_sweep() ? 640 : 160, height = full_sweep() ? 480 : 120;
-  struct View {
-    const char* name;
-    glm::vec3 position, look_at;
-  };
   // The near view looks at the miniature; the far view at the large copy, from the same angle.
   const View views[2] = {{"near", {0.0f, 0.008f, 0.018f}, {0.0f, 0.001f, 0.0f}},
                          {"far", {100000.0f, 30400.0f, -99100.0f}, {100000.0f, 30050.0f, -100000.0f}}};
@@ -538,6 +540,62 @@ TEST(StressOffsets, ErrorBoundOffsetHasNoAcneNearAndFar) {
         EXPECT_EQ(t.wrongly_lit, 0u) << view.name << ": light leaking with the error-bound offset";
       }
     }
+  }
+}
+
+// The renderer itself (render.h), end to end, on the same two views: every pixel whose
+// truth is clear must have the brightness the truth gives it. The material is white, diffuse
+// only (kd = 1, ks = 0), so a pixel is the sum over the lights it sees of intensity * cos;
+// a light wrongly blocked (acne) darkens it by that light's term, a leak brightens it.
+TEST(StressOffsets, RendererShowsNoAcneNearAndFar) {
+  Scene scene = parse_scene(vignette_scene_json(), "stress_vignettes", ".");
+  const View views[2] = {{"near", {0.0f, 0.008f, 0.018f}, {0.0f, 0.001f, 0.0f}},
+                         {"far", {100000.0f, 30400.0f, -99100.0f}, {100000.0f, 30050.0f, -100000.0f}}};
+  for (const View& view : views) {
+    scene.camera.position = view.position;
+    scene.camera.look_at = view.look_at;
+    scene.camera.width = 160, scene.camera.height = 120;
+    RenderSettings settings;
+    settings.max_depth = 1;
+    settings.threads = 2;
+    const Image image = render(scene, settings);
+    int checked = 0, too_dark = 0, too_bright = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) {
+        const Ray primary = generate_camera_ray(scene.camera, x, y);
+        const TruthHit truth = truth_closest(scene, primary, -1, false);
+        if (!truth.hit || truth.ambiguous) continue;
+        const glm::dvec3 point = glm::dvec3(primary.origin) + double(truth.t) * glm::dvec3(primary.direction);
+        const glm::dvec3 facing = glm::dot(glm::dvec3(primary.direction), truth.normal) < 0 ? truth.normal : -truth.normal;
+        double expected = 0.0;
+        bool clear = true;
+        for (const PointLight& light : scene.lights) {
+          const double cos_light = glm::dot(glm::normalize(glm::dvec3(light.position) - point), facing);
+          if (std::fabs(cos_light) < 1e-3) clear = false;  // the renderer may go either way
+          if (cos_light <= 0) continue;
+          Ray segment;
+          segment.origin = glm::vec3(point);
+          segment.direction = light.position - segment.origin;
+          const TruthHit blocker = truth_closest(scene, segment, truth.object, true);
+          if (blocker.ambiguous) clear = false;
+          if (!blocker.hit) expected += double(light.intensity.x) * cos_light;
+        }
+        if (!clear) continue;
+        ++checked;
+        const double got = image.at(x, y).x, tolerance = 1e-3 + 1e-3 * expected;
+        if (got < expected - tolerance && ++too_dark <= 3)
+          ADD_FAILURE() << view.name << " pixel (" << x << ", " << y << "): " << got << ", expected " << expected
+                        << " (a light wrongly blocked: acne?)";
+        if (got > expected + tolerance && ++too_bright <= 3)
+          ADD_FAILURE() << view.name << " pixel (" << x << ", " << y << "): " << got << ", expected " << expected
+                        << " (light leaking?)";
+      }
+    report(std::string("render.") + view.name,
+           "pixels checked " + std::to_string(checked) + ", too dark " + std::to_string(too_dark) + ", too bright " +
+               std::to_string(too_bright));
+    EXPECT_GT(checked, 160 * 120 / 6) << view.name;
+    EXPECT_EQ(too_dark, 0) << view.name;
+    EXPECT_EQ(too_bright, 0) << view.name;
   }
 }
 
