@@ -38,6 +38,9 @@
 //   6. det = u + v + w; det == 0 (or not finite) is a miss (parallel ray, degenerate triangle).
 //   7. t_hit = (u * z0 + v * z1 + w * z2) / det; keep it only if t_min < t_hit < t_max.
 //      barycentric_b1 = v / det, barycentric_b2 = w / det.
+//   8. Optional (not graded; section 3): also reject t_hit <= its rounding-error bound, as
+//      pbrt-v4 does, or shadow rays leaving a large triangle may hit it again (shadow acne
+//      when you render with --watertight).
 //
 // COMMON MISTAKES
 //   computing a corner's 2D position differently in different triangles (e.g. from

@@ -2,9 +2,10 @@
 //
 // Without a BVH every ray tests every triangle: the camera rays alone of the bunny (3674
 // triangles) at 1280x960 make 4.5 billion triangle tests. With one, a ray tests a dozen or two
-// boxes and a handful of triangles. Three functions: build_bvh (the median split), intersect_bvh (the traversal),
-// and, for the bonus stage 5b, build_bvh_sah. Until build_bvh and intersect_bvh work, the
-// renderer prints one line and tests every primitive (correct, just slow).
+// boxes and a handful of triangles. Three functions: build_bvh (the median split),
+// intersect_bvh (the traversal) and, for the bonus stage 5b, build_bvh_sah. Until build_bvh
+// and intersect_bvh work, the renderer prints one line and tests every primitive (correct,
+// just slow).
 //
 // THE DATA (raylab/stages/05_bvh.h; read it first)
 //   Bvh::nodes            one flat array of 32-byte BvhNodes; nodes[0] is the root
