@@ -13,6 +13,7 @@
 #include "support.h"
 
 #include "raylab/error.h"
+#include "raylab/mesh_generator.h"
 #include "raylab/stages/02_sphere.h"
 #include "raylab/stages/03_triangle.h"
 #include "raylab/stages/03b_watertight.h"
@@ -136,62 +137,17 @@ struct Mesh {
   float inner_radius = 0.0f;  // a ball around center inside the mesh
 };
 
-Mesh icosphere(int levels, float radius, glm::vec3 center) {
-  const float g = 1.6180339887f;
-  std::vector<glm::vec3> points = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                                   {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-  std::vector<std::uint32_t> faces = {0, 11, 5, 0, 5,  1,  0,  1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
-                                      4, 11, 10, 2, 10, 7, 6,  7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
-                                      6, 8,  3,  8, 9,  4, 9,  5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
-  for (glm::vec3& p : points) p = glm::normalize(p);
-  for (int level = 0; level < levels; ++level) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
-    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
-      const auto key = std::minmax(a, b);
-      const auto found = midpoints.find(key);
-      if (found != midpoints.end()) return found->second;
-      points.push_back(glm::normalize(points[a] + points[b]));
-      return midpoints[key] = static_cast<std::uint32_t>(points.size() - 1);
-    };
-    std::vector<std::uint32_t> next;
-    for (std::size_t f = 0; f < faces.size(); f += 3) {
-      const std::uint32_t a = faces[f], b = faces[f + 1], c = faces[f + 2];
-      const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
-      next.insert(next.end(), {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca});
-    }
-    faces = std::move(next);
-  }
-  Mesh mesh{"a sphere of " + std::to_string(faces.size() / 3) + " triangles", {}, faces, center, 0.5f * radius};
-  for (const glm::vec3& p : points) mesh.positions.push_back(center + radius * p);
-  return mesh;
+Mesh closed(TriangleMesh generated, const std::string& description, glm::vec3 center, float inner_radius) {
+  return Mesh{description + " of " + std::to_string(generated.triangle_count()) + " triangles",
+              std::move(generated.positions), std::move(generated.indices), center, inner_radius};
 }
 
-// A cube with n x n squares per face: neighbours in the same plane share their edges.
+Mesh icosphere(int levels, float radius, glm::vec3 center) {
+  return closed(make_icosphere(levels, radius, center), "a sphere", center, 0.5f * radius);
+}
+
 Mesh grid_cube(int n, float half, glm::vec3 center) {
-  Mesh mesh{"a cube of " + std::to_string(12 * n * n) + " triangles", {}, {}, center, 0.5f * half};
-  std::map<std::tuple<int, int, int>, std::uint32_t> index_of;
-  auto vertex = [&](int i, int j, int k) {
-    const auto key = std::make_tuple(i, j, k);
-    const auto found = index_of.find(key);
-    if (found != index_of.end()) return found->second;
-    mesh.positions.push_back(center + half * glm::vec3(2.0f * float(i) / float(n) - 1.0f, 2.0f * float(j) / float(n) - 1.0f,
-                                                       2.0f * float(k) / float(n) - 1.0f));
-    return index_of[key] = static_cast<std::uint32_t>(mesh.positions.size() - 1);
-  };
-  for (int axis = 0; axis < 3; ++axis)
-    for (int side = 0; side <= 1; ++side)
-      for (int u = 0; u < n; ++u)
-        for (int v = 0; v < n; ++v) {
-          auto at = [&](int du, int dv) {
-            int c[3];
-            c[axis] = side * n, c[(axis + 1) % 3] = u + du, c[(axis + 2) % 3] = v + dv;
-            return vertex(c[0], c[1], c[2]);
-          };
-          const std::uint32_t a = at(0, 0), b = at(1, 0), c = at(1, 1), d = at(0, 1);
-          if (side == 1) mesh.indices.insert(mesh.indices.end(), {a, b, c, a, c, d});
-          else mesh.indices.insert(mesh.indices.end(), {a, c, b, a, d, c});
-        }
-  return mesh;
+  return closed(make_grid_cube(n, half, center), "a cube", center, 0.5f * half);
 }
 
 using TriangleTest = std::optional<TriangleHit> (*)(const Ray&, const glm::vec3&, const glm::vec3&, const glm::vec3&);

@@ -1,6 +1,7 @@
 // The stress suite's tools: see stress_kernels.h.
 #include "stress_kernels.h"
 
+#include "raylab/mesh_generator.h"
 #include "raylab/stages/03b_watertight.h"
 
 #include <algorithm>
@@ -306,80 +307,27 @@ std::vector<TriangleCase> triangle_cases(const std::string& set, int count, std:
 
 // ---- Closed meshes ----------------------------------------------------------------------
 
+namespace {
+
+ClosedMesh closed(TriangleMesh mesh, const glm::vec3& inside, float inside_radius) {
+  ClosedMesh closed_mesh;
+  closed_mesh.name = std::move(mesh.name);
+  closed_mesh.positions = std::move(mesh.positions);
+  closed_mesh.indices = std::move(mesh.indices);
+  closed_mesh.inside = inside;
+  closed_mesh.inside_radius = inside_radius;
+  return closed_mesh;
+}
+
+}  // namespace
+
 ClosedMesh make_icosphere(int levels, float radius, const glm::vec3& center) {
-  const double g = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<glm::dvec3> points = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                                    {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-  std::vector<std::uint32_t> faces = {0, 11, 5, 0, 5,  1,  0,  1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
-                                      4, 11, 10, 2, 10, 7, 6,  7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
-                                      6, 8,  3,  8, 9,  4, 9,  5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
-  for (glm::dvec3& p : points) p = glm::normalize(p);
-  for (int level = 0; level < levels; ++level) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
-    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
-      const auto key = std::minmax(a, b);
-      auto found = midpoints.find(key);
-      if (found != midpoints.end()) return found->second;
-      points.push_back(glm::normalize(points[a] + points[b]));
-      const auto index = static_cast<std::uint32_t>(points.size() - 1);
-      midpoints[key] = index;
-      return index;
-    };
-    std::vector<std::uint32_t> next;
-    for (std::size_t f = 0; f < faces.size(); f += 3) {
-      const std::uint32_t a = faces[f], b = faces[f + 1], c = faces[f + 2];
-      const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
-      next.insert(next.end(), {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca});
-    }
-    faces = std::move(next);
-  }
-  ClosedMesh mesh;
-  mesh.name = "icosphere_" + std::to_string(faces.size() / 3);
-  for (const glm::dvec3& p : points) mesh.positions.push_back(center + radius * glm::vec3(p));
-  mesh.indices = std::move(faces);
-  mesh.inside = center;
-  mesh.inside_radius = 0.5f * radius;
-  return mesh;
+  return closed(raylab::make_icosphere(levels, radius, center), center, 0.5f * radius);
 }
 
 ClosedMesh make_grid_cube(int n, float half_size, const glm::vec3& center) {
-  ClosedMesh mesh;
-  std::map<std::tuple<int, int, int>, std::uint32_t> vertex_of;
-  auto vertex = [&](int i, int j, int k) {  // integer lattice coordinates 0..n
-    const auto key = std::make_tuple(i, j, k);
-    auto found = vertex_of.find(key);
-    if (found != vertex_of.end()) return found->second;
-    const glm::vec3 unit(2.0f * float(i) / float(n) - 1.0f, 2.0f * float(j) / float(n) - 1.0f,
-                         2.0f * float(k) / float(n) - 1.0f);
-    mesh.positions.push_back(center + half_size * unit);
-    const auto index = static_cast<std::uint32_t>(mesh.positions.size() - 1);
-    vertex_of[key] = index;
-    return index;
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    for (int side = 0; side <= 1; ++side) {
-      for (int u = 0; u < n; ++u) {
-        for (int v = 0; v < n; ++v) {
-          auto at = [&](int du, int dv) {
-            int c[3];
-            c[axis] = side * n;
-            c[(axis + 1) % 3] = u + du;
-            c[(axis + 2) % 3] = v + dv;
-            return vertex(c[0], c[1], c[2]);
-          };
-          const std::uint32_t a = at(0, 0), b = at(1, 0), c = at(1, 1), d = at(0, 1);
-          // (axis+1, axis+2) is right-handed around +axis: counter-clockwise seen from outside on side 1.
-          if (side == 1) mesh.indices.insert(mesh.indices.end(), {a, b, c, a, c, d});
-          else mesh.indices.insert(mesh.indices.end(), {a, c, b, a, d, c});
-        }
-      }
-    }
-  }
-  char name[64];
-  std::snprintf(name, sizeof name, "grid_cube_%zu%s", mesh.indices.size() / 3, glm::length(center) > 1e3f ? "_far" : "");
-  mesh.name = name;
-  mesh.inside = center;
-  mesh.inside_radius = 0.5f * half_size;
+  ClosedMesh mesh = closed(raylab::make_grid_cube(n, half_size, center), center, 0.5f * half_size);
+  if (glm::length(center) > 1e3f) mesh.name += "_far";
   return mesh;
 }
 

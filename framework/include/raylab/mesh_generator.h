@@ -17,4 +17,12 @@ namespace raylab {
 TriangleMesh make_displaced_sphere(std::uint32_t triangle_count, float radius = 1.0f,
                                    std::uint32_t seed = 1);
 
+// Closed meshes whose every edge is shared by exactly two triangles (outward winding), for
+// tests that shoot rays at shared edges and vertices (leaks through a closed mesh):
+// an icosahedron subdivided `levels` times onto the sphere (20 * 4^levels triangles; the
+// points are computed in double, then rounded once), and a cube whose faces are n x n grids
+// of squares, two triangles each (12 n^2 triangles; neighbours in one plane share edges).
+TriangleMesh make_icosphere(int levels, float radius, const glm::vec3& center);
+TriangleMesh make_grid_cube(int n, float half_size, const glm::vec3& center);
+
 }  // namespace raylab
