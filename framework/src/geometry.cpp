@@ -207,7 +207,6 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
   // the compiler would otherwise reload them from the vectors.)
   Ray search = ray;
   HitRecord best;
-  bool any_hit_found = false;
   const Sphere* const spheres = spheres_.data();
   const auto sphere_count = static_cast<std::uint32_t>(spheres_.size());
   const Triangle* const triangles = triangles_.data();
@@ -218,19 +217,14 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
       search.t_max = *t;
       best.kind = Kind::Sphere;
       best.index = i;
-      if (query.any_hit) {
-        any_hit_found = true;
-        break;
-      }
     }
   }
-  for (std::size_t m = 0; m < mesh_count && !any_hit_found; ++m) {
+  for (std::size_t m = 0; m < mesh_count; ++m) {
     const MeshPart& mesh = meshes[m];
     if (!mesh.bvh.nodes.empty()) {
       if (const std::optional<float> t = intersect_mesh(mesh, search, query)) {
         search.t_max = *t;
         best = *query.record;  // intersect_mesh wrote it
-        any_hit_found = query.any_hit;
       }
       continue;
     }
@@ -242,10 +236,6 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
         best.kind = Kind::Triangle;
         best.index = i;
         best.triangle_hit = *hit;
-        if (query.any_hit) {
-          any_hit_found = true;
-          break;
-        }
       }
     }
   }
