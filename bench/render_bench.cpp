@@ -74,9 +74,8 @@ std::vector<NamedScene> skip_scenes() {
   return scenes;
 }
 
-// Rays that reached the geometry: all rays but those the bounding sphere ended.
 unsigned long long traced(const Timed& timed) {
-  return static_cast<unsigned long long>(timed.stats.work.rays() - timed.stats.work.rays_outside_bounds);
+  return static_cast<unsigned long long>(timed.stats.work.traced_rays());
 }
 
 struct SkipCase {

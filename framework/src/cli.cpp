@@ -45,7 +45,7 @@ int run_render(const RenderOptions& options) {
   if (!options.quiet)
     std::fprintf(stderr, "rendered %s: %dx%d in %.3f s on %d threads (%.2f Mrays/s) -> %s\n",
                  options.scene_path.c_str(), image.width(), image.height(), stats.seconds,
-                 stats.threads, stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0,
+                 stats.threads, stats.seconds > 0 ? stats.work.rays() / stats.seconds * 1e-6 : 0.0,
                  options.output_path.c_str());
   return kExitOk;
 }

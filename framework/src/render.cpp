@@ -57,7 +57,7 @@ Image render(const Scene& scene, const RenderSettings& settings, RenderStats* st
   const int thread_count = std::max(1, std::min<int>(settings.threads > 0 ? settings.threads : static_cast<int>(hardware),
                                                       static_cast<int>(tiles.size())));
   std::atomic<std::size_t> next_tile{0}, tiles_done{0};
-  std::atomic<std::uint64_t> rays{0};
+  std::atomic<std::uint64_t> rays{0};  // for the progress line, read while workers run
   std::atomic<bool> stop{false};
   ShadingStats total_work;
   std::mutex work_mutex;
@@ -104,7 +104,6 @@ Image render(const Scene& scene, const RenderSettings& settings, RenderStats* st
 
   if (stats) {
     stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    stats->rays = rays;
     stats->work = total_work;
     stats->threads = thread_count;
   }

@@ -22,8 +22,7 @@ struct RenderSettings {
 
 struct RenderStats {
   double seconds = 0.0;
-  std::uint64_t rays = 0;
-  ShadingStats work;  // rays by kind, counted
+  ShadingStats work;  // rays by kind, counted (work.rays() in all)
   int threads = 0;
 };
 

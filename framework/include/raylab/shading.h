@@ -33,6 +33,8 @@ struct ShadingStats {
   std::uint64_t rays_outside_bounds = 0;  // ended by the scene's bounding sphere, untraced
 
   std::uint64_t rays() const { return camera_rays + reflection_rays + refraction_rays + shadow_rays; }
+  // The rays that reached the geometry: all but those the bounding sphere ended.
+  std::uint64_t traced_rays() const { return rays() - rays_outside_bounds; }
   ShadingStats& operator+=(const ShadingStats& other);
 };
 
