@@ -56,16 +56,15 @@ void write_image(const Image& image, const std::string& path) {
   check_image_extension(path);
   const std::string ext = lower_extension(path);
   oiio::ImageBuf linear = to_image_buf(image);
-  bool ok = false;
-  if (ext == "exr") {
-    ok = linear.write(path, oiio::TypeDesc::FLOAT);
-  } else {  // png, ppm
-    oiio::ImageBuf srgb = oiio::ImageBufAlgo::colorconvert(linear, "linear", "sRGB");
-    srgb = oiio::ImageBufAlgo::clamp(srgb, 0.0f, 1.0f);
-    if (!srgb.has_error() && srgb.write(path, oiio::TypeDesc::UINT8)) return;
-    throw InputError(path + ": cannot write image: " + srgb.geterror());
+  if (ext == "exr") {  // linear float, as in memory
+    if (linear.write(path, oiio::TypeDesc::FLOAT)) return;
+    throw InputError(path + ": cannot write image: " + linear.geterror());
   }
-  if (!ok) throw InputError(path + ": cannot write image: " + linear.geterror());
+  // png, ppm: 8-bit sRGB
+  oiio::ImageBuf srgb = oiio::ImageBufAlgo::colorconvert(linear, "linear", "sRGB");
+  srgb = oiio::ImageBufAlgo::clamp(srgb, 0.0f, 1.0f);
+  if (!srgb.has_error() && srgb.write(path, oiio::TypeDesc::UINT8)) return;
+  throw InputError(path + ": cannot write image: " + srgb.geterror());
 }
 
 Image read_image(const std::string& path) {
