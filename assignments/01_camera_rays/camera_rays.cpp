@@ -8,14 +8,17 @@
 //                         use degrees_to_radians from raylab/math.h)
 //   camera.width, camera.height   the image size in pixels; camera.aspect_ratio() = width / height
 //   pixel_x, pixel_y      the pixel: column 0..width-1 from the left, row 0..height-1 from the TOP
+//   position_in_pixel     where in that pixel the ray must pass, each coordinate in [0, 1) from
+//                         the pixel's top-left corner; (0.5, 0.5) is its CENTRE (the renderer
+//                         passes the centre at 1 sample per pixel, other points to anti-alias)
 //
 // WHAT YOU RETURN
-//   A Ray with origin = camera.position and a UNIT-LENGTH direction through the CENTRE of the
-//   pixel, i.e. through raster point (pixel_x + 0.5, pixel_y + 0.5). Leave t_min = 0 and
-//   t_max = infinity (the Ray defaults).
+//   A Ray with origin = camera.position and a UNIT-LENGTH direction through raster point
+//   (pixel_x + position_in_pixel.x, pixel_y + position_in_pixel.y); for the centre, (pixel_x +
+//   0.5, pixel_y + 0.5). Leave t_min = 0 and t_max = infinity (the Ray defaults).
 //
 // THE STEPS (docs/01_camera_rays.md, section 2)
-//   1. Raster to NDC in [0, 1]:     ndc_x = (pixel_x + 0.5) / width, ndc_y likewise with height.
+//   1. Raster to NDC in [0, 1]:     ndc_x = (pixel_x + position_in_pixel.x) / width, ndc_y likewise.
 //   2. NDC to screen space, on the image plane at distance 1 in front of the eye:
 //        scale    = tan(fov_y / 2)                       (half the angle, in radians)
 //        screen_x = (2 ndc_x - 1) * aspect * scale       (aspect applies to x only)
@@ -36,10 +39,11 @@
 
 namespace raylab {
 
-Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y) {
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
   (void)camera;
   (void)pixel_x;
   (void)pixel_y;
+  (void)position_in_pixel;
   // Start with step 1 above. Delete the line below when you are done.
   throw NotImplemented("01_camera_rays", "generate_camera_ray",
                        "assignments/01_camera_rays/camera_rays.cpp");

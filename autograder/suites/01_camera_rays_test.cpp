@@ -148,7 +148,34 @@ GRADED_TEST(kStage, Stage01CameraRays, TurnedCamera, 3) {
   expect_camera_ray(camera, 1, 1, glm::vec3(1.0f, -0.5f, -0.5f));
 }
 
-GRADED_TEST(kStage, Stage01CameraRays, MatchesReferenceRays, 5) {
+GRADED_TEST(kStage, Stage01CameraRays, RaysThroughOtherPointsOfThePixel, 2) {
+  // Anti-aliasing aims at other points than the centre. 4x2 pixels, 90 degrees, aspect 2:
+  // point (0, 0) of pixel (0, 0) is the image's top-left corner, NDC (0, 0), screen (-2, 1);
+  // point (0.25, 0.75) of pixel (1, 0) is raster (1.25, 0.75), NDC (0.3125, 0.375), screen
+  // (-0.75, 0.25).
+  const Camera camera = make_camera(4, 2, 90.0f);
+  struct Case {
+    int pixel_x, pixel_y;
+    glm::vec2 position_in_pixel;
+    glm::vec3 expected;
+  };
+  const Case cases[] = {{0, 0, glm::vec2(0.0f, 0.0f), glm::vec3(-2.0f, 1.0f, -1.0f)},
+                        {1, 0, glm::vec2(0.25f, 0.75f), glm::vec3(-0.75f, 0.25f, -1.0f)},
+                        {3, 1, glm::vec2(0.9375f, 0.125f), glm::vec3(1.9375f, -0.125f, -1.0f)}};
+  for (const Case& c : cases) {
+    const glm::vec3 got = generate_camera_ray(camera, c.pixel_x, c.pixel_y, c.position_in_pixel).direction;
+    const glm::vec3 expected = glm::normalize(c.expected);
+    if (glm::all(glm::lessThanEqual(glm::abs(got - expected), glm::vec3(kDirectionTolerance)))) continue;
+    if (same_direction(got, generate_camera_ray(camera, c.pixel_x, c.pixel_y).direction, kDirectionTolerance))
+      add_hint("position_in_pixel ignored: aim through raster point (pixel_x + position_in_pixel.x, pixel_y + "
+               "position_in_pixel.y); (0.5, 0.5) is only the centre (docs/01_camera_rays.md, section 2)");
+    ADD_FAILURE() << "point " << c.position_in_pixel << " of pixel (" << c.pixel_x << ", " << c.pixel_y << ") of a "
+                  << camera << ":\n  expected direction " << expected << " (each component within "
+                  << kDirectionTolerance << ")\n  got               " << got;
+  }
+}
+
+GRADED_TEST(kStage, Stage01CameraRays, MatchesReferenceRays, 3) {
   // Seeded random cameras and pixels; the expected rays come from the reference solution.
   const nlohmann::json data = load_reference_cases("01_camera_rays");
   int failures = 0;

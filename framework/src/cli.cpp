@@ -7,7 +7,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <iostream>
 #include <unistd.h>
 
@@ -20,12 +22,19 @@ struct RenderOptions {
   int width = 0, height = 0;  // 0: the scene's
   int max_depth = -1;         // -1: the scene's
   int threads = 0;            // 0: every core
+  int samples_per_pixel = 1;
+  std::uint64_t seed = 0;
+  std::string integrator = "whitted";
+  std::string variance_path;  // empty: no variance image
   bool quiet = false;
   bool watertight = false;
 };
 
 int run_render(const RenderOptions& options) {
   check_image_extension(options.output_path);
+  if (!options.variance_path.empty()) check_image_extension(options.variance_path);
+  const std::optional<IntegratorKind> integrator = integrator_from_name(options.integrator);
+  if (!integrator) throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted)");
   Scene scene = load_scene(options.scene_path);
   if (options.width > 0) scene.camera.width = options.width;
   if (options.height > 0) scene.camera.height = options.height;
@@ -35,16 +44,22 @@ int run_render(const RenderOptions& options) {
     throw UsageError(std::string("--width/--height: ") + e.what());
   }
   RenderSettings settings;
+  settings.integrator = *integrator;
+  settings.samples_per_pixel = options.samples_per_pixel;
+  settings.seed = options.seed;
+  settings.track_variance = !options.variance_path.empty();
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.threads = options.threads;
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
   settings.show_progress = !options.quiet && isatty(fileno(stderr));
   RenderStats stats;
-  const Image image = render(scene, settings, &stats);
+  const Film film = render_film(scene, settings, &stats);
+  const Image image = film.mean();
   write_image(image, options.output_path);
+  if (!options.variance_path.empty()) write_image(film.variance_of_mean(), options.variance_path);
   if (!options.quiet)
-    std::fprintf(stderr, "rendered %s: %dx%d in %.3f s on %d threads (%.2f Mrays/s) -> %s\n",
-                 options.scene_path.c_str(), image.width(), image.height(), stats.seconds,
+    std::fprintf(stderr, "rendered %s: %dx%d at %d spp in %.3f s on %d threads (%.2f Mrays/s) -> %s\n",
+                 options.scene_path.c_str(), image.width(), image.height(), settings.samples_per_pixel, stats.seconds,
                  stats.threads, stats.seconds > 0 ? stats.work.rays() / stats.seconds * 1e-6 : 0.0,
                  options.output_path.c_str());
   return kExitOk;
@@ -67,6 +82,13 @@ int run_cli(int argc, char** argv) {
       ->check(CLI::Range(0, 64));
   render_command->add_option("--threads", options.threads, "Worker threads (default: every core)")
       ->check(CLI::Range(1, 1024));
+  render_command->add_option("--spp", options.samples_per_pixel,
+                             "Samples per pixel (default 1: one ray through each pixel's centre)")
+      ->check(CLI::Range(1, kMaxSamplesPerPixel));
+  render_command->add_option("--integrator", options.integrator, "How light is computed: whitted (default)");
+  render_command->add_option("--seed", options.seed, "Seed of the random numbers (default 0)");
+  render_command->add_option("--variance", options.variance_path,
+                             "Also write each pixel's variance of the mean (.exr keeps it linear)");
   render_command->add_flag("--watertight", options.watertight,
                            "Use the watertight triangle test (stage 03b) instead of stage 03's");
   render_command->add_flag("-q,--quiet", options.quiet, "No progress and no summary line");

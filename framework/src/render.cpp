@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -44,13 +46,18 @@ void print_progress(std::size_t done, std::size_t total, double seconds, std::ui
 
 }  // namespace
 
-Image render(const Scene& scene, const RenderSettings& settings, RenderStats* stats) {
+Film render_film(const Scene& scene, const RenderSettings& settings, RenderStats* stats) {
   const auto start = std::chrono::steady_clock::now();
+  if (settings.samples_per_pixel < 1 || settings.samples_per_pixel > kMaxSamplesPerPixel)
+    throw std::invalid_argument("samples per pixel must be in [1, " + std::to_string(kMaxSamplesPerPixel) +
+                                "], got " + std::to_string(settings.samples_per_pixel));
   const Camera& camera = scene.camera;
-  Image image(camera.width, camera.height);
+  Film film(camera.width, camera.height, settings.track_variance);
   const SceneGeometry geometry(scene, settings.skips.no_bvh_for_small_sets ? Acceleration::Bvh : Acceleration::BvhAlways,
                                settings.triangle_test);
-  const Integrator integrator(scene, geometry, settings.max_depth, settings.skips);
+  const RenderContext context(scene, geometry, settings.max_depth, settings.skips);
+  const Integrator integrator(settings.integrator);
+  const int samples_per_pixel = settings.samples_per_pixel;
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
 
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
@@ -70,11 +77,14 @@ Image render(const Scene& scene, const RenderSettings& settings, RenderStats* st
       for (std::size_t t = next_tile++; t < tiles.size() && !stop; t = next_tile++) {
         const Tile& tile = tiles[t];
         ShadingStats tile_stats;
+        Sampler sampler(samples_per_pixel, settings.seed);
         for (int y = tile.y0; y < tile.y1; ++y)
-          for (int x = tile.x0; x < tile.x1; ++x) {
-            const Ray ray = generate_camera_ray(camera, x, y);
-            image.at(x, y) = trace_camera_ray(integrator, ray, tile_stats);
-          }
+          for (int x = tile.x0; x < tile.x1; ++x)
+            for (int sample = 0; sample < samples_per_pixel; ++sample) {
+              sampler.start_pixel_sample(x, y, sample);
+              const Ray ray = generate_camera_ray(camera, x, y, sampler.get_pixel_2d());
+              film.add_sample(x, y, integrator.li(context, ray, sampler, tile_stats));
+            }
         rays += tile_stats.rays();
         {
           std::lock_guard<std::mutex> lock(work_mutex);
@@ -107,7 +117,11 @@ Image render(const Scene& scene, const RenderSettings& settings, RenderStats* st
     stats->work = total_work;
     stats->threads = thread_count;
   }
-  return image;
+  return film;
+}
+
+Image render(const Scene& scene, const RenderSettings& settings, RenderStats* stats) {
+  return render_film(scene, settings, stats).mean();
 }
 
 }  // namespace raylab

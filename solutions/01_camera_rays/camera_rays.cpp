@@ -6,10 +6,10 @@
 
 namespace raylab {
 
-Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y) {
-  // Raster -> NDC in [0, 1] at the pixel centre.
-  const float ndc_x = (static_cast<float>(pixel_x) + 0.5f) / static_cast<float>(camera.width);
-  const float ndc_y = (static_cast<float>(pixel_y) + 0.5f) / static_cast<float>(camera.height);
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
+  // Raster -> NDC in [0, 1] at the given point of the pixel (its centre: + 0.5).
+  const float ndc_x = (static_cast<float>(pixel_x) + position_in_pixel.x) / static_cast<float>(camera.width);
+  const float ndc_y = (static_cast<float>(pixel_y) + position_in_pixel.y) / static_cast<float>(camera.height);
   // NDC -> screen space on the plane z = -1: x in [-aspect*scale, aspect*scale], y flipped so
   // that row 0 is the top of the picture.
   const float scale = std::tan(degrees_to_radians(camera.fov_y_degrees) * 0.5f);

@@ -1,21 +1,33 @@
 # cmake -DPROGRAM=raylab-reference -DSCENE=scene.json -DOUTPUT_DIR=dir -P threads_identical.cmake
-# Renders SCENE with --threads 1 and --threads 2 and fails unless the two PNG files are
-# byte-identical: each pixel must depend only on the scene, never on which thread drew it.
-foreach(threads 1 2)
-  set(image "${OUTPUT_DIR}/threads_${threads}.png")
-  file(REMOVE "${image}")
+# Renders SCENE with --threads 1 and --threads 2, at 1 and at 4 samples per pixel, and fails
+# unless the two PNG files of each sample count are byte-identical: each pixel must depend
+# only on the scene and the sample count, never on which thread drew it.
+foreach(spp 1 4)
+  foreach(threads 1 2)
+    set(image "${OUTPUT_DIR}/threads_${threads}_spp_${spp}.png")
+    file(REMOVE "${image}")
+    execute_process(
+      COMMAND "${PROGRAM}" render "${SCENE}" -o "${image}" --width 160 --height 120 -q --threads ${threads}
+              --spp ${spp}
+      RESULT_VARIABLE status ERROR_VARIABLE err)
+    if(NOT status EQUAL 0 OR NOT EXISTS "${image}")
+      message(FATAL_ERROR "--threads ${threads} --spp ${spp}: exit status ${status}, no ${image}\nstderr: ${err}")
+    endif()
+  endforeach()
   execute_process(
-    COMMAND "${PROGRAM}" render "${SCENE}" -o "${image}" --width 160 --height 120 -q --threads ${threads}
-    RESULT_VARIABLE status ERROR_VARIABLE err)
-  if(NOT status EQUAL 0 OR NOT EXISTS "${image}")
-    message(FATAL_ERROR "--threads ${threads}: exit status ${status}, no ${image}\nstderr: ${err}")
+    COMMAND "${CMAKE_COMMAND}" -E compare_files "${OUTPUT_DIR}/threads_1_spp_${spp}.png"
+            "${OUTPUT_DIR}/threads_2_spp_${spp}.png"
+    RESULT_VARIABLE different)
+  if(NOT different EQUAL 0)
+    message(FATAL_ERROR "--spp ${spp}: --threads 1 and --threads 2 wrote different files: "
+                        "${OUTPUT_DIR}/threads_1_spp_${spp}.png and ${OUTPUT_DIR}/threads_2_spp_${spp}.png")
   endif()
 endforeach()
+# The anti-aliased picture must differ from the 1-spp one (else --spp did nothing).
 execute_process(
-  COMMAND "${CMAKE_COMMAND}" -E compare_files "${OUTPUT_DIR}/threads_1.png" "${OUTPUT_DIR}/threads_2.png"
-  RESULT_VARIABLE different)
-if(NOT different EQUAL 0)
-  message(FATAL_ERROR "--threads 1 and --threads 2 wrote different files: "
-                      "${OUTPUT_DIR}/threads_1.png and ${OUTPUT_DIR}/threads_2.png")
+  COMMAND "${CMAKE_COMMAND}" -E compare_files "${OUTPUT_DIR}/threads_1_spp_1.png" "${OUTPUT_DIR}/threads_1_spp_4.png"
+  RESULT_VARIABLE spp_changed)
+if(spp_changed EQUAL 0)
+  message(FATAL_ERROR "--spp 4 wrote the same file as --spp 1: no anti-aliasing")
 endif()
-message(STATUS "ok: --threads 1 and --threads 2 give identical PNG files")
+message(STATUS "ok: --threads 1 and --threads 2 give identical PNG files at --spp 1 and --spp 4")

@@ -5,12 +5,12 @@
 
 namespace raylab {
 
-Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y) {
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
   const float aspect = camera.aspect_ratio();
   const float half_angle = degrees_to_radians(camera.fov_y_degrees) * 0.5f;
-  float center_offset = 0.5f;
-  const float ndc_x = (static_cast<float>(pixel_x) + center_offset) / static_cast<float>(camera.width);
-  const float ndc_y = (static_cast<float>(pixel_y) + center_offset) / static_cast<float>(camera.height);
+  const glm::vec2 center_offset = position_in_pixel;
+  const float ndc_x = (static_cast<float>(pixel_x) + center_offset.x) / static_cast<float>(camera.width);
+  const float ndc_y = (static_cast<float>(pixel_y) + center_offset.y) / static_cast<float>(camera.height);
   const float scale = std::tan(2.0f * half_angle);
   const float screen_x = (2.0f * ndc_x - 1.0f) * aspect * scale;
   const float screen_y = (1.0f - 2.0f * ndc_y) * scale;

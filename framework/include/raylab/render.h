@@ -1,9 +1,16 @@
 // The renderer: tiles over all cores; each pixel's value depends only on (scene, settings,
 // pixel), so any thread count gives bit-identical images.
+//
+// Per pixel, samples_per_pixel samples: the sampler (sampler.h) gives the point in the pixel
+// (its centre at 1 sample, stratified points otherwise), stage 01 turns it into a camera ray,
+// the integrator (integrator.h) gives the radiance along it, and the film (film.h) keeps the
+// mean and, on request, the variance of the mean.
 #pragma once
 
+#include "raylab/film.h"
 #include "raylab/geometry.h"
 #include "raylab/image.h"
+#include "raylab/integrator.h"
 #include "raylab/scene.h"
 #include "raylab/shading.h"
 
@@ -12,6 +19,10 @@
 namespace raylab {
 
 struct RenderSettings {
+  IntegratorKind integrator = IntegratorKind::Whitted;
+  int samples_per_pixel = 1;    // --spp; 1: one ray through each pixel's centre
+  std::uint64_t seed = 0;       // changes every random number (an independent render)
+  bool track_variance = false;  // keep each pixel's variance of the mean (render_film)
   int max_depth = 5;
   int threads = 0;             // 0: every core
   bool show_progress = false;  // progress, ETA and rays/s on stderr
@@ -26,8 +37,16 @@ struct RenderStats {
   int threads = 0;
 };
 
-// Renders scene.camera's view. Exceptions from stage functions (NotImplemented, ...) stop the
-// render and are rethrown here, from the calling thread.
+// The largest --spp: 2^20 samples per pixel.
+constexpr int kMaxSamplesPerPixel = 1 << 20;
+
+// Renders scene.camera's view into a film: each pixel's mean, and its variance of the mean
+// when settings.track_variance. Exceptions from stage functions (NotImplemented, ...) stop
+// the render and are rethrown here, from the calling thread. Throws std::invalid_argument
+// for samples_per_pixel outside [1, kMaxSamplesPerPixel].
+Film render_film(const Scene& scene, const RenderSettings& settings, RenderStats* stats = nullptr);
+
+// The image alone: render_film(...).mean().
 Image render(const Scene& scene, const RenderSettings& settings, RenderStats* stats = nullptr);
 
 }  // namespace raylab

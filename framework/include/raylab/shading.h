@@ -1,10 +1,11 @@
-// Whitted-style shading as in GAMES101 assignment 5, with pbrt-v4's robust ray offsets.
+// What every integrator shares: reflection and refraction directions, Fresnel, robust
+// secondary-ray origins (pbrt-v4), the work counters and the skips.
 #pragma once
 
 #include "raylab/geometry.h"
 #include "raylab/scene.h"
-#include "raylab/scene_analysis.h"
 
+#include <cmath>
 #include <cstdint>
 
 namespace raylab {
@@ -23,6 +24,26 @@ float fresnel_reflectance(const glm::vec3& incident, const glm::vec3& normal, fl
 // moved along the geometric normal by the bound on its error (pbrt-v4, OffsetRayOrigin), then
 // rounded away from the surface. No fixed epsilon: works at any scale.
 glm::vec3 offset_ray_origin(const SurfaceHit& hit, const glm::vec3& direction);
+
+// A ray leaving the surface of `hit` along `direction` (not necessarily unit length), from
+// offset_ray_origin, with t_min = 0 and t_max = infinity.
+inline Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& direction) {
+  Ray ray;
+  ray.origin = offset_ray_origin(hit, direction);
+  ray.direction = direction;
+  return ray;
+}
+
+// The material's diffuse colour at the hit: its checkerboard where the hit has texture
+// coordinates, its diffuse_color otherwise.
+inline glm::vec3 diffuse_color_at(const Material& material, const SurfaceHit& hit) {
+  if (!material.checkerboard || !hit.has_texcoord) return material.diffuse_color;
+  const Checkerboard& board = *material.checkerboard;
+  auto fraction = [](float x) { return x - std::floor(x); };  // in [0, 1), also below zero
+  const bool s_half = fraction(hit.texcoord.x * board.scale) > 0.5f;
+  const bool t_half = fraction(hit.texcoord.y * board.scale) > 0.5f;
+  return (s_half != t_half) ? board.color_b : board.color_a;
+}
 
 // The work done, counted (exact on any machine, unlike time).
 struct ShadingStats {
@@ -49,19 +70,5 @@ struct Skips {
 
   static Skips none() { return Skips{false, false, false, false, false}; }
 };
-
-// Everything the rays of one render share.
-struct Integrator {
-  const Scene& scene;
-  const SceneGeometry& geometry;
-  SceneNeeds needs;
-  int max_depth = 5;  // bounces after the camera ray
-  Skips skips;
-
-  Integrator(const Scene& scene_, const SceneGeometry& geometry_, int max_depth_, const Skips& skips_);
-};
-
-// The colour seen along a camera ray: background if nothing is hit.
-glm::vec3 trace_camera_ray(const Integrator& integrator, const Ray& ray, ShadingStats& stats);
 
 }  // namespace raylab

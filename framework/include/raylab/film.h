@@ -1,0 +1,57 @@
+// The film: accumulates the samples of every pixel and gives their mean (the image) and, when
+// asked for, the variance of that mean per pixel (how far the image may be from its
+// expectation: the grader's tests through the noise, and adaptive sampling, read it).
+//
+// Each pixel is written by one thread at a time (the renderer's tiles), in sample order, so
+// the result is the same at any thread count. Sums are kept in double: a mean of many
+// float samples loses nothing, and a mean of one sample is that sample exactly.
+#pragma once
+
+#include "raylab/image.h"
+#include "raylab/math.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace raylab {
+
+class Film {
+ public:
+  Film(int width, int height, bool track_variance);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  bool tracks_variance() const { return track_variance_; }
+
+  void add_sample(int x, int y, const glm::vec3& value) {
+    const std::size_t i = index(x, y);
+    const glm::dvec3 sample(value);
+    const std::uint32_t count = ++counts_[i];
+    if (track_variance_) {
+      // Welford's update of the mean and the squared deviations: stable for many samples.
+      const glm::dvec3 mean_before = count > 1u ? sums_[i] / static_cast<double>(count - 1u) : glm::dvec3(0.0);
+      const glm::dvec3 mean_after = mean_before + (sample - mean_before) / static_cast<double>(count);
+      squared_error_[i] += (sample - mean_before) * (sample - mean_after);
+    }
+    sums_[i] += sample;
+  }
+
+  std::uint32_t sample_count(int x, int y) const { return counts_[index(x, y)]; }
+  // The mean of each pixel's samples (black where there are none).
+  Image mean() const;
+  // Per pixel and channel: the sample variance s^2 (with n - 1) divided by n, the estimated
+  // variance of the pixel's mean; 0 where a pixel has fewer than 2 samples. Only when the film
+  // tracks variance (throws std::logic_error otherwise).
+  Image variance_of_mean() const;
+
+ private:
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x); }
+
+  int width_ = 0, height_ = 0;
+  bool track_variance_ = false;
+  std::vector<std::uint32_t> counts_;
+  std::vector<glm::dvec3> sums_;           // the sum of each pixel's samples
+  std::vector<glm::dvec3> squared_error_;  // sum of squared deviations from the mean (Welford's M2)
+};
+
+}  // namespace raylab

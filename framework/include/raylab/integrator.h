@@ -1,0 +1,64 @@
+// Integrators: the radiance arriving at the camera along one ray, li(ray, sampler), in the
+// shape of pbrt-v4's Integrator::Li and Nori's Integrator::Li, without their class trees.
+//
+// The renderer (render.h) makes one RenderContext per render, then for every pixel sample
+// asks li() for the colour along the sample's camera ray. Which integrator runs is a value
+// (IntegratorKind), dispatched by one switch per camera ray, not a virtual call per ray.
+//
+// Adding an integrator (the direct-light and path tracers of the Monte Carlo stages): a
+// kind below, a function `glm::vec3 NAME_li(const RenderContext&, const Ray&, Sampler&,
+// ShadingStats&)` in its own .cpp, one case in Integrator::li, and its name in
+// integrator_from_name (the CLI's --integrator).
+#pragma once
+
+#include "raylab/geometry.h"
+#include "raylab/ray.h"
+#include "raylab/sampler.h"
+#include "raylab/scene.h"
+#include "raylab/scene_analysis.h"
+#include "raylab/shading.h"
+
+#include <optional>
+#include <string>
+
+namespace raylab {
+
+// Everything the rays of one render read, and nothing they write: the scene, its geometry
+// (the accelerated intersection queries), what the analysis found, and the settings.
+struct RenderContext {
+  const Scene& scene;
+  const SceneGeometry& geometry;
+  SceneNeeds needs;
+  int max_depth = 5;  // bounces after the camera ray
+  Skips skips;
+
+  RenderContext(const Scene& scene_, const SceneGeometry& geometry_, int max_depth_, const Skips& skips_);
+};
+
+enum class IntegratorKind {
+  Whitted,  // GAMES101 assignment 5: point lights, Phong, mirror and glass; no randomness
+};
+
+// "whitted" -> Whitted; nullopt for an unknown name.
+std::optional<IntegratorKind> integrator_from_name(const std::string& name);
+const char* integrator_name(IntegratorKind kind);
+
+class Integrator {
+ public:
+  explicit Integrator(IntegratorKind kind = IntegratorKind::Whitted) : kind_(kind) {}
+
+  IntegratorKind kind() const { return kind_; }
+
+  // The radiance (linear RGB) arriving along the camera ray `ray`; the background where it
+  // hits nothing. Random numbers come from `sampler` only (started at the pixel sample by
+  // the caller); the work done is added to `stats`.
+  glm::vec3 li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats) const;
+
+ private:
+  IntegratorKind kind_;
+};
+
+// Whitted-style ray tracing as in GAMES101 assignment 5 (whitted.cpp). Uses no random numbers.
+glm::vec3 whitted_li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats);
+
+}  // namespace raylab

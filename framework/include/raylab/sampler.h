@@ -1,0 +1,57 @@
+// The sampler: the random numbers of one pixel sample, as a pure function of (pixel, sample
+// index, dimension) and the render's seed. No state is shared between pixels or threads, so
+// an image is bit-identical at any thread count and on every run.
+//
+// Use (per pixel sample, in this order):
+//   sampler.start_pixel_sample(pixel_x, pixel_y, sample_index);   // dimension 0
+//   glm::vec2 position_in_pixel = sampler.get_pixel_2d();          // the camera ray's point
+//   float u = sampler.get_1d(); glm::vec2 uv = sampler.get_2d();   // then as the integrator needs
+// Each call takes the next dimension; the same call sequence gives the same numbers.
+//
+// Stratified: over the samples_per_pixel samples of a pixel, each dimension's values are
+// correlated multi-jittered (Kensler, "Correlated Multi-Jittered Sampling", 2013): a 2D
+// dimension puts one sample in each cell of an m x n grid (m n >= samples_per_pixel) and
+// its x and y projections are stratified in 1D too; a 1D dimension puts one sample in each
+// of samples_per_pixel equal intervals. Strata are shuffled by a hash of (pixel, dimension)
+// so that dimensions are not correlated with each other. The jitter inside each stratum is
+// drawn from Pcg32. All values are in [0, 1).
+#pragma once
+
+#include "raylab/math.h"
+
+#include <cstdint>
+
+namespace raylab {
+
+class Sampler {
+ public:
+  // samples_per_pixel >= 1: how many samples each pixel takes (the strata count).
+  // seed: changes every number (different seeds give independent renders).
+  explicit Sampler(int samples_per_pixel, std::uint64_t seed = 0);
+
+  // Starts sample `sample_index` (0 .. samples_per_pixel - 1) of pixel (pixel_x, pixel_y), at
+  // dimension 0.
+  void start_pixel_sample(int pixel_x, int pixel_y, int sample_index);
+
+  float get_1d();
+  glm::vec2 get_2d();
+  // The point in the pixel the camera ray passes through, each coordinate in [0, 1). At one
+  // sample per pixel it is the pixel's centre (0.5, 0.5), so that a 1-spp render is exactly
+  // the stage-01 picture; with more samples it is a 2D sample like get_2d.
+  glm::vec2 get_pixel_2d();
+
+  int samples_per_pixel() const { return samples_per_pixel_; }
+  int dimension() const { return dimension_; }
+
+ private:
+  std::uint64_t dimension_key();
+
+  int samples_per_pixel_ = 1;
+  int grid_columns_ = 1, grid_rows_ = 1;  // the 2D strata: columns * rows >= samples_per_pixel
+  std::uint64_t seed_ = 0;
+  std::uint64_t pixel_key_ = 0;
+  std::uint32_t sample_index_ = 0;
+  int dimension_ = 0;
+};
+
+}  // namespace raylab

@@ -1,0 +1,35 @@
+#include "raylab/film.h"
+
+#include <stdexcept>
+
+namespace raylab {
+
+Film::Film(int width, int height, bool track_variance)
+    : width_(width), height_(height), track_variance_(track_variance),
+      counts_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0u),
+      sums_(counts_.size(), glm::dvec3(0.0)),
+      squared_error_(track_variance ? counts_.size() : 0u, glm::dvec3(0.0)) {}
+
+Image Film::mean() const {
+  Image image(width_, height_);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) {
+      const std::size_t i = index(x, y);
+      if (counts_[i] > 0u) image.at(x, y) = glm::vec3(sums_[i] / static_cast<double>(counts_[i]));
+    }
+  return image;
+}
+
+Image Film::variance_of_mean() const {
+  if (!track_variance_) throw std::logic_error("Film::variance_of_mean: this film does not track variance");
+  Image image(width_, height_);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) {
+      const std::size_t i = index(x, y);
+      const double n = static_cast<double>(counts_[i]);
+      if (counts_[i] >= 2u) image.at(x, y) = glm::vec3(squared_error_[i] / ((n - 1.0) * n));
+    }
+  return image;
+}
+
+}  // namespace raylab

@@ -1,0 +1,28 @@
+// Grader self-test submission (stage 01_camera_rays): mistake: always the pixel centre, whatever
+// point of the pixel the caller asks for (position_in_pixel ignored: no anti-aliasing)
+#include "raylab/stages/01_camera_rays.h"
+
+#include <cmath>
+
+namespace raylab {
+
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
+  const float aspect = camera.aspect_ratio();
+  const float half_angle = degrees_to_radians(camera.fov_y_degrees) * 0.5f;
+  (void)position_in_pixel;
+  const glm::vec2 center_offset(0.5f);  // the mistake: the centre, whatever the caller asked
+  const float ndc_x = (static_cast<float>(pixel_x) + center_offset.x) / static_cast<float>(camera.width);
+  const float ndc_y = (static_cast<float>(pixel_y) + center_offset.y) / static_cast<float>(camera.height);
+  const float scale = std::tan(half_angle);
+  const float screen_x = (2.0f * ndc_x - 1.0f) * aspect * scale;
+  const float screen_y = (1.0f - 2.0f * ndc_y) * scale;
+  const glm::vec3 forward = glm::normalize(camera.look_at - camera.position);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+  const glm::vec3 true_up = glm::cross(right, forward);
+  Ray ray;
+  ray.origin = camera.position;
+  ray.direction = glm::normalize(screen_x * right + screen_y * true_up + forward);
+  return ray;
+}
+
+}  // namespace raylab
