@@ -34,7 +34,7 @@ int run_render(const RenderOptions& options) {
   check_image_extension(options.output_path);
   if (!options.variance_path.empty()) check_image_extension(options.variance_path);
   const std::optional<IntegratorKind> integrator = integrator_from_name(options.integrator);
-  if (!integrator) throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted)");
+  if (!integrator) throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct)");
   Scene scene = load_scene(options.scene_path);
   if (options.width > 0) scene.camera.width = options.width;
   if (options.height > 0) scene.camera.height = options.height;
@@ -85,7 +85,7 @@ int run_cli(int argc, char** argv) {
   render_command->add_option("--spp", options.samples_per_pixel,
                              "Samples per pixel (default 1: one ray through each pixel's centre)")
       ->check(CLI::Range(1, kMaxSamplesPerPixel));
-  render_command->add_option("--integrator", options.integrator, "How light is computed: whitted (default)");
+  render_command->add_option("--integrator", options.integrator, "How light is computed: whitted (default) or direct (area and point lights, BSDFs)");
   render_command->add_option("--seed", options.seed, "Seed of the random numbers (default 0)");
   render_command->add_option("--variance", options.variance_path,
                              "Also write each pixel's variance of the mean (.exr keeps it linear)");

@@ -37,6 +37,12 @@ glm::vec3 trace(const RenderContext& context, const Ray& ray, int depth, RayKind
     return weight * trace(context, spawn_ray(*hit, bounce_direction), depth + 1, bounce_kind, stats);
   };
 
+  // An emitting surface adds its own radiance (seen directly or in a mirror); Whitted
+  // shading lights surfaces with the point lights only, not with area lights.
+  const bool emits = material.emission != glm::vec3(0.0f);
+  auto plus_emission = [&](const glm::vec3& reflected) {
+    return emits ? reflected + emitted_radiance(material, *hit, ray.direction) : reflected;
+  };
   switch (material.kind) {
     case MaterialKind::ReflectiveRefractive: {
       const float reflectance = fresnel_reflectance(direction, normal, material.index_of_refraction);
@@ -44,13 +50,16 @@ glm::vec3 trace(const RenderContext& context, const Ray& ray, int depth, RayKind
       if (reflectance < 1.0f)  // no refracted ray under total internal reflection
         color += bounce(1.0f - reflectance, glm::normalize(refract(direction, normal, material.index_of_refraction)),
                         RayKind::Refraction);
-      return color;
+      return plus_emission(color);
     }
     case MaterialKind::Reflective: {
       const float reflectance = fresnel_reflectance(direction, normal, material.index_of_refraction);
-      return bounce(reflectance, reflect(direction, normal), RayKind::Reflection);
+      return plus_emission(bounce(reflectance, reflect(direction, normal), RayKind::Reflection));
     }
+    case MaterialKind::Mirror:
+      return plus_emission(material.reflectance * bounce(1.0f, reflect(direction, normal), RayKind::Reflection));
     case MaterialKind::DiffuseGlossy:
+    case MaterialKind::Diffuse:  // kd 1, ks 0 (scene_schema.cpp)
     default: {
       // Surfaces are two-sided: shade with the normal that faces the viewer.
       const glm::vec3 facing_normal = glm::dot(direction, normal) < 0.0f ? normal : -normal;
@@ -78,7 +87,7 @@ glm::vec3 trace(const RenderContext& context, const Ray& ray, int depth, RayKind
         specular += std::pow(std::max(0.0f, -glm::dot(light_reflected, direction)), material.specular_exponent) *
                     light.intensity;
       }
-      return light_amount * diffuse_color * material.kd + specular * material.ks;
+      return plus_emission(light_amount * diffuse_color * material.kd + specular * material.ks);
     }
   }
 }

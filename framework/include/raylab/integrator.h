@@ -12,6 +12,7 @@
 #pragma once
 
 #include "raylab/geometry.h"
+#include "raylab/lights.h"
 #include "raylab/ray.h"
 #include "raylab/sampler.h"
 #include "raylab/scene.h"
@@ -29,6 +30,7 @@ struct RenderContext {
   const Scene& scene;
   const SceneGeometry& geometry;
   SceneNeeds needs;
+  LightSet lights;    // point lights and emitters (empty: no light sampling)
   int max_depth = 5;  // bounces after the camera ray
   Skips skips;
 
@@ -36,10 +38,12 @@ struct RenderContext {
 };
 
 enum class IntegratorKind {
-  Whitted,  // GAMES101 assignment 5: point lights, Phong, mirror and glass; no randomness
+  Whitted,      // GAMES101 assignment 5: point lights, Phong, mirror and glass; no randomness
+  DirectLight,  // emission + light straight from point and area lights at the first diffuse
+                // surface (through mirrors and glass), with BSDFs (bsdf.h); no indirect light
 };
 
-// "whitted" -> Whitted; nullopt for an unknown name.
+// "whitted" -> Whitted, "direct" -> DirectLight; nullopt for an unknown name.
 std::optional<IntegratorKind> integrator_from_name(const std::string& name);
 const char* integrator_name(IntegratorKind kind);
 
@@ -60,5 +64,10 @@ class Integrator {
 
 // Whitted-style ray tracing as in GAMES101 assignment 5 (whitted.cpp). Uses no random numbers.
 glm::vec3 whitted_li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats);
+
+// Direct lighting (direct_light.cpp): per sample, a specular chain up to max_depth, then at
+// the first diffuse surface one light chosen uniformly and one point on it, with its shadow
+// ray: L = Le + f Li |cos| / (pdf_light * p_choice). Point lights fall off as 1 / d^2 here.
+glm::vec3 direct_light_li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats);
 
 }  // namespace raylab

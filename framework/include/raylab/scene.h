@@ -11,11 +11,14 @@
 
 namespace raylab {
 
-// The three material kinds of GAMES101 assignment 5.
+// The three material kinds of GAMES101 assignment 5, and two for Monte Carlo rendering.
+// How each one reflects: shading (Whitted) and bsdf.h (bsdf_of).
 enum class MaterialKind {
   DiffuseGlossy,          // Lambert diffuse + Phong highlight, lit by the point lights
   Reflective,             // a mirror, weighted by Fresnel reflectance
   ReflectiveRefractive,   // glass: Fresnel-weighted reflection + refraction
+  Diffuse,                // Lambertian of albedo diffuse_color (kd 1, ks 0 under Whitted)
+  Mirror,                 // a perfect mirror of colour `reflectance`
 };
 
 // A texture over the (s, t) coordinates of a mesh: checkers with `scale` periods per unit
@@ -36,6 +39,11 @@ struct Material {
   float ks = 0.2f;                           // specular weight
   float specular_exponent = 25.0f;
   float index_of_refraction = 1.3f;
+  glm::vec3 reflectance{1.0f};  // Mirror
+  // Radiance emitted (W / (m^2 sr) per channel) from the surface's front, the side its
+  // geometric normal points to: every object of an emitting material is an area light
+  // (lights.h).
+  glm::vec3 emission{0.0f};
 };
 
 struct Sphere {
@@ -55,6 +63,8 @@ struct TriangleMesh {
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
 
+// A point light. The scene file gives its intensity I (W/sr) or its power, the flux it
+// sends out in all directions (W): I = flux / (4 pi).
 struct PointLight {
   glm::vec3 position{0.0f};
   glm::vec3 intensity{1.0f};

@@ -34,6 +34,12 @@ inline Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& direction) {
   return ray;
 }
 
+// The radiance an emitting surface sends back along a ray of direction `ray_direction` that
+// hit it: its emission on its front side (where the geometric normal points), 0 elsewhere.
+inline glm::vec3 emitted_radiance(const Material& material, const SurfaceHit& hit, const glm::vec3& ray_direction) {
+  return glm::dot(ray_direction, hit.geometric_normal) < 0.0f ? material.emission : glm::vec3(0.0f);
+}
+
 // The material's diffuse colour at the hit: its checkerboard where the hit has texture
 // coordinates, its diffuse_color otherwise.
 inline glm::vec3 diffuse_color_at(const Material& material, const SurfaceHit& hit) {

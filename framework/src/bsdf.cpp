@@ -1,0 +1,103 @@
+#include "raylab/bsdf.h"
+
+#include "raylab/sampling.h"
+#include "raylab/shading.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+glm::vec3 bsdf_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, const glm::vec3& wi) {
+  if (bsdf.kind != BsdfKind::Lambertian) return glm::vec3(0.0f);
+  const float cos_o = glm::dot(normal, wo), cos_i = glm::dot(normal, wi);
+  if (!(cos_o * cos_i > 0.0f)) return glm::vec3(0.0f);  // wi on the other side: no transmission
+  return bsdf.albedo * (1.0f / kPi);
+}
+
+float bsdf_pdf(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, const glm::vec3& wi) {
+  if (bsdf.kind != BsdfKind::Lambertian) return 0.0f;
+  const float cos_o = glm::dot(normal, wo), cos_i = glm::dot(normal, wi);
+  if (!(cos_o * cos_i > 0.0f)) return 0.0f;
+  return std::fabs(cos_i) / kPi;
+}
+
+std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo,
+                                        float u_lobe, glm::vec2 u) {
+  const float cos_o = glm::dot(normal, wo);
+  if (cos_o == 0.0f || !std::isfinite(cos_o)) return std::nullopt;
+  const glm::vec3 facing_normal = cos_o > 0.0f ? normal : -normal;  // on wo's side
+  BsdfSample sample;
+  switch (bsdf.kind) {
+    case BsdfKind::Lambertian: {
+      const glm::vec3 local = sample_cosine_hemisphere(u);
+      if (!(local.z > 0.0f)) return std::nullopt;  // on the rim: no density
+      sample.wi = glm::normalize(Frame(facing_normal).to_world(local));
+      const float cos_i = glm::dot(facing_normal, sample.wi);
+      if (!(cos_i > 0.0f)) return std::nullopt;
+      sample.f = bsdf.albedo * (1.0f / kPi);
+      sample.pdf = cos_i / kPi;
+      return sample;
+    }
+    case BsdfKind::Mirror: {
+      sample.wi = glm::normalize(reflect(-wo, facing_normal));
+      const float weight = bsdf.fresnel_ior > 0.0f ? fresnel_reflectance(-wo, normal, bsdf.fresnel_ior) : 1.0f;
+      const float cos_i = std::fabs(glm::dot(normal, sample.wi));
+      sample.f = bsdf.reflectance * (weight / cos_i);
+      sample.pdf = 1.0f;
+      sample.is_specular = true;
+      return sample;
+    }
+    case BsdfKind::Dielectric: {
+      const glm::vec3 incident = -wo;
+      const float reflectance = fresnel_reflectance(incident, normal, bsdf.ior);
+      if (u_lobe < reflectance) {
+        sample.wi = glm::normalize(reflect(incident, normal));
+        sample.f = glm::vec3(reflectance / std::fabs(glm::dot(normal, sample.wi)));
+        sample.pdf = reflectance;
+      } else {
+        const glm::vec3 refracted = refract(incident, normal, bsdf.ior);
+        if (refracted == glm::vec3(0.0f)) return std::nullopt;  // cannot happen: F = 1 there
+        sample.wi = glm::normalize(refracted);
+        const bool entering = cos_o > 0.0f;  // wo outside: the light comes from inside
+        const float eta_ratio = entering ? 1.0f / bsdf.ior : bsdf.ior;  // eta_incident / eta_transmitted along the ray
+        const float transmittance = 1.0f - reflectance;
+        sample.f = glm::vec3(transmittance * eta_ratio * eta_ratio / std::fabs(glm::dot(normal, sample.wi)));
+        sample.pdf = transmittance;
+      }
+      sample.is_specular = true;
+      if (!(sample.pdf > 0.0f)) return std::nullopt;
+      return sample;
+    }
+  }
+  return std::nullopt;
+}
+
+Bsdf bsdf_of(const Material& material, const glm::vec3& diffuse_color) {
+  Bsdf bsdf;
+  switch (material.kind) {
+    case MaterialKind::Diffuse:
+      bsdf.kind = BsdfKind::Lambertian;
+      bsdf.albedo = diffuse_color;
+      break;
+    case MaterialKind::DiffuseGlossy:
+      bsdf.kind = BsdfKind::Lambertian;
+      bsdf.albedo = glm::min(glm::vec3(1.0f), material.kd * diffuse_color);
+      break;
+    case MaterialKind::Reflective:
+      bsdf.kind = BsdfKind::Mirror;
+      bsdf.fresnel_ior = material.index_of_refraction;
+      break;
+    case MaterialKind::Mirror:
+      bsdf.kind = BsdfKind::Mirror;
+      bsdf.reflectance = material.reflectance;
+      break;
+    case MaterialKind::ReflectiveRefractive:
+      bsdf.kind = BsdfKind::Dielectric;
+      bsdf.ior = material.index_of_refraction;
+      break;
+  }
+  return bsdf;
+}
+
+}  // namespace raylab

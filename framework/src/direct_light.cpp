@@ -1,0 +1,68 @@
+// The direct-light integrator: emission seen directly or through mirrors and glass, plus, at
+// the first diffuse surface, the light arriving straight from the lights (one light chosen
+// per sample, one point sampled on it, one shadow ray). No indirect diffuse light: the
+// reference against which the path tracer's first bounce can be checked.
+#include "raylab/integrator.h"
+
+#include "raylab/bsdf.h"
+
+#include <cmath>
+
+namespace raylab {
+
+glm::vec3 direct_light_li(const RenderContext& context, const Ray& camera_ray, Sampler& sampler, ShadingStats& stats) {
+  const Scene& scene = context.scene;
+  const LightSet& lights = context.lights;
+  glm::vec3 radiance(0.0f), throughput(1.0f);
+  Ray ray = camera_ray;
+  ++stats.camera_rays;
+  for (int depth = 0;; ++depth) {
+    if (context.skips.rays_outside_bounds && !may_hit_scene(context.needs, ray)) {
+      ++stats.rays_outside_bounds;
+      return radiance + throughput * scene.background;
+    }
+    const std::optional<SurfaceHit> hit = context.geometry.intersect(ray);
+    if (!hit) return radiance + throughput * scene.background;
+    const Material& material = scene.materials[hit->material];
+    const glm::vec3 wo = -glm::normalize(ray.direction);
+    // Seen directly or after specular bounces only: a diffuse surface's light comes from the
+    // light sampling below, so emission is counted once.
+    radiance += throughput * emitted_radiance(material, *hit, ray.direction);
+    const Bsdf bsdf = bsdf_of(material, diffuse_color_at(material, *hit));
+    const glm::vec3& normal = hit->geometric_normal;
+
+    if (bsdf.is_specular()) {
+      if (depth >= context.max_depth) return radiance;
+      const float u_lobe = sampler.get_1d();
+      const glm::vec2 u = sampler.get_2d();
+      const std::optional<BsdfSample> sample = bsdf_sample_f(bsdf, normal, wo, u_lobe, u);
+      if (!sample) return radiance;
+      throughput *= sample->f * (std::fabs(glm::dot(normal, sample->wi)) / sample->pdf);
+      if (context.skips.zero_weight_bounces && throughput == glm::vec3(0.0f)) return radiance;
+      ray = spawn_ray(*hit, sample->wi);
+      if (glm::dot(sample->wi, normal) * glm::dot(wo, normal) < 0.0f) ++stats.refraction_rays;
+      else ++stats.reflection_rays;
+      continue;
+    }
+
+    // A diffuse surface: sample one light, then one point or direction on it.
+    if (lights.empty() || bsdf.albedo == glm::vec3(0.0f)) return radiance;
+    float choice_probability = 0.0f;
+    const Light& light = lights[lights.choose(sampler.get_1d(), &choice_probability)];
+    const std::optional<LightSample> light_sample = sample_li(light, hit->point, sampler.get_2d());
+    if (!light_sample) return radiance;
+    const glm::vec3 f = bsdf_f(bsdf, normal, wo, light_sample->direction);
+    if (f == glm::vec3(0.0f)) return radiance;  // the light is behind the surface
+    Ray shadow;
+    shadow.origin = offset_ray_origin(*hit, light_sample->direction);
+    shadow.direction = light_sample->point - shadow.origin;
+    shadow.t_max = 1.0f - 1e-4f;  // stop just short of the light's point
+    ++stats.shadow_rays;
+    if (context.geometry.occluded(shadow)) return radiance;
+    const float cos_surface = std::fabs(glm::dot(normal, light_sample->direction));
+    return radiance + throughput * f * light_sample->radiance *
+                          (cos_surface / (light_sample->pdf * choice_probability));
+  }
+}
+
+}  // namespace raylab
