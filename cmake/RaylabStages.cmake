@@ -1,16 +1,209 @@
+# The stage table: stages.json is the one list of stages (docs/instructors.md). This file
+# reads it when CMake configures, checks it, and gives the rest of the build:
+#   RAYLAB_STAGE_IDS          the ids, in teaching order
+#   RAYLAB_STAGE_FILES        the stage files, relative to assignments/ or solutions/
+#   RAYLAB_SUITE_FILES        the autograder's suite files, relative to autograder/suites/
+#   RAYLAB_STAGE_TABLE_SOURCE a generated C++ file holding the table for raylab/stage_table.h
+#
 # The stage contract in the build: every stage's functions are declared once in
-# framework/include/raylab/stages/ and defined twice, in assignments/ and solutions/,
-# with the same file names. A stage library holds one of the two definitions.
+# framework/include/raylab/stages/ and defined twice, in assignments/ and solutions/, with
+# the same file names. A stage library holds one of the two definitions.
 
-# The stage files, relative to assignments/ or solutions/. A new stage adds its file here.
-set(RAYLAB_STAGE_FILES
-  01_camera_rays/camera_rays.cpp
-  02_sphere/sphere.cpp
-  03_triangle/triangle.cpp
-  03b_watertight/watertight.cpp
-  04_box/box.cpp
-  05_bvh/bvh.cpp
-)
+set(RAYLAB_STAGE_TABLE ${CMAKE_SOURCE_DIR}/stages.json)
+set_property(DIRECTORY ${CMAKE_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${RAYLAB_STAGE_TABLE})
+file(READ ${RAYLAB_STAGE_TABLE} raylab_table_text)
+
+# raylab_table_get(OUT WHERE PATH...): the value at PATH, or a fatal error naming WHERE.
+macro(raylab_table_get out where)
+  string(JSON ${out} ERROR_VARIABLE raylab_table_error GET "${raylab_table_text}" ${ARGN})
+  if(raylab_table_error)
+    message(FATAL_ERROR "stages.json: ${where}: ${raylab_table_error}")
+  endif()
+endmacro()
+macro(raylab_table_type out where)
+  string(JSON ${out} ERROR_VARIABLE raylab_table_error TYPE "${raylab_table_text}" ${ARGN})
+  if(raylab_table_error)
+    message(FATAL_ERROR "stages.json: ${where}: ${raylab_table_error}")
+  endif()
+endmacro()
+
+# raylab_table_string_list(OUT WHERE PATH...): a JSON array of strings as a CMake list.
+function(raylab_table_string_list out where)
+  raylab_table_type(type "${where}" ${ARGN})
+  if(NOT type STREQUAL "ARRAY")
+    message(FATAL_ERROR "stages.json: ${where} must be an array of strings, not ${type}")
+  endif()
+  string(JSON count LENGTH "${raylab_table_text}" ${ARGN})
+  set(values "")
+  if(count GREATER 0)
+    math(EXPR last "${count} - 1")
+    foreach(i RANGE ${last})
+      raylab_table_type(type "${where}" ${ARGN} ${i})
+      if(NOT type STREQUAL "STRING")
+        message(FATAL_ERROR "stages.json: ${where}[${i}] must be a string, not ${type}")
+      endif()
+      raylab_table_get(value "${where}" ${ARGN} ${i})
+      list(APPEND values "${value}")
+    endforeach()
+  endif()
+  set(${out} "${values}" PARENT_SCOPE)
+endfunction()
+
+# A C++ string literal for a value of the table (raw, so that no character needs escaping).
+function(raylab_cxx_literal out value)
+  if(value MATCHES "\\)stage\"")
+    message(FATAL_ERROR "stages.json: the text '${value}' cannot be a C++ raw string")
+  endif()
+  set(${out} "R\"stage(${value})stage\"" PARENT_SCOPE)
+endfunction()
+function(raylab_cxx_literal_list out)
+  set(items "")
+  foreach(value IN LISTS ARGN)
+    raylab_cxx_literal(literal "${value}")
+    list(APPEND items "${literal}")
+  endforeach()
+  list(JOIN items ", " joined)
+  set(${out} "{${joined}}" PARENT_SCOPE)
+endfunction()
+
+raylab_table_type(type "the top level" stages)
+if(NOT type STREQUAL "ARRAY")
+  message(FATAL_ERROR "stages.json: \"stages\" must be an array")
+endif()
+string(JSON raylab_stage_count LENGTH "${raylab_table_text}" stages)
+if(raylab_stage_count EQUAL 0)
+  message(FATAL_ERROR "stages.json: \"stages\" is empty")
+endif()
+math(EXPR raylab_last_stage "${raylab_stage_count} - 1")
+
+set(RAYLAB_STAGE_IDS "")
+set(RAYLAB_STAGE_FILES "")
+set(RAYLAB_SUITE_FILES "")
+set(raylab_short_ids "")
+set(raylab_table_entries "")
+foreach(index RANGE ${raylab_last_stage})
+  set(where "stages[${index}]")
+  raylab_table_get(id "${where}" stages ${index} id)
+  set(where "stage ${id}")
+  if(NOT id MATCHES "^[0-9][0-9][a-z]?_[a-z0-9_]+$")
+    message(FATAL_ERROR "stages.json: stages[${index}]: the id \"${id}\" is not NN_name or NNx_name "
+                        "(two digits, an optional letter, '_', lower-case words)")
+  endif()
+  if(id IN_LIST RAYLAB_STAGE_IDS)
+    message(FATAL_ERROR "stages.json: the id ${id} appears twice")
+  endif()
+  string(REGEX REPLACE "_.*" "" short_id "${id}")
+  if(short_id IN_LIST raylab_short_ids)
+    message(FATAL_ERROR "stages.json: ${id}: another stage already starts with ${short_id}_ (--stage ${short_id} "
+                        "must name one stage)")
+  endif()
+  list(APPEND raylab_short_ids "${short_id}")
+
+  raylab_table_get(title "${where}" stages ${index} title)
+  raylab_table_get(handout "${where}" stages ${index} handout)
+  raylab_table_get(section "${where}" stages ${index} section)
+  raylab_table_string_list(files "${where}: \"files\"" stages ${index} files)
+  raylab_table_string_list(functions "${where}: \"functions\"" stages ${index} functions)
+  raylab_table_string_list(suite "${where}: \"suite\"" stages ${index} suite)
+  raylab_table_string_list(needs "${where}: \"needs\"" stages ${index} needs)
+  raylab_table_get(points "${where}" stages ${index} points)
+  raylab_table_get(bonus "${where}" stages ${index} bonus)
+  raylab_table_type(image_type "${where}" stages ${index} image)
+  set(image_scene "")
+  set(image_shows "")
+  if(image_type STREQUAL "OBJECT")
+    raylab_table_get(image_scene "${where}: image" stages ${index} image scene)
+    raylab_table_get(image_shows "${where}: image" stages ${index} image shows)
+    if(NOT EXISTS ${CMAKE_SOURCE_DIR}/${image_scene})
+      message(FATAL_ERROR "stages.json: ${where}: the image test's scene ${image_scene} does not exist")
+    endif()
+    if(NOT image_shows MATCHES "^(ray_directions|spheres|everything)$")
+      message(FATAL_ERROR "stages.json: ${where}: image \"shows\" is \"${image_shows}\"; expected ray_directions, "
+                          "spheres or everything (autograder/suites/support.cpp renders these)")
+    endif()
+  elseif(NOT image_type STREQUAL "NULL")
+    message(FATAL_ERROR "stages.json: ${where}: \"image\" must be null or {\"scene\": ..., \"shows\": ...}")
+  endif()
+
+  if(title STREQUAL "")
+    message(FATAL_ERROR "stages.json: ${where} has an empty title")
+  endif()
+  if(NOT points MATCHES "^[0-9]+$" OR points EQUAL 0)
+    message(FATAL_ERROR "stages.json: ${where}: \"points\" must be a positive whole number, not ${points}")
+  endif()
+  if(NOT bonus MATCHES "^(ON|OFF)$")  # string(JSON) gives a boolean as ON or OFF
+    message(FATAL_ERROR "stages.json: ${where}: \"bonus\" must be true or false")
+  endif()
+  if(NOT EXISTS ${CMAKE_SOURCE_DIR}/${handout})
+    message(FATAL_ERROR "stages.json: ${where}: the handout ${handout} does not exist")
+  endif()
+  if(NOT files OR NOT functions)
+    message(FATAL_ERROR "stages.json: ${where} needs at least one file and one function")
+  endif()
+  foreach(file IN LISTS files)
+    foreach(root assignments solutions)
+      if(EXISTS ${CMAKE_SOURCE_DIR}/${root} AND NOT EXISTS ${CMAKE_SOURCE_DIR}/${root}/${file})
+        message(FATAL_ERROR "stages.json: ${where}: ${root}/${file} does not exist")
+      endif()
+    endforeach()
+    if(NOT file IN_LIST RAYLAB_STAGE_FILES)
+      list(APPEND RAYLAB_STAGE_FILES ${file})
+    endif()
+  endforeach()
+  if(NOT suite)
+    message(FATAL_ERROR "stages.json: ${where}: \"suite\" lists no file (its tests live in autograder/suites/)")
+  endif()
+  foreach(file IN LISTS suite)
+    if(NOT EXISTS ${CMAKE_SOURCE_DIR}/autograder/suites/${file})
+      message(FATAL_ERROR "stages.json: ${where}: autograder/suites/${file} does not exist")
+    endif()
+    if(NOT file IN_LIST RAYLAB_SUITE_FILES)
+      list(APPEND RAYLAB_SUITE_FILES ${file})
+    endif()
+  endforeach()
+  foreach(needed IN LISTS needs)
+    if(NOT needed IN_LIST RAYLAB_STAGE_IDS)
+      message(FATAL_ERROR "stages.json: ${where} needs ${needed}, which is not an earlier stage")
+    endif()
+  endforeach()
+  list(APPEND RAYLAB_STAGE_IDS ${id})
+
+  # One C++ initializer per stage, in the order of StageDescription's fields.
+  raylab_cxx_literal(id_literal "${id}")
+  raylab_cxx_literal(title_literal "${title}")
+  raylab_cxx_literal_list(files_literal ${files})
+  raylab_cxx_literal_list(functions_literal ${functions})
+  raylab_cxx_literal(handout_literal "${handout}")
+  raylab_cxx_literal(section_literal "${section}")
+  raylab_cxx_literal(scene_literal "${image_scene}")
+  raylab_cxx_literal(shows_literal "${image_shows}")
+  raylab_cxx_literal_list(needs_literal ${needs})
+  if(bonus)
+    set(bonus_literal true)
+  else()
+    set(bonus_literal false)
+  endif()
+  string(APPEND raylab_table_entries
+         "      {${id_literal}, ${title_literal}, ${files_literal}, ${functions_literal}, ${handout_literal},\n"
+         "       ${section_literal}, ${scene_literal}, ${shows_literal}, ${needs_literal}, ${points}, ${bonus_literal}},\n")
+endforeach()
+
+set(RAYLAB_STAGE_TABLE_SOURCE ${CMAKE_BINARY_DIR}/generated/stage_table_data.cpp)
+file(CONFIGURE OUTPUT ${RAYLAB_STAGE_TABLE_SOURCE} @ONLY CONTENT
+"// Generated by cmake/RaylabStages.cmake from stages.json: edit stages.json, not this file.
+#include \"raylab/stage_table.h\"
+
+namespace raylab {
+
+const std::vector<StageDescription>& stage_table() {
+  static const std::vector<StageDescription> table = {
+@raylab_table_entries@  };
+  return table;
+}
+
+}  // namespace raylab
+")
+message(STATUS "raylab: ${raylab_stage_count} stages from stages.json (${RAYLAB_STAGE_IDS})")
 
 function(raylab_add_stage_library name root)
   set(sources "")

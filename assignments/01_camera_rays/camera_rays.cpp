@@ -33,7 +33,7 @@
 //   fov not halved or still in degrees; pixel centre missing (+0.5); direction not normalised.
 //
 // HOW TO CHECK
-//   build/bin/autograder --stage 1, then build/bin/raylab render scenes/whitted.json -o out.png
+//   build/bin/autograder --stage 01_camera_rays, then build/bin/raylab render scenes/whitted.json -o out.png
 #include "raylab/error.h"
 #include "raylab/stages/01_camera_rays.h"
 
@@ -45,8 +45,7 @@ Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec
   (void)pixel_y;
   (void)position_in_pixel;
   // Start with step 1 above. Delete the line below when you are done.
-  throw NotImplemented("01_camera_rays", "generate_camera_ray",
-                       "assignments/01_camera_rays/camera_rays.cpp");
+  throw NotImplemented("generate_camera_ray");
 }
 
 }  // namespace raylab

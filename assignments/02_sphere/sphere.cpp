@@ -23,7 +23,7 @@
 //   inside; ignoring t_max; assuming a unit direction (a = 1).
 //
 // HOW TO CHECK
-//   build/bin/autograder --stage 2
+//   build/bin/autograder --stage 02_sphere
 #include "raylab/error.h"
 #include "raylab/stages/02_sphere.h"
 
@@ -35,7 +35,7 @@ std::optional<float> intersect_ray_sphere(const Ray& ray, const glm::vec3& spher
   (void)sphere_center;
   (void)sphere_radius;
   // Start with a, b and c above. Delete the line below when you are done.
-  throw NotImplemented("02_sphere", "intersect_ray_sphere", "assignments/02_sphere/sphere.cpp");
+  throw NotImplemented("intersect_ray_sphere");
 }
 
 }  // namespace raylab

@@ -25,7 +25,7 @@
 //   zero determinant; culling back faces (this course hits both faces).
 //
 // HOW TO CHECK
-//   build/bin/autograder --stage 3
+//   build/bin/autograder --stage 03_triangle
 #include "raylab/error.h"
 #include "raylab/stages/03_triangle.h"
 
@@ -38,8 +38,7 @@ std::optional<TriangleHit> intersect_ray_triangle(const Ray& ray, const glm::vec
   (void)p1;
   (void)p2;
   // Start with edge_01, edge_02 and s1 above. Delete the line below when you are done.
-  throw NotImplemented("03_triangle", "intersect_ray_triangle",
-                       "assignments/03_triangle/triangle.cpp");
+  throw NotImplemented("intersect_ray_triangle");
 }
 
 }  // namespace raylab

@@ -51,7 +51,7 @@
 //   whole direction is zero: then return std::nullopt).
 //
 // HOW TO CHECK
-//   build/bin/autograder --stage 7     (the bonus stage 06_robustness shoots a million rays
+//   build/bin/autograder --stage 06_robustness     (the bonus stage 06_robustness shoots a million rays
 //   through the edges and corners of closed meshes and counts the ones that get through)
 #include "raylab/error.h"
 #include "raylab/stages/03b_watertight.h"
@@ -65,8 +65,7 @@ std::optional<TriangleHit> intersect_ray_triangle_watertight(const Ray& ray, con
   (void)p1;
   (void)p2;
   // Start with kz and the shear in steps 1-2 above. Delete the line below when you are done.
-  throw NotImplemented("03b_watertight", "intersect_ray_triangle_watertight",
-                       "assignments/03b_watertight/watertight.cpp");
+  throw NotImplemented("intersect_ray_triangle_watertight");
 }
 
 }  // namespace raylab

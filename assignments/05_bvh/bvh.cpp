@@ -104,7 +104,7 @@
 //   below depth 30). Check: bvh_sah_cost (05_bvh.h) of your tree is lower than build_bvh's.
 //
 // HOW TO CHECK
-//   build/bin/autograder --stage 5; then build/bin/raylab render scenes/bunny.json -o bunny.png
+//   build/bin/autograder --stage 05_bvh; then build/bin/raylab render scenes/bunny.json -o bunny.png
 //   should take seconds, not minutes, and print no "testing every primitive" line.
 #include "raylab/error.h"
 #include "raylab/stages/04_box.h"
@@ -120,7 +120,7 @@ Bvh build_bvh(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size) {
   (void)primitive_bounds;
   (void)max_leaf_size;
   // Start with step 1 of build_bvh above. Delete the line below when you are done.
-  throw NotImplemented("05_bvh", "build_bvh", "assignments/05_bvh/bvh.cpp");
+  throw NotImplemented("build_bvh");
 }
 
 std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray,
@@ -132,14 +132,14 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray,
   (void)any_hit;
   (void)stats;
   // Start with ray_direction_inverse and the stack above. Delete the line below when done.
-  throw NotImplemented("05_bvh", "intersect_bvh", "assignments/05_bvh/bvh.cpp");
+  throw NotImplemented("intersect_bvh");
 }
 
 Bvh build_bvh_sah(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size) {
   (void)primitive_bounds;
   (void)max_leaf_size;
   // Bonus (stage 5b): do build_bvh first. Delete the line below when you are done.
-  throw NotImplemented("05b_bvh_sah", "build_bvh_sah", "assignments/05_bvh/bvh.cpp");
+  throw NotImplemented("build_bvh_sah");
 }
 
 }  // namespace raylab

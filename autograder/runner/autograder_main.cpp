@@ -1,7 +1,9 @@
 // The autograder's entry point, shared by every variant (variant_main.cpp calls it):
 // grades the stage functions it is linked with.
 //
-//   autograder [--stage N]... [--json results.json] [--output DIR] [--timeout S]
+//   autograder [--stage ID]... [--json results.json] [--output DIR] [--timeout S] [--list]
+//
+// A stage is named by its id in stages.json or its short form: 05b_bvh_sah, 05b or 5b.
 //
 // Without --child it is the supervisor (supervisor.cpp): it runs itself once per stage with
 // --child, under a time and memory limit, and never calls stage code. With --child it runs
@@ -10,6 +12,7 @@
 #include "supervisor.h"
 
 #include "raylab/error.h"
+#include "raylab/stage_table.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -89,7 +92,9 @@ int raylab_autograder_main(int argc, char** argv, const char* description) {
   options.output_directory = "grading-output";
   options.description = description;
   bool list = false;
-  app.add_option("--stage", options.stages, "Grade only this stage (number; repeat for several)");
+  std::vector<std::string> stage_names;
+  app.add_option("--stage", stage_names,
+                 "Grade only this stage: its id or short form (05b_bvh_sah, 05b or 5b); repeat for several");
   app.add_option("--json", options.json_path, "Also write a Gradescope-style results.json here");
   app.add_option("--output", options.output_directory, "Folder for the yours | reference | difference images")
       ->capture_default_str();
@@ -107,11 +112,27 @@ int raylab_autograder_main(int argc, char** argv, const char* description) {
     std::cerr << "autograder: " << e.what() << " (see autograder --help)\n";
     return 1;
   }
+  const std::vector<std::string> problems = registration_problems();
+  if (!problems.empty()) {
+    std::cerr << "autograder: the suites and stages.json disagree (the grader's bug, not yours):\n";
+    for (const std::string& problem : problems) std::cerr << "  " << problem << "\n";
+    return 1;
+  }
+  for (const std::string& name : stage_names) {
+    const StageInfo* stage = find_stage(std::string_view(name));
+    if (!stage) {
+      std::cerr << "autograder: there is no stage \"" << name << "\"; the stages are " << raylab::stage_ids_text()
+                << " (or their short forms, e.g. 05b)\n";
+      return 1;
+    }
+    options.stages.push_back(stage->number);
+  }
   if (list) {
     for (const StageInfo& stage : stages()) {
-      std::cout << stage.number << "  " << stage.id << ": " << stage.title << "\n";
+      std::cout << stage.id << ": " << stage.title << " (" << stage.points << " points; handout: " << stage.handout
+                << ")\n";
       for (const TestInfo& test : tests())
-        if (test.stage == stage.number) std::cout << "     " << test.name << " (" << test.points << " points)\n";
+        if (test.stage == stage.number) std::cout << "    " << test.name << " (" << test.points << " points)\n";
     }
     return 0;
   }

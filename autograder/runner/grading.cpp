@@ -1,5 +1,7 @@
 #include "grading.h"
 
+#include "raylab/stage_table.h"
+
 #include <nlohmann/json.hpp>
 
 #include <fcntl.h>
@@ -11,9 +13,35 @@
 namespace raylab::grading {
 namespace {
 
+// The table's stages, built on first use (suites register during static initialisation, in
+// any order of translation units: the table itself is ready whenever it is asked for).
 std::vector<StageInfo>& stage_registry() {
-  static std::vector<StageInfo> registry;
+  static std::vector<StageInfo> registry = [] {
+    std::vector<StageInfo> rows;
+    for (const StageDescription& description : stage_table()) {
+      StageInfo stage;
+      stage.number = static_cast<int>(rows.size()) + 1;
+      stage.id = description.id;
+      stage.title = description.display_title();
+      stage.handout = description.handout_reference();
+      stage.points = description.points;
+      for (std::string_view needed : description.needs)
+        for (const StageInfo& earlier : rows)
+          if (earlier.id == needed) stage.depends_on.push_back(earlier.number);
+      rows.push_back(stage);
+    }
+    return rows;
+  }();
   return registry;
+}
+std::vector<std::string>& problem_registry() {
+  static std::vector<std::string> problems;
+  return problems;
+}
+StageInfo* mutable_stage(std::string_view name) {
+  for (StageInfo& stage : stage_registry())
+    if (stage.id == name) return &stage;
+  return nullptr;
 }
 std::vector<TestInfo>& test_registry() {
   static std::vector<TestInfo> registry;
@@ -87,15 +115,25 @@ class Reporter : public ::testing::EmptyTestEventListener {
 
 }  // namespace
 
-bool register_stage(StageInfo stage) {
-  stage_registry().push_back(std::move(stage));
-  std::sort(stage_registry().begin(), stage_registry().end(),
-            [](const StageInfo& a, const StageInfo& b) { return a.number < b.number; });
+bool register_stage(const char* stage_id, std::function<void()> probe) {
+  StageInfo* stage = mutable_stage(stage_id);
+  if (!stage) {
+    problem_registry().push_back(std::string("a suite registers the stage ") + stage_id +
+                                 ", which stages.json does not list (its stages: " + stage_ids_text() + ")");
+  } else if (stage->probe) {
+    problem_registry().push_back(std::string("the stage ") + stage_id + " is registered twice");
+  } else {
+    stage->probe = std::move(probe);
+  }
   return true;
 }
 
-bool register_test(int stage, const char* suite, const char* name, int points) {
-  test_registry().push_back({stage, suite, name, points});
+bool register_test(const char* stage_id, const char* suite, const char* name, int points) {
+  const StageInfo* stage = mutable_stage(stage_id);
+  if (!stage)
+    problem_registry().push_back(std::string("the test ") + suite + "." + name + " is for the stage " + stage_id +
+                                 ", which stages.json does not list (its stages: " + stage_ids_text() + ")");
+  test_registry().push_back({stage ? stage->number : 0, suite, name, points});
   return true;
 }
 
@@ -107,8 +145,29 @@ const StageInfo* find_stage(int number) {
   return nullptr;
 }
 
-std::string handout_of(const StageInfo& stage) {
-  return stage.handout.empty() ? "docs/" + stage.id + ".md" : stage.handout;
+const StageInfo* find_stage(std::string_view name) {
+  const StageDescription* description = find_stage_description(name);
+  return description ? mutable_stage(description->id) : nullptr;
+}
+
+std::string handout_of(const StageInfo& stage) { return stage.handout; }
+
+std::vector<std::string> registration_problems() {
+  std::vector<std::string> problems = problem_registry();
+  for (const StageInfo& stage : stages()) {
+    int points = 0, count = 0;
+    for (const TestInfo& test : tests())
+      if (test.stage == stage.number) points += test.points, ++count;
+    if (!stage.probe)
+      problems.push_back("no suite registers the stage " + stage.id + " (register_stage(\"" + stage.id +
+                         "\", probe) in one of the files its \"suite\" lists in stages.json)");
+    if (count == 0)
+      problems.push_back("the stage " + stage.id + " has no GRADED_TEST");
+    else if (points != stage.points)
+      problems.push_back("stages.json gives the stage " + stage.id + " " + std::to_string(stage.points) +
+                         " points, but its " + std::to_string(count) + " tests add up to " + std::to_string(points));
+  }
+  return problems;
 }
 
 const std::vector<TestInfo>& tests() { return test_registry(); }
@@ -140,8 +199,8 @@ void set_incomplete_dependencies(const std::vector<int>& stage_numbers) {
 
 bool dependency_incomplete(int stage_number) { return incomplete_dependencies().count(stage_number) > 0; }
 
-void hint_about_dependencies(int stage_number) {
-  const StageInfo* stage = find_stage(stage_number);
+void hint_about_dependencies(const std::string& stage_id) {
+  const StageInfo* stage = find_stage(std::string_view(stage_id));
   if (!stage) return;
   for (int earlier : stage->depends_on)
     if (dependency_incomplete(earlier)) {

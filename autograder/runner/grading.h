@@ -1,34 +1,49 @@
 // The autograder's vocabulary, used by the per-stage suites in autograder/suites/.
 //
-// A stage registers itself (id, title, the stages it builds on, and a probe that calls one of
-// its functions so that a stub's NotImplemented is seen at once). A graded test is a
-// GoogleTest TEST with points; inside it, add_hint() names a common mistake that the test
-// recognised, so the student reads "picture upside down: ..." next to the failure.
+// The stages are the rows of stages.json (raylab/stage_table.h): their id, title, handout,
+// the stages they need and their points come from there. A suite registers its stage's probe
+// by id (a call of one of its functions, so that a stub's NotImplemented is seen at once). A
+// graded test is a GoogleTest TEST with points, which must add up to the table's points for
+// the stage; inside it, add_hint() names a common mistake that the test recognised, so the
+// student reads "picture upside down: ..." next to the failure.
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace raylab::grading {
 
+// One row of the stage table, as the grader uses it.
 struct StageInfo {
-  int number = 0;
-  std::string id;                // "01_camera_rays": folder, handout and suite share it
-  std::string title;
-  std::string handout;           // "docs/<id>.md" when empty
-  std::vector<int> depends_on;   // earlier stages its image test renders with
+  int number = 0;                // 1 + its row in stages.json: internal (the child's argument),
+                                 // never shown; users see the id
+  std::string id;                // "05b_bvh_sah"
+  std::string title;             // "bonus: binned SAH build"
+  std::string handout;           // "docs/05_bvh.md, section 5"
+  std::vector<int> depends_on;   // "needs": the stages its image test renders with
+  int points = 0;                // what stages.json says its tests add up to
   std::function<void()> probe;   // calls the stage's function(s) once; a stub throws
 };
 
-bool register_stage(StageInfo stage);
-bool register_test(int stage, const char* suite, const char* name, int points);
+// A suite's registration of its stage's probe; stage_id is a row of stages.json.
+bool register_stage(const char* stage_id, std::function<void()> probe);
+bool register_test(const char* stage_id, const char* suite, const char* name, int points);
 
+// Every stage of the table, in its order.
 const std::vector<StageInfo>& stages();
 const StageInfo* find_stage(int number);
+// By id, short id or short id without leading zeros ("05b_bvh_sah", "05b", "5b").
+const StageInfo* find_stage(std::string_view name);
 std::string handout_of(const StageInfo& stage);
+
+// Where the suites and the table disagree (a registration for a stage the table lacks, a
+// stage without a probe or tests, points that do not add up to the table's): one sentence
+// each. The autograder refuses to grade while there are any.
+std::vector<std::string> registration_problems();
 
 struct TestInfo {
   int stage;
@@ -59,14 +74,14 @@ void install_reporter(const std::string& report_path);
 void set_incomplete_dependencies(const std::vector<int>& stage_numbers);
 bool dependency_incomplete(int stage_number);
 // For an image test: hint naming earlier stages that are incomplete, if any.
-void hint_about_dependencies(int stage_number);
+void hint_about_dependencies(const std::string& stage_id);
 
 }  // namespace raylab::grading
 
 #define RAYLAB_GRADING_CONCAT2(a, b) a##b
 #define RAYLAB_GRADING_CONCAT(a, b) RAYLAB_GRADING_CONCAT2(a, b)
 
-// A graded test: GRADED_TEST(1, Stage01CameraRays, CentreRayPointsAtLookAt, 3) { ... }
+// A graded test: GRADED_TEST("01_camera_rays", Stage01CameraRays, CentreRayPointsAtLookAt, 3) { ... }
 #define GRADED_TEST(stage, suite, name, points)                                          \
   static const bool RAYLAB_GRADING_CONCAT(suite##_##name##_registered_, __LINE__) =       \
       ::raylab::grading::register_test(stage, #suite, #name, points);                     \

@@ -10,8 +10,8 @@
 namespace raylab::grading {
 namespace {
 
-constexpr int kStage = 1;
-const bool kRegistered = register_stage({kStage, "01_camera_rays", "camera rays", "", {}, [] { (void)generate_camera_ray(Camera{}, 0, 0); }});
+constexpr const char* kStage = "01_camera_rays";
+const bool kRegistered = register_stage(kStage, [] { (void)generate_camera_ray(Camera{}, 0, 0); });
 
 constexpr float kDirectionTolerance = 1e-4f;
 
@@ -203,7 +203,7 @@ GRADED_TEST(kStage, Stage01CameraRays, MatchesReferenceRays, 3) {
 
 GRADED_TEST(kStage, Stage01CameraRays, DirectionImageMatchesReference, 2) {
   // Every pixel's colour is its ray direction: (d + 1) / 2. Top is bluish-green, bottom darker.
-  expect_image_matches_reference(kStage, "01_camera_rays", 0.02f, 0.001);
+  expect_image_matches_reference(kStage, 0.02f, 0.001);
 }
 
 }  // namespace

@@ -11,9 +11,8 @@
 namespace raylab::grading {
 namespace {
 
-constexpr int kStage = 2;
-const bool kRegistered = register_stage({kStage, "02_sphere", "ray-sphere intersection", "", {1},
-                                         [] { (void)intersect_ray_sphere(Ray{}, glm::vec3(0, 0, -3), 1.0f); }});
+constexpr const char* kStage = "02_sphere";
+const bool kRegistered = register_stage(kStage, [] { (void)intersect_ray_sphere(Ray{}, glm::vec3(0, 0, -3), 1.0f); });
 
 constexpr float kRelativeTolerance = 1e-4f;
 
@@ -144,7 +143,7 @@ GRADED_TEST(kStage, Stage02Sphere, MatchesReferenceHits, 3) {
 }
 
 GRADED_TEST(kStage, Stage02Sphere, SpheresImageMatchesReference, 1) {
-  expect_image_matches_reference(kStage, "02_sphere", 0.05f, 0.005);
+  expect_image_matches_reference(kStage, 0.05f, 0.005);
 }
 
 }  // namespace

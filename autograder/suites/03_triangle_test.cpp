@@ -10,9 +10,9 @@
 namespace raylab::grading {
 namespace {
 
-constexpr int kStage = 3;
-const bool kRegistered = register_stage({kStage, "03_triangle", "ray-triangle intersection", "", {1, 2},
-     [] { (void)intersect_ray_triangle(Ray{}, glm::vec3(-1, -1, -2), glm::vec3(1, -1, -2), glm::vec3(0, 1, -2)); }});
+constexpr const char* kStage = "03_triangle";
+const bool kRegistered = register_stage(
+    kStage, [] { (void)intersect_ray_triangle(Ray{}, glm::vec3(-1, -1, -2), glm::vec3(1, -1, -2), glm::vec3(0, 1, -2)); });
 
 constexpr float kTolerance = 1e-4f;
 
@@ -137,7 +137,7 @@ GRADED_TEST(kStage, Stage03Triangle, MatchesReferenceHits, 2) {
 
 GRADED_TEST(kStage, Stage03Triangle, WhittedImageMatchesReference, 1) {
   // The floor's checkerboard is read through your barycentrics: swapped ones mirror it.
-  expect_image_matches_reference(kStage, "03_triangle", 0.05f, 0.005);
+  expect_image_matches_reference(kStage, 0.05f, 0.005);
 }
 
 }  // namespace

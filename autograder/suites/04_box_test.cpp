@@ -10,12 +10,11 @@
 namespace raylab::grading {
 namespace {
 
-constexpr int kStage = 4;
-const bool kRegistered = register_stage({kStage, "04_box", "ray-box intersection (slab test)", "", {}, [] {
-                                           Ray ray;
-                                           (void)intersect_ray_box(ray, ray_direction_inverse_of(ray),
-                                                                   Bounds3{glm::vec3(-1), glm::vec3(1)});
-                                         }});
+constexpr const char* kStage = "04_box";
+const bool kRegistered = register_stage(kStage, [] {
+  Ray ray;
+  (void)intersect_ray_box(ray, ray_direction_inverse_of(ray), Bounds3{glm::vec3(-1), glm::vec3(1)});
+});
 
 
 const Bounds3 kUnitBox{glm::vec3(-1.0f), glm::vec3(1.0f)};

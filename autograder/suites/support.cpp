@@ -4,12 +4,14 @@
 
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
+#include "raylab/stage_table.h"
 #include "raylab/stages/01_camera_rays.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace raylab::grading {
@@ -27,14 +29,33 @@ nlohmann::json load_reference_cases(const std::string& stage_id) {
   return nlohmann::json::parse(in);
 }
 
+namespace {
+std::map<std::string, ReferenceData>& reference_data_registry() {
+  static std::map<std::string, ReferenceData> registry;
+  return registry;
+}
+}  // namespace
+
+bool register_reference_data(const char* stage_id, ReferenceData data) {
+  reference_data_registry()[stage_id] = std::move(data);
+  return true;
+}
+
+const ReferenceData* reference_data_of(const std::string& stage_id) {
+  const auto found = reference_data_registry().find(stage_id);
+  return found == reference_data_registry().end() ? nullptr : &found->second;
+}
+
 std::string reference_image_name(const std::string& stage_id) { return stage_id + ".png"; }
 
-Image render_stage_image(int stage_number) {
-  const char* scene_file = stage_number == 5 ? "/scenes/bunny.json" : "/scenes/whitted.json";
-  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + scene_file);
+Image render_stage_image(const std::string& stage_id) {
+  const StageDescription* stage = find_stage_description(stage_id);
+  if (!stage || stage->image_scene.empty())
+    throw std::logic_error("stages.json gives the stage " + stage_id + " no image test");
+  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + std::string(stage->image_scene));
   scene.camera.width = kImageWidth;
   scene.camera.height = kImageHeight;
-  if (stage_number == 1) {
+  if (stage->image_shows == "ray_directions") {
     // Only camera rays: each pixel shows its ray's direction, (d + 1) / 2, as a colour.
     Image image(kImageWidth, kImageHeight);
     for (int y = 0; y < kImageHeight; ++y)
@@ -42,21 +63,20 @@ Image render_stage_image(int stage_number) {
         image.at(x, y) = 0.5f * (generate_camera_ray(scene.camera, x, y).direction + 1.0f);
     return image;
   }
-  if (stage_number == 2) scene.meshes.clear();  // spheres only
+  if (stage->image_shows == "spheres") scene.meshes.clear();
   RenderSettings settings;
   settings.max_depth = scene.max_depth;
   return render(scene, settings);
 }
 
-void expect_image_matches_reference(int stage_number, const std::string& stage_id,
-                                    float channel_threshold, double max_fraction) {
-  hint_about_dependencies(stage_number);
+void expect_image_matches_reference(const std::string& stage_id, float channel_threshold, double max_fraction) {
+  hint_about_dependencies(stage_id);
   const std::string directory = output_directory();
   std::filesystem::create_directories(directory);
   const std::string yours_path = directory + "/" + stage_id + "-yours.png";
   const std::string comparison_path = directory + "/" + stage_id + ".png";
 
-  const Image rendered = render_stage_image(stage_number);
+  const Image rendered = render_stage_image(stage_id);
   write_image(rendered, yours_path);
   const Image yours = read_image(yours_path);
   const Image expected = read_image(reference_path(reference_image_name(stage_id)));

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <string>
 
@@ -35,18 +36,31 @@ glm::vec3 vec3_from_json(const nlohmann::json& value);
 // The checked-in reference cases of a stage: autograder/reference/<stage_id>_cases.json.
 nlohmann::json load_reference_cases(const std::string& stage_id);
 
-// The picture each stage's image test renders, the same for the student and the reference.
-// Stage 1: camera-ray directions as colours; 2: the spheres of the Whitted scene; 3: the
-// whole Whitted scene; 5: the bunny scene (through your BVH). kImageWidth x kImageHeight, small so grading stays fast.
+// How autograder-regenerate makes a stage's reference data: `generate` returns the fields of
+// autograder/reference/<stage_id>_cases.json besides "stage" and "seed", computed with the
+// solutions it is linked with. A stage's <id>_cases.cpp registers it:
+//   const bool kRegistered = register_reference_data("02_sphere", {sphere_cases});
+struct ReferenceData {
+  std::function<nlohmann::json(std::uint32_t seed)> generate;
+  bool seeded = true;  // false: the data does not depend on the seed ("seed": null)
+};
+bool register_reference_data(const char* stage_id, ReferenceData data);
+// The registered generator of a stage, or nullptr.
+const ReferenceData* reference_data_of(const std::string& stage_id);
+
+// The picture a stage's image test renders (stages.json: "image"), the same for the student
+// and the reference, kImageWidth x kImageHeight (small, so grading stays fast). What it shows:
+//   ray_directions  camera-ray directions as colours (only stage 1's function runs)
+//   spheres         the scene's spheres, its meshes left out
+//   everything      the whole scene, through whatever stages the renderer uses
 constexpr int kImageWidth = 320, kImageHeight = 240;
-Image render_stage_image(int stage_number);
+Image render_stage_image(const std::string& stage_id);
 std::string reference_image_name(const std::string& stage_id);  // "<id>.png"
 
 // The image test: renders the stage's picture with the linked stage code, compares it with
 // the reference (both as 8-bit sRGB PNG, so quantisation is the same), writes
 // <output>/<stage_id>.png = yours | reference | difference, and fails when more than
 // max_fraction of the pixels differ by more than channel_threshold.
-void expect_image_matches_reference(int stage_number, const std::string& stage_id,
-                                    float channel_threshold, double max_fraction);
+void expect_image_matches_reference(const std::string& stage_id, float channel_threshold, double max_fraction);
 
 }  // namespace raylab::grading

@@ -107,7 +107,7 @@ int run_cli(int argc, char** argv) {
   try {
     if (*render_command) return run_render(options);
   } catch (const NotImplemented& e) {
-    std::cerr << "raylab: " << e.what() << " (handout: docs/" << e.stage_id() << ".md)\n";
+    std::cerr << "raylab: " << e.what() << "\n";
     return kExitNotImplemented;
   } catch (const UsageError& e) {
     std::cerr << "raylab: " << e.what() << "\n";

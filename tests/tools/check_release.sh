@@ -14,9 +14,15 @@ cmake --build "$release/build" -j "$(nproc)" >/dev/null
 (cd "$release" && build/bin/autograder --json "$work/results.json" --output "$work/images") > "$work/grader.txt"
 cat "$work/grader.txt"
 grep -q '"score": 0,' "$work/results.json" || { echo "FAIL: the stubs scored points"; exit 1; }
-stages=$(grep -cE '^  [0-9]{2}_[a-z_0-9]+ +0/[0-9]+ +not attempted' "$work/grader.txt")
-listed=$(grep -cE '^  [0-9]{2}_[a-z_0-9]+ +[0-9]+/' "$work/grader.txt")
-[ "$stages" -gt 0 ] && [ "$stages" -eq "$listed" ] || { echo "FAIL: $stages of $listed stages reported 'not attempted'"; exit 1; }
+# The stages are stages.json's, as the grader lists them: each must be "not attempted".
+ids=$(cd "$release" && build/bin/autograder --list | sed -n 's/^\([0-9][0-9a-z_]*\): .*/\1/p')
+listed=$(echo "$ids" | wc -w)
+stages=0
+for id in $ids; do
+  if grep -qE "^  $id +0/[0-9]+ +not attempted" "$work/grader.txt"; then stages=$((stages + 1));
+  else echo "FAIL: stage $id is not reported '0/N not attempted'"; fi
+done
+[ "$listed" -gt 0 ] && [ "$stages" -eq "$listed" ] || { echo "FAIL: $stages of $listed stages reported 'not attempted'"; exit 1; }
 status=0
 (cd "$release" && build/bin/raylab render scenes/whitted.json -o "$work/whitted.png") 2> "$work/render.txt" || status=$?
 cat "$work/render.txt"

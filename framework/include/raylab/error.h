@@ -6,15 +6,19 @@
 
 namespace raylab {
 
-// A stage function that the student has not written yet. Stubs throw it; the renderer exits
-// with status 2 and the autograder reports the stage as "not attempted".
+struct StageDescription;
+
+// A stage function that the student has not written yet. Stubs throw it with the function's
+// name; the message names its stage, file and handout from the stage table (stages.json).
+// The renderer exits with status 2 and the autograder reports the stage as "not attempted".
 class NotImplemented : public std::logic_error {
  public:
-  NotImplemented(std::string stage_id, std::string function, std::string file);
+  explicit NotImplemented(const std::string& function);
   const std::string& stage_id() const { return stage_id_; }
   const std::string& function() const { return function_; }
 
  private:
+  NotImplemented(const std::string& function, const StageDescription& stage);
   std::string stage_id_, function_;
 };
 
