@@ -4,8 +4,9 @@
 //   camera.position       where the eye is (world space)
 //   camera.look_at        a point the eye looks at; the view direction is look_at - position
 //   camera.up             roughly "up" in the world; not unit length, not exactly perpendicular
-//   camera.fov_y_degrees  the full vertical field of view, in DEGREES (std::tan wants radians:
-//                         use degrees_to_radians from raylab/math.h)
+//                         to the view direction
+//   camera.fov_y_degrees  the FULL vertical field of view, in DEGREES (raylab/math.h has
+//                         degrees_to_radians)
 //   camera.width, camera.height   the image size in pixels; camera.aspect_ratio() = width / height
 //   pixel_x, pixel_y      the pixel: column 0..width-1 from the left, row 0..height-1 from the TOP
 //   position_in_pixel     where in that pixel the ray must pass, each coordinate in [0, 1) from
@@ -14,23 +15,17 @@
 //
 // WHAT YOU RETURN
 //   A Ray with origin = camera.position and a UNIT-LENGTH direction through raster point
-//   (pixel_x + position_in_pixel.x, pixel_y + position_in_pixel.y); for the centre, (pixel_x +
-//   0.5, pixel_y + 0.5). Leave t_min = 0 and t_max = infinity (the Ray defaults).
+//   (pixel_x + position_in_pixel.x, pixel_y + position_in_pixel.y) on the image plane; for the
+//   centre, (pixel_x + 0.5, pixel_y + 0.5). Leave t_min = 0 and t_max = infinity (the Ray
+//   defaults).
 //
-// THE STEPS (docs/01_camera_rays.md, section 2)
-//   1. Raster to NDC in [0, 1]:     ndc_x = (pixel_x + position_in_pixel.x) / width, ndc_y likewise.
-//   2. NDC to screen space, on the image plane at distance 1 in front of the eye:
-//        scale    = tan(fov_y / 2)                       (half the angle, in radians)
-//        screen_x = (2 ndc_x - 1) * aspect * scale       (aspect applies to x only)
-//        screen_y = (1 - 2 ndc_y) * scale                (flipped: row 0 is the TOP, +y is up)
-//   3. Camera space to world space with an orthonormal basis:
-//        forward = normalize(look_at - position), right = normalize(cross(forward, up)),
-//        true_up = cross(right, forward)
-//        direction = normalize(screen_x * right + screen_y * true_up + forward)
+// CONVENTIONS (docs/conventions.md, "Raster and camera")
+//   Camera space: the eye at the origin looking down -z, +y up, +x right. The image plane is
+//   at distance 1 in front of the eye; the field of view spans its height, and the aspect
+//   ratio its width. Row 0 is the TOP of the picture.
 //
-// COMMON MISTAKES (the autograder's hints name them)
-//   picture upside down (no y flip); aspect applied to y or inverted (height / width);
-//   fov not halved or still in degrees; pixel centre missing (+0.5); direction not normalised.
+// READ docs/01_camera_rays.md, section 2 (raster -> NDC -> screen -> world, with a worked
+//   example); section 4 lists the common mistakes, which the autograder's hints name.
 //
 // HOW TO CHECK
 //   build/bin/autograder --stage 01_camera_rays, then build/bin/raylab render scenes/whitted.json -o out.png
@@ -44,7 +39,7 @@ Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec
   (void)pixel_x;
   (void)pixel_y;
   (void)position_in_pixel;
-  // Start with step 1 above. Delete the line below when you are done.
+  // Delete the line below when you write the function.
   throw NotImplemented("generate_camera_ray");
 }
 

@@ -2,25 +2,17 @@
 //
 // WHAT YOU RECEIVE
 //   ray.origin, ray.direction   the ray's points are origin + t * direction. The direction is
-//                               NOT necessarily unit length: do not assume dot(d, d) == 1.
+//                               NOT necessarily unit length.
 //   ray.t_min, ray.t_max        only hits with t_min < t < t_max count (both ends excluded)
 //   sphere_center, sphere_radius   the sphere, radius > 0
 //
 // WHAT YOU RETURN
 //   The SMALLEST t with t_min < t < t_max at which the ray meets the sphere's surface, or
-//   std::nullopt when there is none. If the origin is inside the sphere, the near root is
-//   behind the ray (t < 0), so the answer is the FAR root.
+//   std::nullopt when there is none. The origin may be inside the sphere.
 //
-// THE MATH (docs/02_sphere.md, section 2)
-//   |origin + t d - center|^2 = R^2 is the quadratic a t^2 + b t + c = 0 with
-//     a = dot(d, d),  b = 2 dot(origin - center, d),  c = dot(origin - center, origin - center) - R^2
-//   discriminant = b^2 - 4ac: negative means the ray misses. Compute the two roots in the
-//   numerically stable form (section 3):  q = -(b + sign(b) sqrt(discriminant)) / 2,
-//   t0 = q / a, t1 = c / q, then order them so that t0 <= t1.
-//
-// COMMON MISTAKES
-//   returning a hit behind the ray (t <= t_min); missing the far root when the origin is
-//   inside; ignoring t_max; assuming a unit direction (a = 1).
+// READ docs/02_sphere.md: section 2 (the quadratic and a worked example), section 3 (how
+//   to compute its roots without losing digits: the bonus stage 06_robustness grades that),
+//   section 4 (common mistakes, which the autograder's hints name).
 //
 // HOW TO CHECK
 //   build/bin/autograder --stage 02_sphere
@@ -34,7 +26,7 @@ std::optional<float> intersect_ray_sphere(const Ray& ray, const glm::vec3& spher
   (void)ray;
   (void)sphere_center;
   (void)sphere_radius;
-  // Start with a, b and c above. Delete the line below when you are done.
+  // Delete the line below when you write the function.
   throw NotImplemented("intersect_ray_sphere");
 }
 
