@@ -22,6 +22,7 @@
 #include "raylab/stages/02_sphere.h"
 #include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/04_box.h"
+#include "raylab/testkit/oracles.h"
 
 #include <benchmark/benchmark.h>
 
@@ -98,8 +99,8 @@ void sphere_rows(int rays, std::vector<Row>& rows) {
     row.ns_per_test = times[n++];
     ErrorStats stats;
     for (const SphereCase& c : adversarial) {
-      double margin = 0;
-      const auto expected = sphere_reference(c.ray, c.center, c.radius, &margin);
+      long double margin = 0;
+      const auto expected = testkit::exact_sphere_hit(c.ray, c.center, c.radius, &margin);
       const auto got = k.kernel(c.ray, c.center, c.radius);
       ++stats.inputs;
       if (got.has_value() != expected.has_value()) stats.wrong_decisions += margin > 1e-3;

@@ -16,16 +16,16 @@ namespace {
 using nlohmann::json;
 
 json camera_cases(std::uint32_t seed, int count) {
-  CaseRandom random(seed);
+  Pcg32 random(seed, testkit::stream_of("01_camera_rays"));
   json cases = json::array();
   while (static_cast<int>(cases.size()) < count) {
     Camera camera;
-    camera.position = random.vec3(-10, 10);
-    camera.look_at = camera.position + random.vec3(-1, 1);
-    camera.up = random.vec3(-1, 1);
+    camera.position = testkit::random_vec3(random, -10, 10);
+    camera.look_at = camera.position + testkit::random_vec3(random, -1, 1);
+    camera.up = testkit::random_vec3(random, -1, 1);
     camera.fov_y_degrees = random.uniform(20, 120);
-    camera.width = random.integer(1, 1920);
-    camera.height = random.integer(1, 1080);
+    camera.width = testkit::random_integer(random, 1, 1920);
+    camera.height = testkit::random_integer(random, 1, 1080);
     try {
       validate_camera(camera);
     } catch (const std::invalid_argument&) {
@@ -34,7 +34,7 @@ json camera_cases(std::uint32_t seed, int count) {
     // Keep cameras whose basis is well conditioned: up far from the view direction.
     const glm::vec3 forward = glm::normalize(camera.look_at - camera.position);
     if (glm::length(glm::cross(forward, glm::normalize(camera.up))) < 0.2f) continue;
-    const int x = random.integer(0, camera.width - 1), y = random.integer(0, camera.height - 1);
+    const int x = testkit::random_integer(random, 0, camera.width - 1), y = testkit::random_integer(random, 0, camera.height - 1);
     cases.push_back({{"id", cases.size()}, {"position", to_json(camera.position)}, {"look_at", to_json(camera.look_at)},
                      {"up", to_json(camera.up)}, {"fov_y_degrees", camera.fov_y_degrees}, {"width", camera.width},
                      {"height", camera.height}, {"pixel_x", x}, {"pixel_y", y},

@@ -15,15 +15,15 @@ namespace {
 using nlohmann::json;
 
 json sphere_cases(std::uint32_t seed, int count) {
-  CaseRandom random(seed);
+  Pcg32 random(seed, testkit::stream_of("02_sphere"));
   json cases = json::array();
   while (static_cast<int>(cases.size()) < count) {
-    const glm::vec3 center = random.vec3(-10, 10);
+    const glm::vec3 center = testkit::random_vec3(random, -10, 10);
     const float radius = random.uniform(0.1f, 5.0f);
     const bool inside = random.uniform(0, 1) < 0.15f;
-    const glm::vec3 origin = inside ? center + random.vec3(-0.5f, 0.5f) * radius : random.vec3(-20, 20);
+    const glm::vec3 origin = inside ? center + testkit::random_vec3(random, -0.5f, 0.5f) * radius : testkit::random_vec3(random, -20, 20);
     // Aim near the sphere so that about half the rays hit.
-    const glm::vec3 target = center + random.vec3(-1.6f, 1.6f) * radius;
+    const glm::vec3 target = center + testkit::random_vec3(random, -1.6f, 1.6f) * radius;
     if (glm::length(target - origin) < 1e-3f) continue;
     const glm::vec3 direction = glm::normalize(target - origin) * random.uniform(0.2f, 5.0f);
     Ray ray;

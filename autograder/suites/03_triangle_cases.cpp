@@ -14,10 +14,10 @@ namespace {
 using nlohmann::json;
 
 json triangle_cases(std::uint32_t seed, int count) {
-  CaseRandom random(seed);
+  Pcg32 random(seed, testkit::stream_of("03_triangle"));
   json cases = json::array();
   while (static_cast<int>(cases.size()) < count) {
-    const glm::vec3 p0 = random.vec3(-5, 5), p1 = random.vec3(-5, 5), p2 = random.vec3(-5, 5);
+    const glm::vec3 p0 = testkit::random_vec3(random, -5, 5), p1 = testkit::random_vec3(random, -5, 5), p2 = testkit::random_vec3(random, -5, 5);
     const glm::vec3 normal = glm::cross(p1 - p0, p2 - p0);
     if (glm::length(normal) < 0.5f) continue;  // keep triangles with a clear area
     // Aim at a point with barycentrics in [-0.3, 1.3]: about half inside.
@@ -26,7 +26,7 @@ json triangle_cases(std::uint32_t seed, int count) {
     const float margin = 1e-3f;
     if (std::fabs(b1) < margin || std::fabs(b2) < margin || std::fabs(b0) < margin) continue;  // on an edge: either answer
     const glm::vec3 target = b0 * p0 + b1 * p1 + b2 * p2;
-    const glm::vec3 origin = target + random.vec3(-8, 8);
+    const glm::vec3 origin = target + testkit::random_vec3(random, -8, 8);
     const glm::vec3 direction = (target - origin) * random.uniform(0.2f, 3.0f);
     if (std::fabs(glm::dot(glm::normalize(direction), glm::normalize(normal))) < 0.05f) continue;  // near-parallel
     Ray ray;

@@ -16,21 +16,23 @@ namespace {
 using nlohmann::json;
 
 json box_cases(std::uint32_t seed, int count) {
-  CaseRandom random(seed);
+  Pcg32 random(seed, testkit::stream_of("04_box"));
   json cases = json::array();
   while (static_cast<int>(cases.size()) < count) {
-    const glm::vec3 corner = random.vec3(-10, 10);
-    glm::vec3 size = random.vec3(0, 5);
-    if (random.uniform(0, 1) < 0.15f) size[random.integer(0, 2)] = 0.0f;  // flat boxes
+    const glm::vec3 corner = testkit::random_vec3(random, -10, 10);
+    glm::vec3 size = testkit::random_vec3(random, 0, 5);
+    if (random.uniform(0, 1) < 0.15f) size[testkit::random_integer(random, 0, 2)] = 0.0f;  // flat boxes
     const Bounds3 box{corner, corner + size};
     const bool inside = random.uniform(0, 1) < 0.15f;
     Ray ray;
-    ray.origin = inside ? box.min + glm::vec3(random.uniform(0, 1), random.uniform(0, 1), random.uniform(0, 1)) * size
-                        : random.vec3(-20, 20);
-    const glm::vec3 target = box.min + random.vec3(-0.5f, 1.5f) * size + random.vec3(-1, 1);
+    ray.origin = inside ? box.min + testkit::random_vec3(random, 0, 1) * size
+                        : testkit::random_vec3(random, -20, 20);
+    const glm::vec3 target_in_box = testkit::random_vec3(random, -0.5f, 1.5f);  // one draw per statement:
+    const glm::vec3 jitter = testkit::random_vec3(random, -1, 1);              // the same order everywhere
+    const glm::vec3 target = box.min + target_in_box * size + jitter;
     if (glm::length(target - ray.origin) < 1e-3f) continue;
     ray.direction = glm::normalize(target - ray.origin) * random.uniform(0.2f, 5.0f);
-    if (random.uniform(0, 1) < 0.2f) ray.direction[random.integer(0, 2)] = random.integer(0, 1) ? 0.0f : -0.0f;
+    if (random.uniform(0, 1) < 0.2f) ray.direction[testkit::random_integer(random, 0, 2)] = testkit::random_integer(random, 0, 1) ? 0.0f : -0.0f;
     if (glm::length(ray.direction) == 0.0f) continue;
     ray.t_min = random.uniform(0, 1) < 0.3f ? random.uniform(0, 3) : 0.0f;
     const bool finite_t_max = random.uniform(0, 1) < 0.3f;

@@ -163,14 +163,14 @@ int count_leaks(const Mesh& mesh, TriangleTest test, int rays, std::uint32_t see
     return test(ray, mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
                 mesh.positions[mesh.indices[3 * t + 2]]).has_value();
   };
-  CaseRandom random(seed);
+  Pcg32 random(seed, testkit::stream_of("leak rays"));
   int leaks = 0;
   for (int r = 0; r < rays; ++r) {
-    const auto t = static_cast<std::uint32_t>(random.integer(0, static_cast<int>(triangles) - 1));
-    const int k = random.integer(0, 2);
+    const auto t = static_cast<std::uint32_t>(testkit::random_integer(random, 0, static_cast<int>(triangles) - 1));
+    const int k = testkit::random_integer(random, 0, 2);
     const std::uint32_t a = mesh.indices[3 * t + k], b = mesh.indices[3 * t + (k + 1) % 3];
     const glm::vec3 target = r % 2 == 0 ? glm::mix(mesh.positions[a], mesh.positions[b], random.uniform(0, 1)) : mesh.positions[a];
-    glm::vec3 offset = random.vec3(-1, 1);
+    glm::vec3 offset = testkit::random_vec3(random, -1, 1);
     if (glm::length(offset) > 1.0f) offset /= glm::length(offset) * 1.01f;
     Ray ray = make_ray(mesh.center + 0.9f * mesh.inner_radius * offset, glm::vec3(0.0f));
     ray.direction = target - ray.origin;

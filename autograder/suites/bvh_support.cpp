@@ -45,11 +45,11 @@ std::vector<TestMesh> make_meshes() {
                          bunny.positions[bunny.indices[i + 2]]});
   meshes.push_back(make_mesh("the bunny", triangles));
 
-  CaseRandom random(505);
+  Pcg32 random(505, testkit::stream_of("bvh triangle soup"));
   triangles.clear();
   for (int i = 0; i < 2000; ++i) {
-    const glm::vec3 center = random.vec3(-10, 10);
-    triangles.push_back({center + random.vec3(-1, 1), center + random.vec3(-1, 1), center + random.vec3(-1, 1)});
+    const glm::vec3 center = testkit::random_vec3(random, -10, 10);
+    triangles.push_back({center + testkit::random_vec3(random, -1, 1), center + testkit::random_vec3(random, -1, 1), center + testkit::random_vec3(random, -1, 1)});
   }
   meshes.push_back(make_mesh("a random triangle soup", triangles));
 
@@ -94,19 +94,19 @@ std::vector<Ray> rays_at(const TestMesh& mesh, int count, std::uint32_t seed, bo
   for (const Bounds3& b : mesh.bounds) box.extend(b);
   const glm::vec3 center = 0.5f * (box.min + box.max);
   const float radius = 0.5f * glm::length(box.max - box.min) * 1.5f + 1.0f;
-  CaseRandom random(seed);
+  Pcg32 random(seed, testkit::stream_of("bvh rays"));
   std::vector<Ray> rays;
   while (static_cast<int>(rays.size()) < count) {
     Ray ray;
-    const glm::vec3 target = box.min + glm::vec3(random.uniform(0, 1), random.uniform(0, 1), random.uniform(0, 1)) * (box.max - box.min);
+    const glm::vec3 target = box.min + testkit::random_vec3(random, 0, 1) * (box.max - box.min);
     if (axis_aligned) {
-      const int axis = random.integer(0, 2);
-      const float sign = random.integer(0, 1) ? 1.0f : -1.0f;
+      const int axis = testkit::random_integer(random, 0, 2);
+      const float sign = testkit::random_integer(random, 0, 1) ? 1.0f : -1.0f;
       ray.direction = glm::vec3(0.0f);
       ray.direction[axis] = sign;
       ray.origin = target - ray.direction * radius;
     } else {
-      const glm::vec3 around = random.vec3(-1, 1);
+      const glm::vec3 around = testkit::random_vec3(random, -1, 1);
       if (glm::length(around) < 1e-3f) continue;
       ray.origin = center + glm::normalize(around) * radius;
       ray.direction = glm::normalize(target - ray.origin);

@@ -2,33 +2,22 @@
 #pragma once
 
 #include "raylab/image.h"
+#include "raylab/random.h"
 #include "raylab/scene.h"
+#include "raylab/testkit/random_values.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <functional>
-#include <random>
 #include <string>
 
 namespace raylab::grading {
 
-// A seeded generator whose numbers are the same with every compiler and standard library
-// (std::uniform_real_distribution is not), so reference cases can be regenerated anywhere.
-class CaseRandom {
- public:
-  explicit CaseRandom(std::uint32_t seed) : engine_(seed) {}
-  float uniform(float low, float high) {
-    return low + (high - low) * static_cast<float>(engine_() >> 8) * (1.0f / 16777216.0f);
-  }
-  int integer(int low, int high) {  // inclusive
-    return low + static_cast<int>(engine_() % static_cast<std::uint32_t>(high - low + 1));
-  }
-  glm::vec3 vec3(float low, float high) { return {uniform(low, high), uniform(low, high), uniform(low, high)}; }
-
- private:
-  std::mt19937 engine_;
-};
+// Random test values come from the kit's one generator, raylab::Pcg32 (raylab/random.h),
+// with a stream per purpose (testkit::stream_of) and the helpers of raylab/testkit/random_values.h.
+// Draw one value per statement (or in a braced list): the order in which a function's
+// arguments are evaluated differs between compilers, and the cases must not.
 
 nlohmann::json to_json(const glm::vec3& v);
 glm::vec3 vec3_from_json(const nlohmann::json& value);
@@ -38,7 +27,8 @@ nlohmann::json load_reference_cases(const std::string& stage_id);
 
 // How autograder-regenerate makes a stage's reference data: `generate` returns the fields of
 // autograder/reference/<stage_id>_cases.json besides "stage" and "seed", computed with the
-// solutions it is linked with. A stage's <id>_cases.cpp registers it:
+// solutions it is linked with. Every stage gets the same seed and draws from its own stream,
+// Pcg32(seed, testkit::stream_of(stage_id)), so adding a stage changes no other stage's cases. A stage's <id>_cases.cpp registers it:
 //   const bool kRegistered = register_reference_data("02_sphere", {sphere_cases});
 struct ReferenceData {
   std::function<nlohmann::json(std::uint32_t seed)> generate;

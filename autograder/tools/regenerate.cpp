@@ -42,14 +42,11 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     std::filesystem::create_directories(output);
-    // Seeded stages take seed, seed + 1, ... in the table's order.
-    std::uint32_t stage_seed = seed;
     for (const StageDescription& stage : stage_table()) {
       const std::string id(stage.id);
       if (const ReferenceData* data = reference_data_of(id)) {
-        json document = {{"stage", id}, {"seed", data->seeded ? json(stage_seed) : json(nullptr)}};
-        document.update(data->generate(stage_seed));
-        if (data->seeded) ++stage_seed;
+        json document = {{"stage", id}, {"seed", data->seeded ? json(seed) : json(nullptr)}};
+        document.update(data->generate(seed));  // each stage draws from its own stream
         write_json(output + "/" + id + "_cases.json", document);
       }
       if (!stage.image_scene.empty()) {

@@ -95,32 +95,6 @@ std::optional<float> sphere_textbook(const Ray& ray, const glm::vec3& center, fl
   return std::nullopt;
 }
 
-std::optional<long double> sphere_reference(const Ray& ray, const glm::vec3& center, float radius,
-                                            double* margin) {
-  using L = long double;
-  const L o[3] = {L(ray.origin.x) - L(center.x), L(ray.origin.y) - L(center.y), L(ray.origin.z) - L(center.z)};
-  const L d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
-  const L a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-  const L half_b = o[0] * d[0] + o[1] * d[1] + o[2] * d[2];
-  const L r2 = L(radius) * L(radius);
-  const L c = (o[0] * o[0] + o[1] * o[1] + o[2] * o[2]) - r2;
-  L perp2 = 0;
-  for (int i = 0; i < 3; ++i) {
-    const L p = o[i] - half_b / a * d[i];
-    perp2 += p * p;
-  }
-  const L reduced = r2 - perp2;  // discriminant / (4a)
-  if (margin) *margin = static_cast<double>(std::fabs(reduced) / r2);
-  if (reduced < 0 || !(a > 0)) return std::nullopt;
-  const L root = std::sqrt(a * reduced);
-  const L q = half_b < 0 ? -(half_b - root) : -(half_b + root);
-  L t0 = q / a, t1 = q != 0 ? c / q : t0;
-  if (t0 > t1) std::swap(t0, t1);
-  if (t0 > ray.t_min && t0 < ray.t_max) return t0;
-  if (t1 > ray.t_min && t1 < ray.t_max) return t1;
-  return std::nullopt;
-}
-
 const std::vector<std::string>& sphere_case_sets() {
   static const std::vector<std::string> sets = {"ordinary", "far_tiny", "huge_near", "grazing", "on_surface"};
   return sets;

@@ -1,6 +1,7 @@
 // The stress suite's tools, shared with bench/kernels_bench.cpp: baseline kernels that the
 // reference stages are compared with (the textbook sphere quadratic, Cramer's rule, a plain
-// slab test, fixed-epsilon ray offsets), high-precision references (long double), closed test
+// slab test, fixed-epsilon ray offsets), high-precision references (long double; the sphere's
+// is the test kit's, raylab/testkit/oracles.h), closed test
 // meshes, adversarial input sets, and error statistics.
 //
 // The baselines are (partly) valid stage solutions, so they live only here and in bench/,
@@ -60,11 +61,7 @@ class Random {
 // interval rules as the stage function.
 std::optional<float> sphere_textbook(const Ray& ray, const glm::vec3& center, float radius);
 
-// The exact answer for the float inputs, in long double: the smallest root in
-// (t_min, t_max), or nullopt. `margin` (out) is |discriminant| relative to its scale: near 0
-// the decision hit/miss is ill-conditioned and a float kernel may go either way.
-std::optional<long double> sphere_reference(const Ray& ray, const glm::vec3& center, float radius,
-                                            double* margin = nullptr);
+// The exact answer for the float inputs is raylab/testkit/oracles.h's exact_sphere_hit.
 
 struct SphereCase {
   Ray ray;

@@ -22,6 +22,7 @@
 #include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
+#include "raylab/testkit/oracles.h"
 
 #include <gtest/gtest.h>
 
@@ -54,8 +55,8 @@ struct SphereResult {
 SphereResult measure_spheres(const std::string& set, int count) {
   SphereResult result;
   for (const SphereCase& c : sphere_cases(set, count, 1)) {
-    double margin = 0.0;
-    const std::optional<long double> expected = sphere_reference(c.ray, c.center, c.radius, &margin);
+    long double margin = 0.0L;
+    const std::optional<long double> expected = testkit::exact_sphere_hit(c.ray, c.center, c.radius, &margin);
     const bool decidable = margin > 1e-3;  // near-tangent rays may go either way in float
     const std::optional<float> got[2] = {sphere_textbook(c.ray, c.center, c.radius),
                                          intersect_ray_sphere(c.ray, c.center, c.radius)};
@@ -408,10 +409,10 @@ TruthHit truth_closest(const Scene& scene, const Ray& ray, int skip_object, bool
   int object = 0;
   for (const Sphere& sphere : scene.spheres) {
     if (object != skip_object) {
-      double margin = 0.0;
+      long double margin = 0.0L;
       Ray r = ray;
       r.t_max = kInfinity;
-      const std::optional<long double> t = sphere_reference(r, sphere.center, sphere.radius, &margin);
+      const std::optional<long double> t = testkit::exact_sphere_hit(r, sphere.center, sphere.radius, &margin);
       if (margin < 1e-6) best.ambiguous = true;
       if (t) {
         const glm::dvec3 p = glm::dvec3(ray.origin) + double(*t) * glm::dvec3(ray.direction);
