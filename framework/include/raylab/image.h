@@ -1,4 +1,6 @@
-// Float linear-RGB images in memory; all file I/O goes through OpenImageIO.
+// Float linear-RGB images in memory; all file I/O goes through OpenImageIO, which the
+// framework loads only on the first call below that needs it (framework/src/image_io/), so
+// that programs that never touch an image file do not pay its start-up.
 //
 // On disk: .exr keeps linear float values; .png and .ppm (binary P6) are 8-bit sRGB
 // (the sRGB transfer curve applied by OpenImageIO, values clamped to [0, 1]).
@@ -6,6 +8,7 @@
 
 #include "raylab/math.h"
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -14,7 +17,13 @@ namespace raylab {
 class Image {
  public:
   Image() = default;
-  Image(int width, int height, glm::vec3 fill = glm::vec3(0.0f));
+  Image(int width, int height, glm::vec3 fill = glm::vec3(0.0f))
+      : width_(width), height_(height),
+        pixels_(static_cast<std::size_t>(width < 0 ? 0 : width) *
+                    static_cast<std::size_t>(height < 0 ? 0 : height),
+                fill) {
+    if (width < 0 || height < 0) throw std::invalid_argument("image: negative size");
+  }
 
   int width() const { return width_; }
   int height() const { return height_; }
