@@ -2,8 +2,8 @@
 # OpenImageIO is loaded only when an image is read or written (framework/src/image_io/):
 #  1. `--help` does not load it (the glibc loader's LD_DEBUG=libs lists every library it maps);
 #  2. a render that writes a .ppm does load it (so check 1 can see it when it is there);
-#  3. a copy of the program without the module beside it renders, then fails with a message
-#     naming the module, exit status 1 (never a crash).
+#  3. pointed at a module that is not there (RAYLAB_IMAGE_IO_MODULE), a render fails with a
+#     message naming the module, exit status 1 (never a crash).
 function(run_with_loader_log result_var)
   execute_process(COMMAND ${CMAKE_COMMAND} -E env LD_DEBUG=libs ${ARGN}
                   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -28,14 +28,11 @@ if(NOT render_log MATCHES "libOpenImageIO" OR NOT EXISTS ${image})
   message(FATAL_ERROR "a render to ${image} did not load OpenImageIO or wrote no image")
 endif()
 
-set(alone ${OUTPUT_DIR}/program_without_image_module)
-file(REMOVE_RECURSE ${alone})
-file(MAKE_DIRECTORY ${alone})
-file(COPY ${PROGRAM} DESTINATION ${alone})
-get_filename_component(program_name ${PROGRAM} NAME)
-execute_process(COMMAND ${alone}/${program_name} render ${SCENE} -o ${alone}/out.png --width 16 --height 12 -q
+set(missing ${OUTPUT_DIR}/no_such_folder/libraylab_image_io.so)
+execute_process(COMMAND ${CMAKE_COMMAND} -E env RAYLAB_IMAGE_IO_MODULE=${missing}
+                        ${PROGRAM} render ${SCENE} -o ${OUTPUT_DIR}/image_io_missing.png --width 16 --height 12 -q
                 RESULT_VARIABLE status ERROR_VARIABLE err)
-if(NOT status EQUAL 1 OR NOT err MATCHES "cannot load the OpenImageIO module .*raylab_image_io")
+if(NOT status EQUAL 1 OR NOT err MATCHES "cannot load the OpenImageIO module .*no_such_folder")
   message(FATAL_ERROR "without its image module: expected exit 1 naming the module, got ${status}: ${err}")
 endif()
 message(STATUS "ok: OpenImageIO loaded only for image I/O; a missing module is named")

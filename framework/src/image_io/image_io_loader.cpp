@@ -1,14 +1,19 @@
 // Loads the image I/O module (image_io_module.h). The framework's only platform-specific
 // code: POSIX dlopen here; a Windows port adds LoadLibrary/GetProcAddress in this file alone.
 //
-// Where the module is: beside the program (or shared library) that holds this code, where the
-// build puts it (CMake's runtime output directory), so a build tree, a copied bin/ folder and
-// the student release all find it without any path setting. If it is not there, the system's
-// own search (LD_LIBRARY_PATH, ...) gets the bare file name.
+// Where the module is, tried in this order:
+//   1. $RAYLAB_IMAGE_IO_MODULE, if set (a program moved away from its build; tests): only there;
+//   2. beside the program (or shared library) that holds this code, where the build puts it
+//      (CMake's runtime output directory): a build tree's bin/ or a copied bin/ folder;
+//   3. where this build wrote it (programs built into other folders, e.g. the self-test
+//      graders in tests/submissions/);
+//   4. the bare file name, for the system's own search (LD_LIBRARY_PATH, ...).
 #include "image_io_module.h"
 
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #if defined(_WIN32)
 #error "image_io_loader.cpp: loading the image I/O module on Windows is not written yet (LoadLibraryW, GetProcAddress)"
@@ -16,8 +21,8 @@
 #include <dlfcn.h>
 #endif
 
-#ifndef RAYLAB_IMAGE_IO_MODULE_FILE
-#error "RAYLAB_IMAGE_IO_MODULE_FILE (the module's file name) must be set by framework/CMakeLists.txt"
+#if !defined(RAYLAB_IMAGE_IO_MODULE_FILE) || !defined(RAYLAB_IMAGE_IO_MODULE_BUILD_PATH)
+#error "RAYLAB_IMAGE_IO_MODULE_FILE and _BUILD_PATH (the module's name and path) must be set by framework/CMakeLists.txt"
 #endif
 
 namespace raylab::image_io {
@@ -34,21 +39,29 @@ std::string own_folder() {
 }
 
 const ModuleFunctions& load() {
-  const std::string file = RAYLAB_IMAGE_IO_MODULE_FILE;
-  const std::string beside_program = own_folder() + file;
-  void* handle = dlopen(beside_program.c_str(), RTLD_NOW | RTLD_LOCAL);
-  std::string reason;
-  if (handle == nullptr) {
-    reason = dlerror();
-    handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  std::vector<std::string> candidates;
+  if (const char* chosen = std::getenv("RAYLAB_IMAGE_IO_MODULE"); chosen != nullptr && *chosen != '\0') {
+    candidates = {chosen};
+  } else {
+    candidates = {own_folder() + RAYLAB_IMAGE_IO_MODULE_FILE, RAYLAB_IMAGE_IO_MODULE_BUILD_PATH,
+                  RAYLAB_IMAGE_IO_MODULE_FILE};
+  }
+  void* handle = nullptr;
+  std::string tried;
+  for (const std::string& candidate : candidates) {
+    handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (handle != nullptr) break;
+    const char* reason = dlerror();
+    tried += "\n  " + (reason != nullptr ? std::string(reason) : candidate + ": not loaded");
   }
   if (handle == nullptr)
-    throw std::runtime_error("image I/O: cannot load the OpenImageIO module " + beside_program +
-                             " (" + reason + "); it is built beside the programs (rebuild)");
+    throw std::runtime_error("image I/O: cannot load the OpenImageIO module " +
+                             std::string(RAYLAB_IMAGE_IO_MODULE_FILE) + " (built beside the programs; "
+                             "rebuild, or set RAYLAB_IMAGE_IO_MODULE to its path):" + tried);
   const auto entry = reinterpret_cast<EntryPoint>(dlsym(handle, RAYLAB_IMAGE_IO_ENTRY_POINT));
   const ModuleFunctions* functions = entry != nullptr ? entry() : nullptr;
   if (functions == nullptr || functions->version != kModuleVersion)
-    throw std::runtime_error("image I/O: " + beside_program +
+    throw std::runtime_error("image I/O: the loaded " + std::string(RAYLAB_IMAGE_IO_MODULE_FILE) +
                              " is not this build's image module (stale file? rebuild)");
   return *functions;  // the module stays loaded for the process's life
 }
