@@ -19,6 +19,7 @@
 #include "raylab/bounds.h"
 #include "raylab/camera.h"
 #include "raylab/mesh_generator.h"
+#include "raylab/render.h"
 #include "raylab/scene_loader.h"
 #include "raylab/stages/01_camera_rays.h"
 #include "raylab/stages/03_triangle.h"
@@ -343,268 +344,377 @@ std::vector<std::size_t> disagreements(const std::vector<float>& a, const std::v
   return bad;
 }
 
-}  // namespace
+// ---- Embree as the program uses it --------------------------------------------------------
 
-int main(int argc, char** argv) {
-  // Our own flags first; the rest go to Google Benchmark.
+// One single-threaded device and one scene per fixture; make_embree returns nullptr when
+// CMake did not find Embree (then every ratio prints as n/a).
+class Embree {
+ public:
+#ifdef RAYLAB_HAVE_EMBREE
+  explicit Embree(const std::vector<std::unique_ptr<Fixture>>& fixtures) : device_(embree_device(1)) {
+    for (const auto& f : fixtures) {
+      scenes_.push_back(std::make_unique<EmbreeScene>());
+      build_embree(*scenes_.back(), device_, f->mesh);
+      fixtures_.push_back(f.get());
+    }
+  }
+  ~Embree() {
+    scenes_.clear();
+    rtcReleaseDevice(device_);
+  }
+  Embree(const Embree&) = delete;
+  Embree& operator=(const Embree&) = delete;
+
+  void trace(const Fixture& f, const std::vector<Ray>& rays, std::size_t begin, std::size_t end, bool any_hit,
+             float* t_out) const {
+    trace_embree(scene_of(f), rays, begin, end, any_hit, t_out);
+  }
+  void time_build(const Fixture& f) const {
+    EmbreeScene scene;
+    build_embree(scene, device_, f.mesh);
+  }
+
+ private:
+  const EmbreeScene& scene_of(const Fixture& f) const {
+    const auto it = std::find(fixtures_.begin(), fixtures_.end(), &f);
+    return *scenes_[static_cast<std::size_t>(it - fixtures_.begin())];
+  }
+  RTCDevice device_;
+  std::vector<std::unique_ptr<EmbreeScene>> scenes_;
+  std::vector<const Fixture*> fixtures_;
+#else
+  void trace(const Fixture&, const std::vector<Ray>&, std::size_t, std::size_t, bool, float*) const {}
+  void time_build(const Fixture&) const {}
+#endif
+};
+
+std::unique_ptr<Embree> make_embree([[maybe_unused]] const std::vector<std::unique_ptr<Fixture>>& fixtures) {
+#ifdef RAYLAB_HAVE_EMBREE
+  return std::make_unique<Embree>(fixtures);
+#else
+  return nullptr;
+#endif
+}
+
+// ---- The program, step by step -----------------------------------------------------------
+
+struct Options {
   std::uint32_t large_triangles = 1000000;
-  int threads = 1;
-  std::vector<char*> benchmark_args{argv[0]};
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--triangles") && i + 1 < argc) large_triangles = static_cast<std::uint32_t>(std::atol(argv[++i]));
-    else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::max(1, std::atoi(argv[++i]));
-    else benchmark_args.push_back(argv[i]);
-  }
-  int benchmark_argc = static_cast<int>(benchmark_args.size());
-  benchmark::Initialize(&benchmark_argc, benchmark_args.data());
+  int threads = 1;               // the second thread count of the traversal series
+  bool render = true;            // time the renderer on the scenes too
+  std::vector<char*> benchmark_args;  // the rest, for Google Benchmark
+};
 
-  std::vector<std::unique_ptr<Fixture>> fixtures;
-  try {
-    const TriangleMesh bunny = load_obj_mesh(std::string(RAYLAB_SOURCE_DIR) + "/scenes/bunny.obj");
-    fixtures.push_back(std::make_unique<Fixture>(Fixture{make_test_mesh("bunny", bunny, true), {}, {}}));
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "raylab-bench-bvh: %s\n", e.what());
-    return 1;
+Options parse_options(int argc, char** argv) {
+  Options options;
+  options.benchmark_args.push_back(argv[0]);
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--triangles") && i + 1 < argc) options.large_triangles = static_cast<std::uint32_t>(std::atol(argv[++i]));
+    else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) options.threads = std::max(1, std::atoi(argv[++i]));
+    else if (!std::strcmp(argv[i], "--no-render")) options.render = false;
+    else options.benchmark_args.push_back(argv[i]);
   }
+  return options;
+}
+
+// The bunny and the generated sphere, with their ray sets and reference trees.
+std::vector<std::unique_ptr<Fixture>> make_fixtures(std::uint32_t large_triangles) {
+  std::vector<std::unique_ptr<Fixture>> fixtures;
+  const TriangleMesh bunny = load_obj_mesh(std::string(RAYLAB_SOURCE_DIR) + "/scenes/bunny.obj");
+  fixtures.push_back(std::make_unique<Fixture>(Fixture{make_test_mesh("bunny", bunny, true), {}, {}}));
   const TriangleMesh sphere = make_displaced_sphere(large_triangles, 1.0f, 1);
   const std::string sphere_name = "sphere" + std::to_string(sphere.triangle_count() / 1000) + "k";
   fixtures.push_back(std::make_unique<Fixture>(Fixture{make_test_mesh(sphere_name, sphere, false), {}, {}}));
+  for (auto& f : fixtures) {
+    f->ray_sets.push_back(primary_rays(f->mesh.bounds));
+    f->ray_sets.push_back(random_rays(f->mesh.bounds, 20260101));
+    f->trees.push_back(build_reference(f->mesh, false));
+    f->trees.push_back(build_reference(f->mesh, true));
+  }
+  return fixtures;
+}
 
-#ifdef RAYLAB_HAVE_EMBREE
-  RTCDevice device_single = embree_device(1);
-  std::vector<std::unique_ptr<EmbreeScene>> embree_scenes;
-#endif
+void print_trees(const Fixture& f) {
+  for (const ReferenceBvh& tree : f.trees)
+    std::printf("  %-12s %-7s %9zu triangles  %9zu nodes  depth %2d  SAH cost %8.2f\n",
+                f.mesh.name.c_str(), tree.name.c_str(), f.mesh.triangle_count(), tree.bvh.nodes.size(),
+                bvh_depth(tree.bvh), bvh_sah_cost(tree.bvh));
+}
 
-  std::vector<TraceRow> rows;
-  std::printf("raylab-bench-bvh: leaf size %d, %d x %d primary rays, %zu random rays, brute force on every %zu-th ray\n",
-              kLeafSize, kPrimaryWidth, kPrimaryHeight, kRandomRayCount, kBruteForceStride);
-  std::printf("\nTrees and correctness (closest hits compared ray by ray):\n");
-  for (auto& fixture_pointer : fixtures) {
-    Fixture& f = *fixture_pointer;
-    f.ray_sets.push_back(primary_rays(f.mesh.bounds));
-    f.ray_sets.push_back(random_rays(f.mesh.bounds, 20260101));
-    f.trees.push_back(build_reference(f.mesh, false));
-    f.trees.push_back(build_reference(f.mesh, true));
-    for (const ReferenceBvh& tree : f.trees) {
-      std::printf("  %-12s %-7s %9zu triangles  %9zu nodes  depth %2d  SAH cost %8.2f\n",
-                  f.mesh.name.c_str(), tree.name.c_str(), f.mesh.triangle_count(), tree.bvh.nodes.size(),
-                  bvh_depth(tree.bvh), bvh_sah_cost(tree.bvh));
+// What the BVH answers are checked against: brute force on the small mesh, else Embree, else
+// the first tree. Adds the brute force and Embree rows (with their work) to `rows`.
+struct Oracle {
+  std::string name;  // "" until there is one
+  std::vector<float> t;
+  std::size_t stride = 1;
+};
+
+Oracle trace_oracle(const Fixture& f, const RaySet& set, bool any_hit, const Embree* embree,
+                    std::vector<TraceRow>& rows) {
+  const std::string query = any_hit ? "any" : "closest";
+  Oracle oracle{"", std::vector<float>(set.rays.size(), kInfinity), 1};
+  if (f.mesh.brute_force) {
+    BvhTraversalStats stats;
+    trace_brute_force(f.mesh, set.rays, any_hit, oracle.t.data(), stats);
+    oracle.name = "brute force";
+    oracle.stride = kBruteForceStride;
+    const std::size_t traced = (set.rays.size() + oracle.stride - 1) / oracle.stride;
+    rows.push_back({f.mesh.name, set.name, query, "brute", 1, traced, 0.0,
+                    static_cast<double>(stats.primitives_tested) / static_cast<double>(traced), true});
+  }
+  if (embree != nullptr) {
+    std::vector<float> embree_t(set.rays.size(), kInfinity);
+    embree->trace(f, set.rays, 0, set.rays.size(), any_hit, embree_t.data());
+    rows.push_back({f.mesh.name, set.name, query, "embree", 1, set.rays.size(), 0.0, 0.0, false});
+    if (!f.mesh.brute_force) oracle = {"Embree", std::move(embree_t), 1};
+  }
+  return oracle;
+}
+
+// Prints how many rays `t` (one tree's answers) disagree with the oracle on, and explains the
+// first three by brute force: a lost hit, or a triangle-test difference (e.g. a shared edge).
+void report_disagreements(const Fixture& f, const ReferenceBvh& tree, const RaySet& set, bool any_hit,
+                          const std::vector<float>& t, Oracle oracle) {
+  // Any hit: only "hit or not" must agree.
+  std::vector<float> compared = t;
+  if (any_hit)
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      compared[i] = t[i] < kInfinity ? 0.0f : kInfinity;
+      oracle.t[i] = oracle.t[i] < kInfinity ? 0.0f : kInfinity;
     }
-#ifdef RAYLAB_HAVE_EMBREE
-    embree_scenes.push_back(std::make_unique<EmbreeScene>());
-    build_embree(*embree_scenes.back(), device_single, f.mesh);
-    const EmbreeScene* embree = embree_scenes.back().get();
-#endif
-    // Correctness and exact counts (single-threaded, untimed).
-    for (const RaySet& set : f.ray_sets) {
-      for (bool any_hit : {false, true}) {
-        const std::string query = any_hit ? "any" : "closest";
-        std::vector<float> oracle(set.rays.size(), kInfinity);
-        std::string oracle_name;
-        std::size_t stride = 1;
-        if (f.mesh.brute_force) {
-          BvhTraversalStats stats;
-          trace_brute_force(f.mesh, set.rays, any_hit, oracle.data(), stats);
-          oracle_name = "brute force";
-          stride = kBruteForceStride;
-          const double traced = static_cast<double>((set.rays.size() + stride - 1) / stride);
-          rows.push_back({f.mesh.name, set.name, query, "brute", 1, set.rays.size() / stride + (set.rays.size() % stride != 0),
-                          0.0, static_cast<double>(stats.primitives_tested) / traced, true});
+  const std::vector<std::size_t> bad = disagreements(compared, oracle.t, oracle.stride);
+  std::printf("  %-12s %-7s %-7s %-7s vs %-12s: %zu of %zu rays disagree\n", f.mesh.name.c_str(),
+              tree.name.c_str(), set.name.c_str(), any_hit ? "any" : "closest", oracle.name.c_str(), bad.size(),
+              set.rays.size() / oracle.stride);
+  for (std::size_t k = 0; k < std::min<std::size_t>(bad.size(), 3); ++k) {
+    const std::size_t i = bad[k];
+    std::vector<float> brute_t(1, kInfinity);
+    BvhTraversalStats ignored;
+    trace_brute_force(f.mesh, {set.rays[i]}, any_hit, brute_t.data(), ignored);
+    const bool brute_agrees = (brute_t[0] < kInfinity) == (t[i] < kInfinity) && (!(t[i] < kInfinity) || brute_t[0] == t[i]);
+    std::printf("      ray %zu: this BVH t = %.9g, %s t = %.9g, brute force (stage 03 test) t = %.9g: %s\n", i,
+                compared[i], oracle.name.c_str(), oracle.t[i], any_hit && brute_t[0] < kInfinity ? 0.0f : brute_t[0],
+                brute_agrees ? "the BVH agrees with brute force (a triangle-test difference)" : "the BVH LOST A HIT <-- CHECK");
+  }
+}
+
+// Untimed, single-threaded: every tree's answers against the oracle, and the exact work per
+// ray of every accelerator (the rows of the summary).
+void check_and_count(const Fixture& f, const Embree* embree, std::vector<TraceRow>& rows) {
+  for (const RaySet& set : f.ray_sets)
+    for (bool any_hit : {false, true}) {
+      Oracle oracle = trace_oracle(f, set, any_hit, embree, rows);
+      for (const ReferenceBvh& tree : f.trees) {
+        std::vector<float> t(set.rays.size(), kInfinity);
+        BvhTraversalStats stats;
+        trace_reference(tree, set.rays, 0, set.rays.size(), any_hit, t.data(), stats);
+        const auto n = static_cast<double>(set.rays.size());
+        rows.push_back({f.mesh.name, set.name, any_hit ? "any" : "closest", tree.name, 1, set.rays.size(),
+                        static_cast<double>(stats.nodes_visited) / n, static_cast<double>(stats.primitives_tested) / n,
+                        true});
+        if (oracle.name.empty()) {  // no Embree, no brute force: the first tree is the oracle
+          oracle = {f.trees.front().name + " BVH", t, 1};
+          if (&tree == &f.trees.front()) continue;
         }
-#ifdef RAYLAB_HAVE_EMBREE
-        std::vector<float> embree_t(set.rays.size(), kInfinity);
-        trace_embree(*embree, set.rays, 0, set.rays.size(), any_hit, embree_t.data());
-        rows.push_back({f.mesh.name, set.name, query, "embree", 1, set.rays.size(), 0.0, 0.0, false});
-        if (!f.mesh.brute_force) {
-          oracle = embree_t;
-          oracle_name = "Embree";
-        }
-#endif
-        for (const ReferenceBvh& tree : f.trees) {
-          std::vector<float> t(set.rays.size(), kInfinity);
-          BvhTraversalStats stats;
-          trace_reference(tree, set.rays, 0, set.rays.size(), any_hit, t.data(), stats);
-          const auto n = static_cast<double>(set.rays.size());
-          rows.push_back({f.mesh.name, set.name, query, tree.name, 1, set.rays.size(),
-                          static_cast<double>(stats.nodes_visited) / n,
-                          static_cast<double>(stats.primitives_tested) / n, true});
-          if (oracle_name.empty()) {  // no Embree, no brute force: the other tree is the oracle
-            if (&tree == &f.trees.front()) {
-              oracle = t;
-              continue;
-            }
-            oracle_name = f.trees.front().name + " BVH";
-          }
-          // Any hit: only "hit or not" must agree.
-          std::vector<float> compared = t;
-          if (any_hit)
-            for (std::size_t i = 0; i < t.size(); ++i) {
-              compared[i] = t[i] < kInfinity ? 0.0f : kInfinity;
-              oracle[i] = oracle[i] < kInfinity ? 0.0f : kInfinity;
-            }
-          const std::vector<std::size_t> bad = disagreements(compared, oracle, stride);
-          std::printf("  %-12s %-7s %-7s %-7s vs %-12s: %zu of %zu rays disagree\n", f.mesh.name.c_str(),
-                      tree.name.c_str(), set.name.c_str(), query.c_str(), oracle_name.c_str(), bad.size(),
-                      set.rays.size() / stride);
-          // Who is right? Brute force (the same triangle test as the BVH) settles whether the
-          // traversal lost a hit or the two triangle tests differ (e.g. on a shared edge).
-          for (std::size_t k = 0; k < std::min<std::size_t>(bad.size(), 3); ++k) {
-            const std::size_t i = bad[k];
-            std::vector<float> brute_t(1, kInfinity);
-            BvhTraversalStats ignored;
-            trace_brute_force(f.mesh, {set.rays[i]}, any_hit, brute_t.data(), ignored);
-            std::printf("      ray %zu: this BVH t = %.9g, %s t = %.9g, brute force (stage 03 test) t = %.9g: %s\n", i,
-                        compared[i], oracle_name.c_str(), oracle[i], any_hit && brute_t[0] < kInfinity ? 0.0f : brute_t[0],
-                        (brute_t[0] < kInfinity) == (t[i] < kInfinity) && (!(t[i] < kInfinity) || brute_t[0] == t[i])
-                            ? "the BVH agrees with brute force (a triangle-test difference)"
-                            : "the BVH LOST A HIT <-- CHECK");
-          }
-        }
+        report_disagreements(f, tree, set, any_hit, t, oracle);
       }
     }
-    for (const ReferenceBvh& tree : f.trees) {
-      const std::string problem = bvh_invariant_violation(tree.bvh, [&] {
-        // The tree's primitives are now in leaf order: their boxes in that order.
-        std::vector<Bounds3> boxes(tree.corners.size() / 3);
-        for (std::size_t i = 0; i < boxes.size(); ++i)
-          for (int k = 0; k < 3; ++k) boxes[i].extend(tree.corners[3 * i + k]);
-        return boxes;
-      }(), kLeafSize);
-      std::printf("  %-12s %-7s invariants: %s\n", f.mesh.name.c_str(), tree.name.c_str(),
-                  problem.empty() ? "all hold" : problem.c_str());
-    }
-  }
-  std::printf("\n");
-  std::fflush(stdout);
+}
 
-  // ---- Register the timed runs ------------------------------------------------------------
-  for (auto& fixture_pointer : fixtures) {
-    Fixture* f = fixture_pointer.get();
-    const int build_iterations = f->mesh.triangle_count() > 100000 ? 3 : 50;
-    auto boxes = std::make_shared<std::vector<Bounds3>>(triangle_boxes(f->mesh));
-    for (bool sah : {false, true}) {
-      benchmark::RegisterBenchmark(("build/" + f->mesh.name + (sah ? "/sah" : "/median")).c_str(),
-                                   [boxes, sah](benchmark::State& state) {
-                                     for (auto _ : state) {
-                                       Bvh bvh = sah ? build_bvh_sah(*boxes, kLeafSize) : build_bvh(*boxes, kLeafSize);
-                                       benchmark::DoNotOptimize(bvh.nodes.data());
-                                     }
-                                   })
-          ->Unit(benchmark::kMillisecond)->Iterations(build_iterations);
-    }
-#ifdef RAYLAB_HAVE_EMBREE
-    benchmark::RegisterBenchmark(("build/" + f->mesh.name + "/embree").c_str(),
-                                 [f, device_single](benchmark::State& state) {
+void check_invariants(const Fixture& f) {
+  for (const ReferenceBvh& tree : f.trees) {
+    // The tree's primitives are now in leaf order: their boxes in that order.
+    std::vector<Bounds3> boxes(tree.corners.size() / 3);
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+      for (int k = 0; k < 3; ++k) boxes[i].extend(tree.corners[3 * i + k]);
+    const std::string problem = bvh_invariant_violation(tree.bvh, boxes, kLeafSize);
+    std::printf("  %-12s %-7s invariants: %s\n", f.mesh.name.c_str(), tree.name.c_str(),
+                problem.empty() ? "all hold" : problem.c_str());
+  }
+}
+
+void register_builds(const Fixture* f, const Embree* embree) {
+  const int iterations = f->mesh.triangle_count() > 100000 ? 3 : 50;
+  auto boxes = std::make_shared<std::vector<Bounds3>>(triangle_boxes(f->mesh));
+  for (bool sah : {false, true})
+    benchmark::RegisterBenchmark(("build/" + f->mesh.name + (sah ? "/sah" : "/median")).c_str(),
+                                 [boxes, sah](benchmark::State& state) {
                                    for (auto _ : state) {
-                                     EmbreeScene scene;
-                                     build_embree(scene, device_single, f->mesh);
+                                     Bvh bvh = sah ? build_bvh_sah(*boxes, kLeafSize) : build_bvh(*boxes, kLeafSize);
+                                     benchmark::DoNotOptimize(bvh.nodes.data());
                                    }
                                  })
-        ->Unit(benchmark::kMillisecond)->Iterations(build_iterations);
-    const std::size_t fixture_index = static_cast<std::size_t>(&fixture_pointer - fixtures.data());
-    EmbreeScene* embree = embree_scenes[fixture_index].get();
-#endif
-    for (const RaySet& set : f->ray_sets) {
-      const RaySet* rays = &set;
-      for (bool any_hit : {false, true}) {
-        const std::string query = any_hit ? "any" : "closest";
-        if (f->mesh.brute_force)
-          benchmark::RegisterBenchmark(trace_name(f->mesh.name, set.name, query, "brute", 1).c_str(),
-                                       [f, rays, any_hit](benchmark::State& state) {
-                                         for (auto _ : state) {
-                                           BvhTraversalStats stats;
-                                           trace_brute_force(f->mesh, rays->rays, any_hit, nullptr, stats);
-                                         }
-                                       })
-              ->Unit(benchmark::kMillisecond);
-        for (int thread_count : {1, threads}) {
-#ifdef RAYLAB_HAVE_EMBREE
-          benchmark::RegisterBenchmark(trace_name(f->mesh.name, set.name, query, "embree", thread_count).c_str(),
-                                       [embree, rays, any_hit, thread_count](benchmark::State& state) {
-                                         for (auto _ : state)
-                                           parallel_for_chunks(rays->rays.size(), thread_count,
-                                                               [&](std::size_t begin, std::size_t end) {
-                                                                 trace_embree(*embree, rays->rays, begin, end, any_hit, nullptr);
-                                                               });
-                                       })
-              ->Unit(benchmark::kMillisecond)->UseRealTime();
-#endif
-          for (const ReferenceBvh& tree : f->trees) {
-            const ReferenceBvh* tree_pointer = &tree;
-            benchmark::RegisterBenchmark(trace_name(f->mesh.name, set.name, query, tree.name, thread_count).c_str(),
-                                         [tree_pointer, rays, any_hit, thread_count](benchmark::State& state) {
-                                           for (auto _ : state)
-                                             parallel_for_chunks(rays->rays.size(), thread_count,
-                                                                 [&](std::size_t begin, std::size_t end) {
-                                                                   BvhTraversalStats stats;
-                                                                   trace_reference(*tree_pointer, rays->rays, begin, end,
-                                                                                   any_hit, nullptr, stats);
-                                                                 });
-                                         })
-                ->Unit(benchmark::kMillisecond)->UseRealTime();
-          }
-          if (threads == 1) break;  // {1, 1}: once
+        ->Unit(benchmark::kMillisecond)->Iterations(iterations);
+  if (embree != nullptr)
+    benchmark::RegisterBenchmark(("build/" + f->mesh.name + "/embree").c_str(),
+                                 [f, embree](benchmark::State& state) {
+                                   for (auto _ : state) embree->time_build(*f);
+                                 })
+        ->Unit(benchmark::kMillisecond)->Iterations(iterations);
+}
+
+// Each timed iteration traces the whole ray set, spread over thread_count threads.
+template <typename TraceChunk>
+void register_trace(const std::string& name, std::size_t ray_count, int thread_count, TraceChunk trace_chunk) {
+  benchmark::RegisterBenchmark(name.c_str(), [ray_count, thread_count, trace_chunk](benchmark::State& state) {
+    for (auto _ : state) parallel_for_chunks(ray_count, thread_count, trace_chunk);
+  })->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+
+void register_traces(const Fixture* f, const Embree* embree, int threads) {
+  for (const RaySet& set : f->ray_sets) {
+    const RaySet* rays = &set;
+    for (bool any_hit : {false, true}) {
+      const std::string query = any_hit ? "any" : "closest";
+      if (f->mesh.brute_force)
+        benchmark::RegisterBenchmark(trace_name(f->mesh.name, set.name, query, "brute", 1).c_str(),
+                                     [f, rays, any_hit](benchmark::State& state) {
+                                       for (auto _ : state) {
+                                         BvhTraversalStats stats;
+                                         trace_brute_force(f->mesh, rays->rays, any_hit, nullptr, stats);
+                                       }
+                                     })
+            ->Unit(benchmark::kMillisecond);
+      for (int thread_count : {1, threads}) {
+        if (embree != nullptr)
+          register_trace(trace_name(f->mesh.name, set.name, query, "embree", thread_count), rays->rays.size(),
+                         thread_count, [f, embree, rays, any_hit](std::size_t begin, std::size_t end) {
+                           embree->trace(*f, rays->rays, begin, end, any_hit, nullptr);
+                         });
+        for (const ReferenceBvh& tree : f->trees) {
+          const ReferenceBvh* tree_pointer = &tree;
+          register_trace(trace_name(f->mesh.name, set.name, query, tree.name, thread_count), rays->rays.size(),
+                         thread_count, [tree_pointer, rays, any_hit](std::size_t begin, std::size_t end) {
+                           BvhTraversalStats stats;
+                           trace_reference(*tree_pointer, rays->rays, begin, end, any_hit, nullptr, stats);
+                         });
         }
+        if (threads == 1) break;  // {1, 1}: once
       }
     }
   }
+}
 
-  CollectingReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  const auto& seconds = reporter.seconds_per_iteration;
-  auto find_seconds = [&](const std::string& name) -> double {
-    const auto it = seconds.find(name);
-    return it == seconds.end() ? 0.0 : it->second;
-  };
+using SecondsByName = std::map<std::string, double>;
 
-  // ---- Summary ------------------------------------------------------------------------------
+double seconds_of(const SecondsByName& seconds, const std::string& name) {
+  const auto it = seconds.find(name);
+  return it == seconds.end() ? 0.0 : it->second;
+}
+
+void print_build_summary(const std::vector<std::unique_ptr<Fixture>>& fixtures, const SecondsByName& seconds) {
   std::printf("\nBuild times (one thread; Embree: device threads=1, default quality):\n");
   std::printf("  %-12s %-8s %10s %12s\n", "mesh", "builder", "ms", "vs Embree");
   for (const auto& f : fixtures)
     for (const char* builder : {"median", "sah", "embree"}) {
-      const double s = find_seconds("build/" + f->mesh.name + "/" + builder);
-      const double e = find_seconds("build/" + f->mesh.name + "/embree");
+      const double s = seconds_of(seconds, "build/" + f->mesh.name + "/" + builder);
+      const double e = seconds_of(seconds, "build/" + f->mesh.name + "/embree");
       if (s <= 0.0) continue;
       char ratio[32] = "n/a";
       if (e > 0.0) std::snprintf(ratio, sizeof ratio, "%.2fx", s / e);
       std::printf("  %-12s %-8s %10.2f %12s\n", f->mesh.name.c_str(), builder, s * 1e3, ratio);
     }
+}
 
+// One line of the traversal summary; false if that run was not timed (filtered out).
+bool print_trace_row(const TraceRow& row, int thread_count, const std::vector<TraceRow>& rows,
+                     const SecondsByName& seconds) {
+  const double s = seconds_of(seconds, trace_name(row.mesh, row.rays, row.query, row.accelerator, thread_count));
+  const double e = seconds_of(seconds, trace_name(row.mesh, row.rays, row.query, "embree", thread_count));
+  if (s <= 0.0) return false;
+  // Per ray: brute force traces a subset of the rays, Embree always the whole set.
+  const double per_ray = s / static_cast<double>(row.ray_count);
+  double embree_per_ray = 0.0;
+  for (const TraceRow& other : rows)
+    if (other.mesh == row.mesh && other.rays == row.rays && other.query == row.query && other.accelerator == "embree")
+      embree_per_ray = e / static_cast<double>(other.ray_count);
+  char ratio[32] = "n/a", nodes[32] = "-", triangles[32] = "-";
+  if (embree_per_ray > 0.0) std::snprintf(ratio, sizeof ratio, "%.2fx", per_ray / embree_per_ray);
+  if (row.has_counts) {
+    if (row.accelerator != "brute") std::snprintf(nodes, sizeof nodes, "%.1f", row.nodes_per_ray);
+    std::snprintf(triangles, sizeof triangles, "%.1f", row.triangles_per_ray);
+  }
+  std::printf("  %-12s %-8s %-8s %-7d %-8s %9.2f %12s %11s %11s\n", row.mesh.c_str(), row.rays.c_str(),
+              row.query.c_str(), thread_count, row.accelerator.c_str(), 1e-6 / per_ray, ratio, nodes, triangles);
+  return true;
+}
+
+void print_trace_summary(const std::vector<TraceRow>& rows, int threads, const SecondsByName& seconds) {
   std::printf("\nTraversal (time vs Embree: this accelerator's time per ray / Embree's, same rays,\n"
               "same threads; nodes and triangles per ray are exact counts, single-threaded pass):\n");
   std::printf("  %-12s %-8s %-8s %-7s %-8s %9s %12s %11s %11s\n", "mesh", "rays", "query", "threads", "accel",
               "Mrays/s", "vs Embree", "nodes/ray", "tris/ray");
   for (const TraceRow& row : rows) {
-    for (int thread_count : {1, threads}) {
-      if (thread_count > 1 && row.accelerator == "brute") continue;
-      const double s = find_seconds(trace_name(row.mesh, row.rays, row.query, row.accelerator, thread_count));
-      const double e = find_seconds(trace_name(row.mesh, row.rays, row.query, "embree", thread_count));
-      if (s <= 0.0) {
-        if (threads == 1 || thread_count > 1) break;
-        continue;
+    if (!print_trace_row(row, 1, rows, seconds)) continue;
+    if (threads > 1 && row.accelerator != "brute") print_trace_row(row, threads, rows, seconds);
+  }
+}
+
+// The whole renderer (raylab-reference render, without writing the image) on the course's
+// scenes, on 1 and 2 threads: rays per second as the renderer counts them, the fastest of
+// three renders, and the 2-thread speed-up measured in the same run.
+void print_render_summary() {
+  std::printf("\nRenderer (raylab-reference render, scene size, no image written; fastest of 3):\n");
+  std::printf("  %-8s %-10s %8s %9s %10s %9s\n", "scene", "size", "threads", "seconds", "Mrays/s", "speed-up");
+  for (const char* name : {"whitted", "bunny"}) {
+    const Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/" + name + ".json");
+    double one_thread_seconds = 0.0;
+    for (int threads : {1, 2}) {
+      RenderSettings settings;
+      settings.max_depth = scene.max_depth;
+      settings.threads = threads;
+      RenderStats best;
+      for (int run = 0; run < 3; ++run) {
+        RenderStats stats;
+        benchmark::DoNotOptimize(render(scene, settings, &stats));
+        if (run == 0 || stats.seconds < best.seconds) best = stats;
       }
-      // Per ray: brute force traces a subset of the rays, Embree always the whole set.
-      const double per_ray = s / static_cast<double>(row.ray_count);
-      char ratio[32] = "n/a";
-      double embree_per_ray = 0.0;
-      for (const TraceRow& other : rows)
-        if (other.mesh == row.mesh && other.rays == row.rays && other.query == row.query && other.accelerator == "embree")
-          embree_per_ray = e / static_cast<double>(other.ray_count);
-      if (embree_per_ray > 0.0) std::snprintf(ratio, sizeof ratio, "%.2fx", per_ray / embree_per_ray);
-      char nodes[32] = "-", triangles[32] = "-";
-      if (row.has_counts) {
-        if (row.accelerator != "brute") std::snprintf(nodes, sizeof nodes, "%.1f", row.nodes_per_ray);
-        std::snprintf(triangles, sizeof triangles, "%.1f", row.triangles_per_ray);
-      }
-      std::printf("  %-12s %-8s %-8s %-7d %-8s %9.2f %12s %11s %11s\n", row.mesh.c_str(), row.rays.c_str(),
-                  row.query.c_str(), thread_count, row.accelerator.c_str(), 1e-6 / per_ray, ratio, nodes, triangles);
-      if (threads == 1) break;
+      if (threads == 1) one_thread_seconds = best.seconds;
+      std::printf("  %-8s %4dx%-5d %8d %9.3f %10.2f %8.2fx\n", name, scene.camera.width, scene.camera.height,
+                  threads, best.seconds, static_cast<double>(best.work.rays()) / best.seconds * 1e-6,
+                  one_thread_seconds / best.seconds);
     }
   }
-#ifdef RAYLAB_HAVE_EMBREE
-  embree_scenes.clear();
-  rtcReleaseDevice(device_single);
-#endif
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options = parse_options(argc, argv);
+  int benchmark_argc = static_cast<int>(options.benchmark_args.size());
+  benchmark::Initialize(&benchmark_argc, options.benchmark_args.data());
+
+  std::vector<std::unique_ptr<Fixture>> fixtures;
+  try {
+    fixtures = make_fixtures(options.large_triangles);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "raylab-bench-bvh: %s\n", e.what());
+    return 1;
+  }
+  std::unique_ptr<Embree> embree = make_embree(fixtures);  // nullptr without Embree
+
+  std::vector<TraceRow> rows;
+  std::printf("raylab-bench-bvh: leaf size %d, %d x %d primary rays, %zu random rays, brute force on every %zu-th ray\n",
+              kLeafSize, kPrimaryWidth, kPrimaryHeight, kRandomRayCount, kBruteForceStride);
+  std::printf("\nTrees and correctness (closest hits compared ray by ray):\n");
+  for (const auto& f : fixtures) {
+    print_trees(*f);
+    check_and_count(*f, embree.get(), rows);
+    check_invariants(*f);
+  }
+  std::printf("\n");
+  std::fflush(stdout);
+
+  for (const auto& f : fixtures) {
+    register_builds(f.get(), embree.get());
+    register_traces(f.get(), embree.get(), options.threads);
+  }
+  CollectingReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+
+  print_build_summary(fixtures, reporter.seconds_per_iteration);
+  print_trace_summary(rows, options.threads, reporter.seconds_per_iteration);
+  if (options.render) print_render_summary();
   return 0;
 }
