@@ -1,13 +1,13 @@
 // The autograder's entry point, shared by every variant (variant_main.cpp calls it):
-// grades the stage functions it is linked with.
+// grades the stage functions of the stage code its stage server links.
 //
 //   autograder [--stage ID]... [--json results.json] [--output DIR] [--timeout S] [--list]
 //
 // A stage is named by its id in stages.json or its short form: 05b_bvh_sah, 05b or 5b.
 //
-// Without --child it is the supervisor (supervisor.cpp): it runs itself once per stage with
-// --child, under a time and memory limit, and never calls stage code. With --child it runs
-// one stage's GoogleTest suite and reports each test to the supervisor through a file.
+// It is the judge (supervisor.cpp): it runs the suites itself and never runs stage code; every
+// stage function it calls is answered by a sandboxed stage server (stage_server_main.cpp,
+// built as <this program>-stage-server), which links the graded stage code.
 #include "grading.h"
 #include "supervisor.h"
 
@@ -15,78 +15,12 @@
 #include "raylab/stage_table.h"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cstring>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
-
-namespace {
-
-using namespace raylab::grading;
-
-std::vector<int> parse_stage_list(const std::string& text) {
-  std::vector<int> numbers;
-  if (text == "none") return numbers;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) numbers.push_back(std::stoi(item));
-  return numbers;
-}
-
-void report_not_implemented(const std::string& report_path, const std::string& message) {
-  const std::string line = nlohmann::json{{"event", "not_implemented"}, {"message", message}}.dump() + "\n";
-  const int fd = ::open(report_path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  if (fd >= 0) {
-    [[maybe_unused]] const ssize_t written = ::write(fd, line.data(), line.size());
-    ::close(fd);
-  }
-}
-
-int run_child(int argc, char** argv) {
-  ::testing::InitGoogleTest(&argc, argv);  // takes --gtest_filter
-  int stage_number = 0;
-  std::string report_path, output_directory = "grading-output", incomplete = "none";
-  for (int i = 1; i + 1 < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--child") stage_number = std::atoi(argv[++i]);
-    else if (arg == "--report") report_path = argv[++i];
-    else if (arg == "--output") output_directory = argv[++i];
-    else if (arg == "--incomplete") incomplete = argv[++i];
-  }
-  const StageInfo* stage = find_stage(stage_number);
-  if (!stage || report_path.empty()) {
-    std::cerr << "autograder: bad --child invocation\n";
-    return 1;
-  }
-  set_output_directory(output_directory);
-  set_incomplete_dependencies(parse_stage_list(incomplete));
-  // A stub throws NotImplemented at once: report the stage as not attempted, run nothing.
-  try {
-    if (stage->probe) stage->probe();
-  } catch (const raylab::NotImplemented& e) {
-    report_not_implemented(report_path, e.what());
-    return 0;
-  } catch (...) {
-    // Anything else the probe throws is for the tests to find and explain.
-  }
-  ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
-  delete listeners.Release(listeners.default_result_printer());
-  install_reporter(report_path);
-  // Failures are results (already reported), not an error of the child.
-  [[maybe_unused]] const int failed = RUN_ALL_TESTS();
-  return 0;
-}
-
-}  // namespace
 
 int raylab_autograder_main(int argc, char** argv, const char* description) {
-  for (int i = 1; i < argc; ++i)
-    if (std::strcmp(argv[i], "--child") == 0) return run_child(argc, argv);
-
+  using namespace raylab::grading;
   CLI::App app{"raylab autograder: grades your stage functions against the reference"};
   SupervisorOptions options;
   options.output_directory = "grading-output";
@@ -98,10 +32,17 @@ int raylab_autograder_main(int argc, char** argv, const char* description) {
   app.add_option("--json", options.json_path, "Also write a Gradescope-style results.json here");
   app.add_option("--output", options.output_directory, "Folder for the yours | reference | difference images")
       ->capture_default_str();
-  app.add_option("--timeout", options.timeout_seconds, "Seconds a stage may run before it is stopped")
+  app.add_option("--timeout", options.timeout_seconds, "Seconds a stage's code may run, all its calls together")
       ->check(CLI::Range(1.0, 3600.0))->capture_default_str();
+  app.add_option("--run-timeout", options.run_timeout_seconds, "Seconds the whole grading run may take")
+      ->check(CLI::Range(1.0, 86400.0))->capture_default_str();
+  app.add_option("--max-processes", options.max_processes, "Processes the stage code may have at once")
+      ->check(CLI::Range(1, 4096))->capture_default_str();
+  app.add_option("--output-limit-kb", options.output_limit_kb, "KiB the stage code may print, per stage process")
+      ->check(CLI::Range(1L, 1L << 20))->capture_default_str();
   app.add_option("--memory-mb", options.memory_limit_mb, "Memory limit per stage in MiB (0: none)")
       ->check(CLI::Range(0L, 1L << 20))->capture_default_str();
+  app.add_option("--stage-server", options.server_path, "The stage server to grade (default: this program's name + -stage-server)");
   app.add_flag("--verbose", options.verbose, "Also show notes (image metrics) of passed tests");
   app.add_flag("--list", list, "List the stages and their tests, then exit");
   try {
@@ -137,7 +78,9 @@ int raylab_autograder_main(int argc, char** argv, const char* description) {
     return 0;
   }
   try {
-    return run_supervisor(std::filesystem::canonical("/proc/self/exe").string(), options);
+    if (options.server_path.empty())
+      options.server_path = std::filesystem::canonical("/proc/self/exe").string() + "-stage-server";
+    return run_supervisor(options);
   } catch (const std::exception& e) {
     std::cerr << "autograder: grading could not run: " << e.what() << "\n";
     return 1;

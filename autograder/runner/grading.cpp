@@ -2,11 +2,6 @@
 
 #include "raylab/stage_table.h"
 
-#include <nlohmann/json.hpp>
-
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <set>
 
@@ -65,15 +60,16 @@ std::set<int>& incomplete_dependencies() {
   return stages;
 }
 
-// Writes one JSON line per event with write(2): it is in the kernel before the next test runs.
-class Reporter : public ::testing::EmptyTestEventListener {
+// Hands each test's result to the judge's callbacks (in the judge's own process).
+class Recorder : public ::testing::EmptyTestEventListener {
  public:
-  explicit Reporter(int fd) : fd_(fd) {}
+  Recorder(std::function<void(const std::string&)> on_start, std::function<void(const TestRecord&)> on_end)
+      : on_start_(std::move(on_start)), on_end_(std::move(on_end)) {}
 
   void OnTestStart(const ::testing::TestInfo& info) override {
     current() = CurrentTest{};
     messages_.clear();
-    write_line({{"event", "start"}, {"test", full_name(info)}});
+    on_start_(full_name(info));
   }
 
   void OnTestPartResult(const ::testing::TestPartResult& result) override {
@@ -87,29 +83,16 @@ class Reporter : public ::testing::EmptyTestEventListener {
     bool not_implemented = false;
     for (const std::string& message : messages_)
       not_implemented = not_implemented || message.find("is not implemented yet") != std::string::npos;
-    write_line({{"event", "end"},
-                {"test", full_name(info)},
-                {"passed", info.result()->Passed()},
-                {"not_implemented", not_implemented},
-                {"messages", messages_},
-                {"hints", current().hints},
-                {"notes", current().notes}});
+    on_end_(TestRecord{full_name(info), info.result()->Passed(), not_implemented, messages_, current().hints,
+                       current().notes});
   }
 
  private:
   static std::string full_name(const ::testing::TestInfo& info) {
     return std::string(info.test_suite_name()) + "." + info.name();
   }
-  void write_line(const nlohmann::json& event) {
-    const std::string line = event.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-    std::size_t written = 0;
-    while (written < line.size()) {
-      const ssize_t n = ::write(fd_, line.data() + written, line.size() - written);
-      if (n <= 0) return;
-      written += static_cast<std::size_t>(n);
-    }
-  }
-  int fd_;
+  std::function<void(const std::string&)> on_start_;
+  std::function<void(const TestRecord&)> on_end_;
   std::vector<std::string> messages_;
 };
 
@@ -186,11 +169,10 @@ std::string reference_path(const std::string& name) {
   return std::string(RAYLAB_REFERENCE_DIR) + "/" + name;
 }
 
-void install_reporter(const std::string& report_path) {
-  const int fd = ::open(report_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error("cannot open the report file " + report_path);
+void install_recorder(std::function<void(const std::string&)> on_test_start,
+                      std::function<void(const TestRecord&)> on_test_end) {
   ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
-  listeners.Append(new Reporter(fd));
+  listeners.Append(new Recorder(std::move(on_test_start), std::move(on_test_end)));
 }
 
 void set_incomplete_dependencies(const std::vector<int>& stage_numbers) {

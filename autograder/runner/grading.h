@@ -65,9 +65,16 @@ void set_output_directory(const std::string& directory);
 // autograder/reference/<name>: the checked-in reference data.
 std::string reference_path(const std::string& name);
 
-// Child side: reports each test's start and end to `report_path` (one JSON object per line,
-// written before the next test starts, so a crash loses nothing already reported).
-void install_reporter(const std::string& report_path);
+// What one test found, as the judge's GoogleTest listener saw it.
+struct TestRecord {
+  std::string test;  // "Suite.Name"
+  bool passed = false;
+  bool not_implemented = false;  // a failure message is a stub's NotImplemented
+  std::vector<std::string> messages, hints, notes;
+};
+// The judge: calls on_test_start before each test and on_test_end after it.
+void install_recorder(std::function<void(const std::string&)> on_test_start,
+                      std::function<void(const TestRecord&)> on_test_end);
 
 // The verdict of a stage's earlier stages, passed by the supervisor to the child, so that an
 // image test can say "this picture uses your stage 1, which is not complete".

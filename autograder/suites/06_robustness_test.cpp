@@ -154,19 +154,21 @@ using TriangleTest = std::optional<TriangleHit> (*)(const Ray&, const glm::vec3&
 
 // Rays from inside the mesh aimed at points on its edges (half) and exactly at its vertices
 // (half): each must hit some triangle. Returns the rays that hit none; the first is kept.
+// The stage calls go in two batches (stage_calls.h): every ray against the triangles around
+// the two vertices of its edge, then each ray that none of those hits against every triangle.
 int count_leaks(const Mesh& mesh, TriangleTest test, int rays, std::uint32_t seed, Ray* first_leak) {
   std::vector<std::vector<std::uint32_t>> around(mesh.positions.size());
-  const auto triangles = static_cast<std::uint32_t>(mesh.indices.size() / 3);
-  for (std::uint32_t t = 0; t < triangles; ++t)
-    for (int k = 0; k < 3; ++k) around[mesh.indices[3 * t + k]].push_back(t);
-  auto hits = [&](const Ray& ray, std::uint32_t t) {
-    return test(ray, mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
-                mesh.positions[mesh.indices[3 * t + 2]]).has_value();
-  };
+  std::vector<protocol::Triangle> triangles;
+  for (std::size_t t = 0; t * 3 + 2 < mesh.indices.size(); ++t) {
+    triangles.push_back({mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
+                         mesh.positions[mesh.indices[3 * t + 2]]});
+    for (int k = 0; k < 3; ++k) around[mesh.indices[3 * t + k]].push_back(static_cast<std::uint32_t>(t));
+  }
   Pcg32 random(seed, testkit::stream_of("leak rays"));
-  int leaks = 0;
+  std::vector<Ray> all_rays;
+  std::vector<std::vector<std::uint32_t>> near;  // per ray: the triangles around its edge's vertices
   for (int r = 0; r < rays; ++r) {
-    const auto t = static_cast<std::uint32_t>(testkit::random_integer(random, 0, static_cast<int>(triangles) - 1));
+    const auto t = static_cast<std::uint32_t>(testkit::random_integer(random, 0, static_cast<int>(triangles.size()) - 1));
     const int k = testkit::random_integer(random, 0, 2);
     const std::uint32_t a = mesh.indices[3 * t + k], b = mesh.indices[3 * t + (k + 1) % 3];
     const glm::vec3 target = r % 2 == 0 ? glm::mix(mesh.positions[a], mesh.positions[b], random.uniform(0, 1)) : mesh.positions[a];
@@ -174,12 +176,19 @@ int count_leaks(const Mesh& mesh, TriangleTest test, int rays, std::uint32_t see
     if (glm::length(offset) > 1.0f) offset /= glm::length(offset) * 1.01f;
     Ray ray = make_ray(mesh.center + 0.9f * mesh.inner_radius * offset, glm::vec3(0.0f));
     ray.direction = target - ray.origin;
-    bool hit = false;
-    for (std::uint32_t u : around[a]) hit = hit || hits(ray, u);
-    for (std::uint32_t u : around[b]) hit = hit || hits(ray, u);
-    for (std::uint32_t u = 0; !hit && u < triangles; ++u) hit = hits(ray, u);
-    if (!hit && ++leaks == 1 && first_leak) *first_leak = ray;
+    all_rays.push_back(ray);
+    near.push_back(around[a]);
+    near.back().insert(near.back().end(), around[b].begin(), around[b].end());
   }
+  const auto near_hits = triangles_hit(test, triangles, all_rays, near);
+  std::vector<Ray> missed;
+  for (int r = 0; r < rays; ++r)
+    if (near_hits[r].empty()) missed.push_back(all_rays[r]);
+  if (missed.empty()) return 0;
+  const auto all_hits = triangles_hit(test, triangles, missed, {});
+  int leaks = 0;
+  for (std::size_t m = 0; m < missed.size(); ++m)
+    if (all_hits[m].empty() && ++leaks == 1 && first_leak) *first_leak = missed[m];
   return leaks;
 }
 

@@ -11,19 +11,9 @@
 namespace raylab::grading {
 namespace {
 
-std::optional<float> test_triangle(void* context, const Ray& ray, std::uint32_t primitive) {
-  const auto& triangle = static_cast<const TestMesh*>(context)->triangles.at(primitive);
-  // Cramer's rule in double: [-d, e1, e2] (t, b1, b2)^T = o - p0.
-  const glm::dvec3 p0(triangle[0]), e1 = glm::dvec3(triangle[1]) - p0, e2 = glm::dvec3(triangle[2]) - p0;
-  const glm::dvec3 minus_d = -glm::dvec3(ray.direction), rhs = glm::dvec3(ray.origin) - p0;
-  const double det = glm::determinant(glm::dmat3(minus_d, e1, e2));
-  if (det == 0.0 || !std::isfinite(det)) return std::nullopt;
-  const double b1 = glm::determinant(glm::dmat3(minus_d, rhs, e2)) / det;
-  const double b2 = glm::determinant(glm::dmat3(minus_d, e1, rhs)) / det;
-  if (!(b1 >= 0 && b2 >= 0 && b1 + b2 <= 1)) return std::nullopt;
-  const float t = static_cast<float>(glm::determinant(glm::dmat3(rhs, e1, e2)) / det);
-  if (!(t > ray.t_min && t < ray.t_max)) return std::nullopt;
-  return t;
+// The grader's own test (stage_calls.h) on the mesh's triangles.
+std::optional<float> test_triangle(const TestMesh& mesh, const Ray& ray, std::uint32_t primitive) {
+  return grader_triangle_test(const_cast<std::vector<std::array<glm::vec3, 3>>*>(&mesh.triangles), ray, primitive);
 }
 
 TestMesh make_mesh(std::string name, std::vector<std::array<glm::vec3, 3>> triangles) {
@@ -75,14 +65,14 @@ const std::vector<TestMesh>& bvh_test_meshes() {
 }
 
 PrimitiveIntersector intersector_for(const TestMesh& mesh) {
-  return PrimitiveIntersector{test_triangle, const_cast<TestMesh*>(&mesh)};
+  return PrimitiveIntersector{grader_triangle_test, const_cast<std::vector<std::array<glm::vec3, 3>>*>(&mesh.triangles)};
 }
 
 std::optional<BvhHit> brute_force_closest(const TestMesh& mesh, const Ray& ray) {
   Ray search = ray;
   std::optional<BvhHit> best;
   for (std::uint32_t i = 0; i < mesh.triangles.size(); ++i)
-    if (const auto t = test_triangle(const_cast<TestMesh*>(&mesh), search, i)) {
+    if (const auto t = test_triangle(mesh, search, i)) {
       search.t_max = *t;
       best = BvhHit{*t, i};
     }
@@ -138,7 +128,7 @@ int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::ve
     const std::optional<BvhHit> got = intersect_bvh(bvh, ray, intersector, any_hit, stats);
     bool ok = got.has_value() == expected.has_value();
     if (ok && got && !any_hit) ok = got->t_hit == expected->t_hit;  // same primitive test: exactly equal
-    if (ok && got && any_hit) ok = got->primitive < mesh.triangles.size() && test_triangle(const_cast<TestMesh*>(&mesh), ray, got->primitive).has_value();
+    if (ok && got && any_hit) ok = got->primitive < mesh.triangles.size() && test_triangle(mesh, ray, got->primitive).has_value();
     if (ok) continue;
     if (++differences > 3) continue;
     const bool zero_component = ray.direction.x == 0 || ray.direction.y == 0 || ray.direction.z == 0;

@@ -2,10 +2,7 @@
 
 #include "grading.h"
 
-#include "raylab/render.h"
-#include "raylab/scene_loader.h"
 #include "raylab/stage_table.h"
-#include "raylab/stages/01_camera_rays.h"
 
 #include <gtest/gtest.h>
 
@@ -47,27 +44,6 @@ const ReferenceData* reference_data_of(const std::string& stage_id) {
 }
 
 std::string reference_image_name(const std::string& stage_id) { return stage_id + ".png"; }
-
-Image render_stage_image(const std::string& stage_id) {
-  const StageDescription* stage = find_stage_description(stage_id);
-  if (!stage || stage->image_scene.empty())
-    throw std::logic_error("stages.json gives the stage " + stage_id + " no image test");
-  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + std::string(stage->image_scene));
-  scene.camera.width = kImageWidth;
-  scene.camera.height = kImageHeight;
-  if (stage->image_shows == "ray_directions") {
-    // Only camera rays: each pixel shows its ray's direction, (d + 1) / 2, as a colour.
-    Image image(kImageWidth, kImageHeight);
-    for (int y = 0; y < kImageHeight; ++y)
-      for (int x = 0; x < kImageWidth; ++x)
-        image.at(x, y) = 0.5f * (generate_camera_ray(scene.camera, x, y).direction + 1.0f);
-    return image;
-  }
-  if (stage->image_shows == "spheres") scene.meshes.clear();
-  RenderSettings settings;
-  settings.max_depth = scene.max_depth;
-  return render(scene, settings);
-}
 
 void expect_image_matches_reference(const std::string& stage_id, float channel_threshold, double max_fraction) {
   hint_about_dependencies(stage_id);

@@ -5,6 +5,7 @@
 #include "raylab/random.h"
 #include "raylab/scene.h"
 #include "raylab/testkit/random_values.h"
+#include "stage_calls.h"
 
 #include <nlohmann/json.hpp>
 
@@ -38,13 +39,8 @@ bool register_reference_data(const char* stage_id, ReferenceData data);
 // The registered generator of a stage, or nullptr.
 const ReferenceData* reference_data_of(const std::string& stage_id);
 
-// The picture a stage's image test renders (stages.json: "image"), the same for the student
-// and the reference, kImageWidth x kImageHeight (small, so grading stays fast). What it shows:
-//   ray_directions  camera-ray directions as colours (only stage 1's function runs)
-//   spheres         the scene's spheres, its meshes left out
-//   everything      the whole scene, through whatever stages the renderer uses
+// The size of each stage's picture (render_stage_image in stage_calls.h): small so grading stays fast.
 constexpr int kImageWidth = 320, kImageHeight = 240;
-Image render_stage_image(const std::string& stage_id);
 std::string reference_image_name(const std::string& stage_id);  // "<id>.png"
 
 // The image test: renders the stage's picture with the linked stage code, compares it with

@@ -1,0 +1,328 @@
+// process.h on Linux.
+//
+// Confinement of a stage server (set up between fork and exec, so the judge's own files and
+// memory are never touched by stage code):
+//   - as root: its own uid and gid (1000000000 + the judge's pid, no other process has them), so
+//     it cannot write any file of the grader, the repository or the reference data, cannot
+//     signal the judge, and everything it starts, detached or not, is killed at once with
+//     kill(-1) by a helper that takes the same uid (atomic against fork: a fork bomb cannot
+//     outrun it);
+//   - not root: the same user, so the judge is a child subreaper and kills every descendant it
+//     finds in /proc until none is left (a setsid() grandchild still has the judge as ancestor);
+//   - both: Landlock where the kernel has it (no file may be created or written anywhere, no TCP,
+//     no signals to processes outside the sandbox), RLIMIT_NPROC, RLIMIT_AS, RLIMIT_FSIZE (the
+//     output limit; stdout and stderr go to a memfd), no core dumps, parent-death signal, only
+//     descriptors 0-4 open.
+#include "process.h"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <grp.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/mman.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace raylab::grading {
+namespace {
+
+// Landlock (linux/landlock.h of newer kernels; spelled out for older headers).
+struct LandlockRulesetAttr {
+  std::uint64_t handled_access_fs;
+  std::uint64_t handled_access_net;
+  std::uint64_t scoped;
+};
+constexpr std::uint64_t kLandlockWriteAccess =
+    (1ull << 1)      // WRITE_FILE
+    | (1ull << 4)    // REMOVE_DIR
+    | (1ull << 5)    // REMOVE_FILE
+    | (1ull << 6)    // MAKE_CHAR
+    | (1ull << 7)    // MAKE_DIR
+    | (1ull << 8)    // MAKE_REG
+    | (1ull << 9)    // MAKE_SOCK
+    | (1ull << 10)   // MAKE_FIFO
+    | (1ull << 11)   // MAKE_BLOCK
+    | (1ull << 12);  // MAKE_SYM
+constexpr std::uint64_t kLandlockReferAccess = 1ull << 13, kLandlockTruncateAccess = 1ull << 14;
+constexpr std::uint64_t kLandlockNetAccess = (1ull << 0) | (1ull << 1);  // BIND_TCP, CONNECT_TCP
+constexpr std::uint64_t kLandlockScopes = (1ull << 0) | (1ull << 1);     // abstract unix sockets, signals
+
+int landlock_abi() {
+#ifdef SYS_landlock_create_ruleset
+  const long abi = ::syscall(SYS_landlock_create_ruleset, nullptr, 0, 1u /* LANDLOCK_CREATE_RULESET_VERSION */);
+  return abi > 0 ? static_cast<int>(abi) : 0;
+#else
+  return 0;
+#endif
+}
+
+struct Sandbox {
+  bool as_root = false;
+  uid_t uid = 0;  // the sandbox's own uid and gid, when as_root
+  int landlock = 0;
+};
+Sandbox& sandbox() {
+  static Sandbox value;
+  return value;
+}
+
+// Processes whose real uid is `uid` (for RLIMIT_NPROC, which counts them all).
+int processes_of(uid_t uid) {
+  int count = 0;
+  DIR* proc = ::opendir("/proc");
+  if (!proc) return 0;
+  while (const dirent* entry = ::readdir(proc)) {
+    if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
+    std::ifstream status(std::string("/proc/") + entry->d_name + "/status");
+    for (std::string line; std::getline(status, line);)
+      if (line.rfind("Uid:", 0) == 0) {
+        count += std::stoul(line.substr(4)) == uid;
+        break;
+      }
+  }
+  ::closedir(proc);
+  return count;
+}
+
+// Every process below the judge: (pid -> parent) from /proc, then the judge's subtree.
+std::vector<pid_t> descendants_of(pid_t root) {
+  std::map<pid_t, pid_t> parent;
+  DIR* proc = ::opendir("/proc");
+  if (!proc) return {};
+  while (const dirent* entry = ::readdir(proc)) {
+    if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
+    std::ifstream stat(std::string("/proc/") + entry->d_name + "/stat");
+    std::string text;
+    std::getline(stat, text);
+    const std::size_t close = text.rfind(')');  // the command name may hold spaces and parentheses
+    if (close == std::string::npos) continue;
+    char state = 0;
+    int ppid = 0;
+    if (std::sscanf(text.c_str() + close + 1, " %c %d", &state, &ppid) == 2) parent[std::atoi(entry->d_name)] = ppid;
+  }
+  ::closedir(proc);
+  std::set<pid_t> below{root};
+  std::vector<pid_t> found;
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const auto& [pid, ppid] : parent)
+      if (below.count(ppid) && !below.count(pid)) {
+        below.insert(pid);
+        found.push_back(pid);
+        grew = true;
+      }
+  }
+  return found;
+}
+
+void reap_all_children() {
+  for (;;) {
+    int status = 0;
+    const pid_t done = ::waitpid(-1, &status, 0);
+    if (done < 0 && errno == EINTR) continue;
+    if (done < 0) return;  // ECHILD: none left
+  }
+}
+
+// Kills everything the stage code started. The stage server itself is already reaped.
+void kill_every_descendant() {
+  if (sandbox().as_root) {
+    // A helper with the sandbox's uid sends SIGKILL to every process it may signal: exactly
+    // the sandbox's processes, in one pass that a concurrent fork cannot slip through.
+    const pid_t killer = ::fork();
+    if (killer == 0) {
+      if (::setgid(sandbox().uid) != 0 || ::setuid(sandbox().uid) != 0) ::_exit(1);
+      ::kill(-1, SIGKILL);
+      ::_exit(0);
+    }
+    // Orphans of the sandbox are the judge's children (subreaper): reap them and the helper.
+    reap_all_children();
+    return;
+  }
+  for (int round = 0; round < 1000; ++round) {
+    const std::vector<pid_t> below = descendants_of(::getpid());
+    if (below.empty()) break;
+    for (pid_t pid : below) ::kill(pid, SIGKILL);
+    for (;;) {  // reap what has died; the others are reparented to the judge and found next round
+      int status = 0;
+      if (::waitpid(-1, &status, WNOHANG) <= 0) break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  for (;;) {
+    int status = 0;
+    if (::waitpid(-1, &status, WNOHANG) <= 0) break;
+  }
+}
+
+[[noreturn]] void child_fail(const char* what) {
+  const int saved = errno;
+  const char* reason = std::strerror(saved);
+  [[maybe_unused]] ssize_t ignored = ::write(2, "stage server setup failed: ", 27);
+  ignored = ::write(2, what, std::strlen(what));
+  ignored = ::write(2, ": ", 2);
+  ignored = ::write(2, reason, std::strlen(reason));
+  ignored = ::write(2, "\n", 1);
+  ::_exit(126);
+}
+
+}  // namespace
+
+void prepare_judge() {
+  ::prctl(PR_SET_CHILD_SUBREAPER, 1);
+  ::signal(SIGPIPE, SIG_IGN);
+  Sandbox& box = sandbox();
+  box.as_root = ::geteuid() == 0;
+  box.uid = static_cast<uid_t>(1000000000u + static_cast<unsigned>(::getpid()));
+  box.landlock = landlock_abi();
+}
+
+std::string sandbox_description() {
+  const Sandbox& box = sandbox();
+  std::string text = box.as_root ? "its own user id (it cannot write the grader's files, nor signal the grader; "
+                                   "everything it starts is killed with its stage)"
+                                 : "your user id (processes it starts are killed with its stage)";
+  if (box.landlock > 0)
+    text += ", Landlock ABI " + std::to_string(box.landlock) + " (no file writes" +
+            std::string(box.landlock >= 4 ? ", no TCP" : "") + std::string(box.landlock >= 6 ? ", no signals out" : "") + ")";
+  else if (!box.as_root)
+    text += "; WARNING: no Landlock in this kernel and not root: stage code can write your files";
+  return text;
+}
+
+StageProcess::~StageProcess() {
+  if (running()) {
+    std::string ignored;
+    stop(true, ignored);
+  }
+}
+
+void StageProcess::start(const std::string& program, const SandboxLimits& limits) {
+  int requests[2], replies[2];
+  if (::pipe2(requests, O_CLOEXEC) != 0 || ::pipe2(replies, O_CLOEXEC) != 0)
+    throw std::runtime_error(std::string("pipe failed: ") + std::strerror(errno));
+  const int output = ::memfd_create("raylab-stage-output", MFD_CLOEXEC);
+  if (output < 0) throw std::runtime_error(std::string("memfd_create failed: ") + std::strerror(errno));
+  const Sandbox box = sandbox();
+  const int nproc = box.as_root ? limits.max_processes : processes_of(::getuid()) + limits.max_processes;
+  const pid_t judge = ::getpid();
+  const std::string path = program;
+  char* const argv[] = {const_cast<char*>(path.c_str()), nullptr};
+
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+  if (pid == 0) {
+    // The child: only system calls from here to exec.
+    ::setsid();
+    const int null_fd = ::open("/dev/null", O_RDONLY);
+    // Move the descriptors out of the way of 0-4 first, then into place.
+    const int in = ::fcntl(requests[0], F_DUPFD, 100), out = ::fcntl(replies[1], F_DUPFD, 100);
+    const int text = ::fcntl(output, F_DUPFD, 100), nul = ::fcntl(null_fd, F_DUPFD, 100);
+    if (in < 0 || out < 0 || text < 0 || nul < 0) child_fail("dup");
+    if (::dup2(nul, 0) < 0 || ::dup2(text, 1) < 0 || ::dup2(text, 2) < 0 || ::dup2(in, 3) < 0 || ::dup2(out, 4) < 0)
+      child_fail("dup2");
+    ::close_range(5, ~0u, 0);
+    const struct rlimit no_core{0, 0};
+    ::setrlimit(RLIMIT_CORE, &no_core);
+    if (limits.memory_limit_mb > 0) {
+      const rlim_t bytes = static_cast<rlim_t>(limits.memory_limit_mb) * 1024 * 1024;
+      const struct rlimit memory{bytes, bytes};
+      ::setrlimit(RLIMIT_AS, &memory);
+    }
+    const struct rlimit file_size{static_cast<rlim_t>(limits.output_limit_bytes), static_cast<rlim_t>(limits.output_limit_bytes)};
+    ::setrlimit(RLIMIT_FSIZE, &file_size);
+    ::signal(SIGXFSZ, SIG_IGN);  // over the output limit: writes fail, the program goes on
+    if (box.as_root) {
+      if (::setgroups(0, nullptr) != 0 || ::setgid(box.uid) != 0 || ::setuid(box.uid) != 0) child_fail("setuid");
+    }
+    const struct rlimit processes{static_cast<rlim_t>(nproc), static_cast<rlim_t>(nproc)};
+    ::setrlimit(RLIMIT_NPROC, &processes);
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // after setuid, which clears it
+    if (::getppid() != judge) ::_exit(125);
+    if (::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) child_fail("no_new_privs");
+#ifdef SYS_landlock_create_ruleset
+    if (box.landlock > 0) {
+      LandlockRulesetAttr attr{kLandlockWriteAccess, 0, 0};
+      std::size_t size = sizeof(std::uint64_t);
+      if (box.landlock >= 2) attr.handled_access_fs |= kLandlockReferAccess;
+      if (box.landlock >= 3) attr.handled_access_fs |= kLandlockTruncateAccess;
+      if (box.landlock >= 4) attr.handled_access_net = kLandlockNetAccess, size = 2 * sizeof(std::uint64_t);
+      if (box.landlock >= 6) attr.scoped = kLandlockScopes, size = sizeof(attr);
+      const long ruleset = ::syscall(SYS_landlock_create_ruleset, &attr, size, 0u);
+      if (ruleset < 0) child_fail("landlock_create_ruleset");
+      if (::syscall(SYS_landlock_restrict_self, static_cast<int>(ruleset), 0u) != 0) child_fail("landlock_restrict_self");
+      ::close(static_cast<int>(ruleset));
+    }
+#endif
+    ::execv(argv[0], argv);
+    child_fail("exec of the stage server");
+  }
+  ::close(requests[0]);
+  ::close(replies[1]);
+  pid_ = pid;
+  request_fd_ = requests[1];
+  reply_fd_ = replies[0];
+  output_fd_ = output;
+  output_limit_bytes_ = limits.output_limit_bytes;
+}
+
+bool StageProcess::wait_for_reply(Clock::time_point deadline) const {
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) return false;
+    pollfd reply{reply_fd_, POLLIN, 0};
+    const int ready = ::poll(&reply, 1, static_cast<int>(std::min<long long>(left, 1000)));
+    if (ready > 0) return true;
+    if (ready < 0 && errno != EINTR) return true;  // let the read report it
+  }
+}
+
+ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
+  ProcessEnd end;
+  if (pid_ <= 0) return end;
+  ::close(request_fd_);  // a server waiting for requests sees end of file and exits
+  int status = 0;
+  bool done = false;
+  if (!kill_now)
+    for (int i = 0; i < 500 && !done; ++i) {
+      done = ::waitpid(pid_, &status, WNOHANG) == pid_;
+      if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  if (!done) {
+    ::kill(pid_, SIGKILL);
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+  }
+  if (WIFSIGNALED(status)) {
+    end.signalled = true;
+    end.signal_number = WTERMSIG(status);
+  } else if (WIFEXITED(status)) {
+    end.exit_code = WEXITSTATUS(status);
+  }
+  kill_every_descendant();
+  ::close(reply_fd_);
+  // What the stage code printed (the memfd is ours alone now).
+  std::string text(static_cast<std::size_t>(output_limit_bytes_), '\0');
+  const ssize_t got = ::pread(output_fd_, text.data(), text.size(), 0);
+  if (got > 0) output.append(text.data(), static_cast<std::size_t>(got));
+  ::close(output_fd_);
+  pid_ = -1;
+  request_fd_ = reply_fd_ = output_fd_ = -1;
+  return end;
+}
+
+}  // namespace raylab::grading

@@ -1,0 +1,148 @@
+// The protocol between the judge (the autograder process that decides scores and never runs
+// student code) and a stage server (a child process that links the student's stage library and
+// answers one call at a time). See docs/instructors.md, "The grader's trust model".
+//
+// Frames on a pipe: a 4-byte little-endian payload length, then the payload. A request is
+//   [kCall] [Function] [arguments...]
+// and the stage server answers with one of
+//   [kReturn] [result...]                                   the function returned
+//   [kThrow] [ExceptionKind] [message] [stage id] [function]  it threw
+//   [kCallback] [Ray] [primitive]                           intersect_bvh asks the judge to test
+//                                                           one primitive (judge answers kReturn)
+// The judge treats everything it reads as untrusted: a malformed frame is an error of the call
+// (ProtocolError), never a result. Values are the framework's plain structs, copied bytewise
+// (both ends are the same build on the same machine).
+#pragma once
+
+#include "raylab/bounds.h"
+#include "raylab/camera.h"
+#include "raylab/image.h"
+#include "raylab/ray.h"
+#include "raylab/stages/03_triangle.h"
+#include "raylab/stages/05_bvh.h"
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace raylab::grading::protocol {
+
+// The stage server reads requests from this descriptor and writes replies to the next.
+constexpr int kRequestFd = 3, kReplyFd = 4;
+constexpr std::uint32_t kMaxFrameBytes = 512u << 20;
+
+enum Kind : std::uint8_t { kCall = 1, kReturn = 2, kThrow = 3, kCallback = 4 };
+
+enum class Function : std::uint8_t {
+  GenerateCameraRay = 1,
+  IntersectRaySphere,
+  IntersectRayTriangle,
+  IntersectRayTriangleWatertight,
+  IntersectRayBox,
+  BuildBvh,
+  BuildBvhSah,
+  IntersectBvh,         // the judge's intersector: the grader's triangle test on shipped triangles,
+                        // or any other intersector through kCallback
+  RenderStageImage,     // a whole picture, rendered by the stage code in the server
+  TrianglesHit,         // a batch of stage-03 or stage-03b calls on one mesh (stage_calls.h)
+};
+const char* function_name(Function function);
+
+enum class ExceptionKind : std::uint8_t { NotImplemented = 1, InvalidArgument, Other };
+
+// The reply was not a well-formed frame: what a child wrote is not a result.
+struct ProtocolError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Writer {
+ public:
+  template <class T>
+  void put(const T& value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const auto* bytes = reinterpret_cast<const char*>(&value);
+    data_.append(bytes, sizeof(T));
+  }
+  template <class T>
+  void put_vector(const std::vector<T>& values) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    put<std::uint64_t>(values.size());
+    data_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+  }
+  void put_string(const std::string& text) {
+    put<std::uint64_t>(text.size());
+    data_ += text;
+  }
+  template <class T>
+  void put_optional(const std::optional<T>& value) {
+    put<std::uint8_t>(value.has_value());
+    put(value.value_or(T{}));
+  }
+  const std::string& bytes() const { return data_; }
+  std::string& bytes() { return data_; }
+
+ private:
+  std::string data_;
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::string& data) : data_(data) {}
+  template <class T>
+  T get() {
+    static_assert(std::is_trivially_copyable_v<T>);
+    T value;
+    std::memcpy(&value, take(sizeof(T)), sizeof(T));
+    return value;
+  }
+  template <class T>
+  std::vector<T> get_vector() {
+    const auto count = get<std::uint64_t>();
+    if (count > (data_.size() - offset_) / sizeof(T)) throw ProtocolError("a list longer than its frame");
+    std::vector<T> values(count);
+    if (count) std::memcpy(values.data(), take(count * sizeof(T)), count * sizeof(T));
+    return values;
+  }
+  std::string get_string() {
+    const auto size = get<std::uint64_t>();
+    if (size > data_.size() - offset_) throw ProtocolError("a text longer than its frame");
+    return std::string(take(size), size);
+  }
+  template <class T>
+  std::optional<T> get_optional() {
+    const bool has = get<std::uint8_t>() != 0;
+    const T value = get<T>();
+    return has ? std::optional<T>(value) : std::nullopt;
+  }
+  void expect_end() const {
+    if (offset_ != data_.size()) throw ProtocolError("extra bytes after the reply");
+  }
+
+ private:
+  const char* take(std::size_t size) {
+    if (size > data_.size() - offset_) throw ProtocolError("a reply shorter than its contents");
+    const char* at = data_.data() + offset_;
+    offset_ += size;
+    return at;
+  }
+  const std::string& data_;
+  std::size_t offset_ = 0;
+};
+
+// Whole frames on a blocking descriptor. read_frame returns false at end of file before a frame
+// starts; both throw ProtocolError on a short or oversized frame, std::system_error on I/O errors.
+bool read_frame(int fd, std::string& payload);
+void write_frame(int fd, const std::string& payload);
+
+using Triangle = std::array<glm::vec3, 3>;
+
+// Lists of lists, flattened: list i is values[offsets[i] .. offsets[i + 1]).
+void put_lists(Writer& out, const std::vector<std::vector<std::uint32_t>>& lists);
+std::vector<std::vector<std::uint32_t>> get_lists(Reader& in);
+
+}  // namespace raylab::grading::protocol

@@ -1,0 +1,40 @@
+// What the suites call in stage code besides the stage functions themselves. Each has two
+// definitions: local_stage_calls.cpp (the stage server and the regenerate tool, which link stage
+// code) and remote_stages.cpp (the judge, which sends one request to the stage server).
+#pragma once
+
+#include "protocol.h"
+
+#include "raylab/image.h"
+#include "raylab/stages/03_triangle.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab::grading {
+
+using TriangleFunction = std::optional<TriangleHit> (*)(const Ray&, const glm::vec3&, const glm::vec3&,
+                                                        const glm::vec3&);
+
+// For each ray i, the triangles (indices into `triangles`) among candidates[i] that
+// function(ray, p0, p1, p2) reports a hit for; every triangle is a candidate when `candidates` is
+// empty. function is intersect_ray_triangle or intersect_ray_triangle_watertight.
+std::vector<std::vector<std::uint32_t>> triangles_hit(TriangleFunction function,
+                                                      const std::vector<protocol::Triangle>& triangles,
+                                                      const std::vector<Ray>& rays,
+                                                      const std::vector<std::vector<std::uint32_t>>& candidates);
+
+// The picture a stage's image test renders (stages.json: "image"), the same for the student
+// and the reference, kImageWidth x kImageHeight (support.h). What it shows:
+//   ray_directions  camera-ray directions as colours (only stage 1's function runs)
+//   spheres         the scene's spheres, its meshes left out
+//   everything      the whole scene, through whatever stages the renderer uses
+Image render_stage_image(const std::string& stage_id);
+
+// The grader's own triangle test (Cramer's rule in double), as a PrimitiveIntersector test over
+// `triangles` (a const std::vector<protocol::Triangle>*), so that BVH grades do not depend on
+// your stage 3.
+std::optional<float> grader_triangle_test(void* triangles, const Ray& ray, std::uint32_t primitive);
+
+}  // namespace raylab::grading

@@ -1,0 +1,80 @@
+// The judge's side of one stage: a stage server (process.h) per stretch of calls, the stage's
+// time budget, and the resume policy.
+//
+// Resume policy: every call of a stage function goes to the current stage server. If that server
+// crashes, exits (even with status 0), sends garbage or stops answering, the call throws
+// StageLost, the rest of the test is lost with the reason, and the next test starts a fresh
+// server. The stage's time (all its calls together, server start-ups included) and the whole
+// run's time are limited: after a time-out, or after too many lost servers, the stage's
+// remaining tests are lost without running stage code.
+#pragma once
+
+#include "process.h"
+#include "protocol.h"
+
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace raylab::grading {
+
+// A call into stage code that delivered no result: the process died, timed out or misbehaved.
+struct StageLost : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct SessionOptions {
+  std::string server_path;     // the stage server linked with the graded code
+  SandboxLimits limits;
+  double stage_seconds = 60;   // per stage, all its calls together
+  Clock::time_point run_deadline = Clock::time_point::max();
+  int max_restarts = 3;        // fresh servers after a loss, per stage
+};
+
+struct StageEnd {
+  std::string problem;  // the first loss, for the score table ("" when none)
+  std::string output;   // what the stage code printed
+};
+
+class StageSession {
+ public:
+  static StageSession& instance();
+
+  void configure(const SessionOptions& options) { options_ = options; }
+  const SessionOptions& options() const { return options_; }
+
+  void begin_stage();
+  // test: "Suite.Name", or "" for the stage's probe before its tests.
+  void begin_test(const std::string& test);
+  // The reason the current test lost its stage calls, if it did.
+  std::optional<std::string> test_loss() const;
+  // Stops the stage's server and every process it started; only then is anything reported.
+  StageEnd end_stage();
+
+  // One request; returns the payload of the kReturn reply (its first byte is the kind). Stage
+  // exceptions are rethrown here (NotImplemented, std::invalid_argument, std::runtime_error);
+  // on_callback answers intersect_bvh's primitive tests.
+  using Callback = std::function<void(protocol::Reader& request, protocol::Writer& answer)>;
+  std::string call(protocol::Function function, const protocol::Writer& arguments, const Callback& on_callback = {});
+
+  // Increases whenever a fresh server starts (what it was sent before is gone).
+  unsigned server_generation() const { return generation_; }
+  bool server_running() const { return process_.running(); }
+
+ private:
+  [[noreturn]] void lose(const std::string& reason, bool timed_out);
+  std::string where() const;
+
+  SessionOptions options_;
+  StageProcess process_;
+  unsigned generation_ = 0;
+  double used_seconds_ = 0;
+  int losses_ = 0;
+  std::string test_, test_loss_, abandoned_, problem_, output_;
+  protocol::Function function_ = protocol::Function::GenerateCameraRay;
+};
+
+std::string signal_description(int signal_number);
+
+}  // namespace raylab::grading

@@ -1,0 +1,14 @@
+// Hostile: the reference box test, plus a static initialiser that calls exit(0) when the
+// program starts: no stage function ever answers, so every stage scores 0, each with the
+// reason "exited (status 0)", and the grader itself finishes normally.
+#include "../../solutions/04_box/box.cpp"
+
+#include <cstdlib>
+
+namespace {
+
+struct ExitAtOnce {
+  ExitAtOnce() { std::exit(0); }
+} exit_at_once;
+
+}  // namespace
