@@ -144,6 +144,11 @@ std::string StageSession::call(Function function, const Writer& arguments, const
         on_callback(in, answer);
       } catch (const protocol::ProtocolError& e) {
         garbled(e.what());
+      } catch (...) {
+        // The judge's own callback gave up (say, the traversal did too much work): the server
+        // is stuck in the call, so it goes, but the stage code did nothing wrong.
+        process_.stop(true, output_);
+        throw;
       }
       try {
         protocol::write_frame(process_.request_fd(), answer.bytes());
