@@ -74,11 +74,12 @@ struct SentToServer {
 
 }  // namespace
 
-Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y) {
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
   Writer arguments;
   arguments.put(camera);
   arguments.put(pixel_x);
   arguments.put(pixel_y);
+  arguments.put(position_in_pixel);
   return call_returning<Ray>(Function::GenerateCameraRay, arguments);
 }
 

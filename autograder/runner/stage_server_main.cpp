@@ -58,7 +58,8 @@ void answer(Reader& in, Writer& out, Cache& cache) {
     case Function::GenerateCameraRay: {
       const auto camera = in.get<Camera>();
       const auto x = in.get<int>(), y = in.get<int>();
-      out.put(generate_camera_ray(camera, x, y));
+      const auto position_in_pixel = in.get<glm::vec2>();
+      out.put(generate_camera_ray(camera, x, y, position_in_pixel));
       return;
     }
     case Function::IntersectRaySphere: {

@@ -10,9 +10,9 @@
 
 namespace raylab {
 
-Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y);
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel = glm::vec2(0.5f));
 
-Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y) {
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
   static bool attacked = false;
   if (!attacked) {
     attacked = true;
@@ -21,7 +21,7 @@ Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y) {
     hostile::print_fake_scores();
     hostile::write_to_inherited_descriptors(false);
   }
-  return honest_generate_camera_ray(camera, pixel_x, pixel_y);
+  return honest_generate_camera_ray(camera, pixel_x, pixel_y, position_in_pixel);
 }
 
 }  // namespace raylab
