@@ -1,6 +1,7 @@
 #include "stage_session.h"
 
 #include "raylab/error.h"
+#include "raylab/stage_table.h"
 
 #include <signal.h>
 
@@ -172,9 +173,8 @@ std::string StageSession::call(Function function, const Writer& arguments, const
       garbled(e.what());
     }
     if (exception == protocol::ExceptionKind::NotImplemented) {
-      // Rebuild the stub's exception: its message names the file to write.
-      const std::string prefix = "stage " + stage_id + " is not implemented yet: write " + function_text + " in ";
-      if (message.rfind(prefix, 0) == 0) throw NotImplemented(stage_id, function_text, message.substr(prefix.size()));
+      // Rebuild the stub's exception from the stage table (its message names the file to write).
+      if (stage_of_function(function_text)) throw NotImplemented(function_text);
       throw std::runtime_error(message);
     }
     if (exception == protocol::ExceptionKind::InvalidArgument) throw std::invalid_argument(message);
