@@ -19,7 +19,7 @@ namespace raylab::grading {
 
 // One row of the stage table, as the grader uses it.
 struct StageInfo {
-  int number = 0;                // 1 + its row in stages.json: internal (the child's argument),
+  int number = 0;                // 1 + its row in stages.json: internal (the judge's key),
                                  // never shown; users see the id
   std::string id;                // "05b_bvh_sah"
   std::string title;             // "bonus: binned SAH build"
@@ -76,7 +76,7 @@ struct TestRecord {
 void install_recorder(std::function<void(const std::string&)> on_test_start,
                       std::function<void(const TestRecord&)> on_test_end);
 
-// The verdict of a stage's earlier stages, passed by the supervisor to the child, so that an
+// The verdict of a stage's earlier stages, set by the judge before the stage's tests, so that an
 // image test can say "this picture uses your stage 1, which is not complete".
 void set_incomplete_dependencies(const std::vector<int>& stage_numbers);
 bool dependency_incomplete(int stage_number);
