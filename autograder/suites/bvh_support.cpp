@@ -3,9 +3,11 @@
 #include "grading.h"
 
 #include "raylab/scene_loader.h"
+#include "raylab/stages/04_box.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace raylab::grading {
@@ -122,9 +124,179 @@ std::vector<std::uint32_t> subtree_primitive_counts(const Bvh& bvh) {
   for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
     const BvhNode& node = bvh.nodes[i];
     if (node.is_leaf()) counts[i] = node.primitive_count;
-    else if (node.first_index + 1 < counts.size()) counts[i] = counts[node.first_index] + counts[node.first_index + 1];
+    else if (children_in_range(bvh, node)) counts[i] = counts[node.first_index] + counts[node.first_index + 1];
   }
   return counts;
+}
+
+namespace {
+
+// Where the ray [t_min, infinity) enters `box` grown by a small margin (double precision),
+// or nullopt when it misses: the grader's own slab test, conservative so that a correct
+// traversal's leaves are never counted as missed.
+std::optional<double> box_entry(const Ray& ray, const Bounds3& box) {
+  double t_enter = ray.t_min, t_exit = kInfinity;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double margin = 1e-5 * (1.0 + std::fabs(double(box.min[axis])) + std::fabs(double(box.max[axis])));
+    const double low = double(box.min[axis]) - margin, high = double(box.max[axis]) + margin;
+    const double origin = ray.origin[axis], direction = ray.direction[axis];
+    if (direction == 0.0) {
+      if (origin < low || origin > high) return std::nullopt;
+      continue;
+    }
+    double t_near = (low - origin) / direction, t_far = (high - origin) / direction;
+    if (t_near > t_far) std::swap(t_near, t_far);
+    t_enter = std::max(t_enter, t_near);
+    t_exit = std::min(t_exit, t_far);
+    if (t_enter > t_exit) return std::nullopt;
+  }
+  return t_enter;
+}
+
+// The context of the counting intersector: the tree's shape, and what one ray has seen.
+class WorkProbe {
+ public:
+  WorkProbe(const Bvh& bvh, const TestMesh& mesh) : bvh_(bvh), mesh_(mesh) {
+    leaf_of_primitive_.assign(mesh.triangles.size(), 0);
+    parent_.assign(bvh.nodes.size(), kNone);
+    first_seen_.assign(bvh.nodes.size(), false);
+    for (std::uint32_t i = 0; i < bvh.nodes.size(); ++i) {
+      const BvhNode& node = bvh.nodes[i];
+      if (node.is_leaf()) {
+        for (std::uint32_t k = 0; k < node.primitive_count; ++k) leaf_of_primitive_[bvh.primitive_order[node.first_index + k]] = i;
+      } else {
+        parent_[node.first_index] = parent_[node.first_index + 1] = i;
+      }
+    }
+  }
+
+  PrimitiveIntersector intersector() { return PrimitiveIntersector{&WorkProbe::test, this}; }
+
+  void start_ray(const Ray& ray) {
+    for (std::uint32_t node : marked_) first_seen_[node] = false;
+    marked_.clear();
+    ray_ = ray;
+    closest_reported_ = kInfinity;
+    beyond_a_hit_ = false;
+    last_leaf_ = kNone;
+    ++work.rays;
+  }
+  void end_ray(const BvhTraversalStats& stats) {
+    work.nodes_visited += stats.nodes_visited;
+    work.primitives_counted += stats.primitives_tested;
+    work.rays_beyond_a_hit += beyond_a_hit_;
+  }
+
+  TraversalWork work;
+
+ private:
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+  static std::optional<float> test(void* context, const Ray& ray, std::uint32_t primitive) {
+    WorkProbe& probe = *static_cast<WorkProbe*>(context);
+    ++probe.work.primitives_tested;
+    if (ray.t_max > probe.closest_reported_) {
+      ++probe.work.calls_beyond_a_hit;
+      probe.beyond_a_hit_ = true;
+    }
+    if (primitive < probe.leaf_of_primitive_.size()) probe.entered(probe.leaf_of_primitive_[primitive]);
+    const std::optional<float> t = intersector_for(probe.mesh_).test(intersector_for(probe.mesh_).context, ray, primitive);
+    if (t) probe.closest_reported_ = std::min(probe.closest_reported_, *t);
+    return t;
+  }
+
+  // The first test in `leaf` on this ray: where its box is, and which child of the lowest
+  // ancestor already entered the traversal went into first.
+  void entered(std::uint32_t leaf) {
+    if (leaf == last_leaf_) return;
+    last_leaf_ = leaf;
+    if (first_seen_[leaf]) return;
+    ++work.leaves_entered;
+    const std::optional<double> entry = box_entry(ray_, bvh_.nodes[leaf].bounds);
+    if (!entry) ++work.leaves_missed_by_ray;
+    else if (*entry > double(closest_reported_) + 1e-4 * (1.0 + std::fabs(double(closest_reported_)))) ++work.leaves_beyond_hit;
+    std::uint32_t node = leaf;
+    mark(node);
+    while (parent_[node] != kNone) {
+      const std::uint32_t parent = parent_[node];
+      if (first_seen_[parent]) {
+        const BvhNode& inner = bvh_.nodes[parent];
+        const std::uint32_t sibling = node == inner.first_index ? inner.first_index + 1 : inner.first_index;
+        // The same rule as the handout: the second child is the nearer one when the ray goes
+        // down split_axis (a -0 component counts as negative).
+        const bool second_is_near = std::signbit(ray_.direction[inner.split_axis % 3]);
+        const std::uint32_t near_child = inner.first_index + (second_is_near ? 1u : 0u);
+        if (sibling == near_child) ++work.near_child_first;
+        else ++work.far_child_first;
+        return;
+      }
+      mark(parent);
+      node = parent;
+    }
+  }
+  void mark(std::uint32_t node) {
+    first_seen_[node] = true;
+    marked_.push_back(node);
+  }
+
+  const Bvh& bvh_;
+  const TestMesh& mesh_;
+  std::vector<std::uint32_t> leaf_of_primitive_, parent_, marked_;
+  std::vector<bool> first_seen_;
+  Ray ray_;
+  float closest_reported_ = kInfinity;
+  bool beyond_a_hit_ = false;
+  std::uint32_t last_leaf_ = kNone;
+};
+
+// The grader's traversal: the reference's algorithm with YOUR box test (stage 04), so that
+// a box test that prunes too little (or too much) changes both works alike, and the work
+// test judges the traversal alone.
+void grader_traversal(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector, BvhTraversalStats& stats) {
+  const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
+  Ray search = ray;
+  std::vector<std::uint32_t> stack{0};
+  while (!stack.empty()) {
+    const BvhNode& node = bvh.nodes[stack.back()];
+    stack.pop_back();
+    ++stats.nodes_visited;
+    if (!intersect_ray_box(search, ray_direction_inverse, node.bounds)) continue;
+    if (node.is_leaf()) {
+      for (std::uint32_t i = node.first_index; i < node.first_index + node.primitive_count; ++i) {
+        ++stats.primitives_tested;
+        if (const std::optional<float> t = intersector.test(intersector.context, search, bvh.primitive_order[i]))
+          search.t_max = *t;
+      }
+      continue;
+    }
+    const bool second_is_near = std::signbit(ray.direction[node.split_axis % 3]);
+    stack.push_back(node.first_index + (second_is_near ? 0u : 1u));  // the far child, later
+    stack.push_back(node.first_index + (second_is_near ? 1u : 0u));  // the near child, next
+  }
+}
+
+}  // namespace
+
+TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays) {
+  WorkProbe probe(bvh, mesh);
+  for (const Ray& ray : rays) {
+    probe.start_ray(ray);
+    BvhTraversalStats stats;
+    (void)intersect_bvh(bvh, ray, probe.intersector(), /*any_hit=*/false, stats);
+    probe.end_ray(stats);
+  }
+  return probe.work;
+}
+
+TraversalWork reference_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays) {
+  WorkProbe probe(bvh, mesh);
+  for (const Ray& ray : rays) {
+    probe.start_ray(ray);
+    BvhTraversalStats stats;
+    grader_traversal(bvh, ray, probe.intersector(), stats);
+    probe.end_ray(stats);
+  }
+  return probe.work;
 }
 
 int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,

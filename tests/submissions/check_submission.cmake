@@ -1,7 +1,8 @@
 # Runs one grader and checks its results.json (see CMakeLists.txt here for the modes).
 cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
 # Variables: GRADER, MODE (full | zero | broken), EXPECT_STAGE, EXPECT_HINT, ALSO_AFFECTED
-# (optional regex of later tests that may lose points too), TIMEOUT, WORK.
+# (optional regex of later tests that may lose points too), ONLY_LOSES (optional regex: the
+# only tests of EXPECT_STAGE that may lose points), TIMEOUT, WORK.
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 execute_process(COMMAND "${GRADER}" --json "${WORK}/results.json" --output "${WORK}/images" --timeout ${TIMEOUT}
@@ -39,6 +40,10 @@ foreach(i RANGE ${last})
   if(MODE STREQUAL "broken" AND stage STRGREATER EXPECT_STAGE AND NOT expected_loss
      AND NOT score EQUAL max_score)
     list(APPEND problems "${name} lost points, but only ${EXPECT_STAGE} is broken")
+  endif()
+  if(MODE STREQUAL "broken" AND ONLY_LOSES AND stage STREQUAL EXPECT_STAGE AND NOT name MATCHES "${ONLY_LOSES}"
+     AND NOT score EQUAL max_score)
+    list(APPEND problems "${name} lost points, but the mistake should cost only ${ONLY_LOSES}")
   endif()
 endforeach()
 
