@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace raylab::grading {
 namespace {
@@ -66,6 +67,16 @@ std::vector<TestMesh> make_meshes() {
 
   triangles.assign(64, {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)});
   meshes.push_back(make_mesh("64 copies of one triangle (equal centroids)", triangles));
+
+  // Large triangles that all overlap, each moved a little: every split leaves both children
+  // about as large as the node, so the SAH prefers one leaf of all 100 -- which must still be
+  // split down to max_leaf_size.
+  triangles.clear();
+  for (int i = 0; i < 100; ++i) {
+    const glm::vec3 shift = 0.01f * random.vec3(-1, 1);
+    triangles.push_back({glm::vec3(-5, -5, 0) + shift, glm::vec3(5, -5, 1) + shift, glm::vec3(0, 5, -1) + shift});
+  }
+  meshes.push_back(make_mesh("100 overlapping triangles (the SAH prefers one big leaf)", triangles));
   return meshes;
 }
 
@@ -275,7 +286,66 @@ void grader_traversal(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector
   }
 }
 
+void build_grader_node(Bvh& bvh, const std::vector<Bounds3>& bounds, std::uint32_t node_index, std::uint32_t begin,
+                       std::uint32_t end, std::uint32_t max_leaf_size) {
+  Bounds3 box;
+  for (std::uint32_t i = begin; i < end; ++i) box.extend(bounds[bvh.primitive_order[i]]);
+  bvh.nodes[node_index].bounds = box;
+  if (end - begin <= max_leaf_size) {
+    bvh.nodes[node_index].first_index = begin;
+    bvh.nodes[node_index].primitive_count = static_cast<std::uint16_t>(end - begin);
+    return;
+  }
+  const int axis = box.longest_axis();
+  const std::uint32_t middle = begin + (end - begin) / 2;
+  std::nth_element(bvh.primitive_order.begin() + begin, bvh.primitive_order.begin() + middle,
+                   bvh.primitive_order.begin() + end, [&](std::uint32_t a, std::uint32_t b) {
+                     const float ca = bounds[a].centroid()[axis], cb = bounds[b].centroid()[axis];
+                     return ca < cb || (ca == cb && a < b);
+                   });
+  const auto first_child = static_cast<std::uint32_t>(bvh.nodes.size());
+  bvh.nodes.resize(bvh.nodes.size() + 2);
+  bvh.nodes[node_index].first_index = first_child;
+  bvh.nodes[node_index].split_axis = static_cast<std::uint8_t>(axis);
+  build_grader_node(bvh, bounds, first_child, begin, middle, max_leaf_size);
+  build_grader_node(bvh, bounds, first_child + 1, middle, end, max_leaf_size);
+}
+
+// The first box on the way from the root to `primitive`'s leaf that YOUR box test (stage 04)
+// reports as missed although the ray passes through it (the grader's test says so, and the
+// box holds the primitive's hit). nullopt when your box test reports every one of them.
+std::optional<Bounds3> box_wrongly_missed(const Bvh& bvh, const Ray& ray, std::uint32_t primitive) {
+  std::vector<std::uint32_t> parent(bvh.nodes.size(), 0xFFFFFFFFu);
+  std::uint32_t leaf = 0xFFFFFFFFu;
+  for (std::uint32_t i = 0; i < bvh.nodes.size(); ++i) {
+    const BvhNode& node = bvh.nodes[i];
+    if (!node.is_leaf()) {
+      if (children_in_range(bvh, node)) parent[node.first_index] = parent[node.first_index + 1] = i;
+      continue;
+    }
+    for (std::uint64_t k = node.first_index; k < std::uint64_t(node.first_index) + node.primitive_count; ++k)
+      if (k < bvh.primitive_order.size() && bvh.primitive_order[k] == primitive) leaf = i;
+  }
+  const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
+  std::optional<Bounds3> missed;
+  for (std::uint32_t node = leaf, steps = 0; node < bvh.nodes.size() && steps < kBvhMaxDepth; node = parent[node], ++steps) {
+    const Bounds3& box = bvh.nodes[node].bounds;
+    if (box_entry(ray, box) && !intersect_ray_box(ray, ray_direction_inverse, box)) missed = box;  // keep the highest
+  }
+  return missed;
+}
+
 }  // namespace
+
+Bvh grader_median_tree(const std::vector<Bounds3>& bounds, int max_leaf_size) {
+  Bvh bvh;
+  bvh.primitive_order.resize(bounds.size());
+  for (std::uint32_t i = 0; i < bounds.size(); ++i) bvh.primitive_order[i] = i;
+  if (bounds.empty()) return bvh;
+  bvh.nodes.resize(1);
+  build_grader_node(bvh, bounds, 0, 0, static_cast<std::uint32_t>(bounds.size()), static_cast<std::uint32_t>(max_leaf_size));
+  return bvh;
+}
 
 TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays) {
   WorkProbe probe(bvh, mesh);
@@ -299,6 +369,14 @@ TraversalWork reference_traversal_work(const Bvh& bvh, const TestMesh& mesh, con
   return probe.work;
 }
 
+namespace {
+std::string describe_ray(const Ray& ray) {
+  std::ostringstream text;
+  text << ray;
+  return text.str();
+}
+}  // namespace
+
 int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
                              const char* what) {
   const PrimitiveIntersector intersector = intersector_for(mesh);
@@ -319,11 +397,25 @@ int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::ve
                "far to the tests, and skip only children whose box entry is beyond it");
     else if (got && expected)
       add_hint("returns a t closer than any real hit: return the t the primitive test reported, with its primitive");
-    else if (!got && expected && zero_component)
-      add_hint("misses hits of rays with zero direction components: check your box test (stage 04_box) with +-0 directions");
-    else if (!got && expected)
-      add_hint("misses a hit: a child was skipped although it holds a hit (is the box test right? is a leaf's every "
-               "primitive tested? are the primitive indices taken from primitive_order?)");
+    else if (!got && expected) {
+      // Whose code dropped the hit: your box test (stage 04), if it misses a box on the way
+      // to the hit; otherwise the traversal.
+      std::ostringstream box_text;
+      if (const std::optional<Bounds3> missed = box_wrongly_missed(bvh, ray, expected->primitive)) {
+        box_text << *missed;
+        add_hint(std::string("misses a hit because your box test (stage 04_box) misses a box the ray passes through") +
+                 (zero_component ? " (the ray has a zero direction component: check +-0 directions)" : "") +
+                 ": ray " + describe_ray(ray) + ", box " + box_text.str() + " holds the hit at t = " +
+                 std::to_string(expected->t_hit) + " (docs/04_box.md)");
+      } else if (zero_component) {
+        add_hint("misses hits of rays with zero direction components although your box test reports every box on "
+                 "the way to them: check how the traversal handles a +-0 direction (e.g. the near child)");
+      } else {
+        add_hint("misses a hit: a child was skipped although it holds a hit, and your box test reports every box on "
+                 "the way to it (is a leaf's every primitive tested? are the primitive indices taken from "
+                 "primitive_order? is a child skipped for another reason than its box?)");
+      }
+    }
     else
       add_hint("reports a hit where there is none: return only hits the primitive test reported");
     ADD_FAILURE() << what << " on " << mesh.name << ", ray " << r << ": " << ray << "\n  expected "

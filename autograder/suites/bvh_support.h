@@ -18,8 +18,9 @@ struct TestMesh {
 };
 
 // The meshes every BVH test runs on: the bunny (scenes/bunny.obj), a seeded triangle soup,
-// a flat grid in the plane y = 0 (boxes of zero thickness), and 64 copies of one triangle
-// (every centroid equal: the median split must still terminate).
+// a flat grid in the plane y = 0 (boxes of zero thickness), 64 copies of one triangle
+// (every centroid equal: the median split must still terminate), and 100 overlapping
+// triangles (the SAH prefers one leaf of them all, larger than max_leaf_size).
 const std::vector<TestMesh>& bvh_test_meshes();
 
 // The grader's own triangle test (double precision), so that BVH grades do not depend on
@@ -54,6 +55,10 @@ struct TraversalWork {
   double nodes_per_ray() const { return rays ? double(nodes_visited) / double(rays) : 0.0; }
   double tests_per_ray() const { return rays ? double(primitives_tested) / double(rays) : 0.0; }
 };
+
+// The grader's own median-split tree (the contract's build, ties broken by index), so that
+// the traversal's work is judged whatever your build_bvh returns.
+Bvh grader_median_tree(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size);
 
 // The student's intersect_bvh on `rays` (closest hit).
 TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays);

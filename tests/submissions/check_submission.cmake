@@ -2,7 +2,8 @@
 cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
 # Variables: GRADER, MODE (full | zero | broken), EXPECT_STAGE, EXPECT_HINT, ALSO_AFFECTED
 # (optional regex of later tests that may lose points too), ONLY_LOSES (optional regex: the
-# only tests of EXPECT_STAGE that may lose points), TIMEOUT, WORK.
+# only tests of EXPECT_STAGE that may lose points), FORBID (optional regex the output must not
+# match), TIMEOUT, WORK.
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 execute_process(COMMAND "${GRADER}" --json "${WORK}/results.json" --output "${WORK}/images" --timeout ${TIMEOUT}
@@ -67,6 +68,9 @@ if(MODE STREQUAL "broken" AND NOT EXPECT_STAGE IN_LIST stages)
 endif()
 if(MODE STREQUAL "broken" AND NOT output MATCHES "${EXPECT_HINT}")
   list(APPEND problems "the output does not name the mistake: no match for '${EXPECT_HINT}'")
+endif()
+if(FORBID AND output MATCHES "${FORBID}")
+  list(APPEND problems "the output says '${CMAKE_MATCH_0}', which blames what is right")
 endif()
 if(MODE STREQUAL "zero")
   foreach(stage IN LISTS stages)
