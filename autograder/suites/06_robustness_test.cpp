@@ -305,7 +305,7 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
     // Leaving the surface at 3 degrees or more, to either side.
     const float cosine = glm::dot(glm::normalize(direction), start.geometric_normal);
     if (!(std::fabs(cosine) > 0.05f) || glm::length(direction) < 0.1f) continue;
-    Ray ray = make_ray(offset_ray_origin(start, direction), direction);
+    const Ray ray = spawn_ray(start, direction);
     ++tested;
     const std::optional<TriangleHit> hit = intersect_ray_triangle_watertight(ray, p0, p1, p2);
     if (!hit) continue;
