@@ -267,7 +267,7 @@ GRADED_TEST(kStage, Stage06Robustness, DegenerateAndParallelInputsGiveNoNaN, 2) 
 // wrong way: the speckled self-shadowing of a large floor. The t error bound rejects it.
 GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
   constexpr int kRays = 20000;
-  CaseRandom random(606);
+  Pcg32 random(606, testkit::stream_of("acne rays"));
   int acne = 0, tested = 0;
   Ray first;
   glm::vec3 first_corners[3];
@@ -278,11 +278,11 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
     // There the hit point's error, and so the renderer's offset, is tiny, while the error of
     // t grows with the triangle's size: the case where a t that rounds the wrong way shows.
     const float scale = r % 2 == 0 ? 30.0f : 300.0f;
-    const int normal_axis = random.integer(0, 2);
+    const int normal_axis = testkit::random_integer(random, 0, 2);
     const float plane = r % 3 == 0 ? 0.0f : random.uniform(-0.01f, 0.01f);
     glm::vec3 corners[3];
     for (glm::vec3& corner : corners) {
-      corner = random.vec3(-1, 1) * scale;
+      corner = testkit::random_vec3(random, -1, 1) * scale;
       corner[normal_axis] = plane;
     }
     const glm::vec3 p0 = corners[0], p1 = corners[1], p2 = corners[2];
@@ -301,7 +301,7 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
     start.point = b0 * p0 + b1 * p1 + b2 * p2;
     start.point_error = gamma_bound(7) * (glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2));
     start.geometric_normal = glm::normalize(normal);
-    const glm::vec3 direction = random.vec3(-1, 1);
+    const glm::vec3 direction = testkit::random_vec3(random, -1, 1);
     // Leaving the surface at 3 degrees or more, to either side.
     const float cosine = glm::dot(glm::normalize(direction), start.geometric_normal);
     if (!(std::fabs(cosine) > 0.05f) || glm::length(direction) < 0.1f) continue;
@@ -332,21 +332,21 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
 // against long double; the reference's Ize factor (docs/04_box.md, section 4) loses none.
 GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
   constexpr int kRays = 100000;
-  CaseRandom random(404);
+  Pcg32 random(404, testkit::stream_of("box edge rays"));
   int touching = 0, lost = 0;
   Ray first;
   Bounds3 first_box;
   for (int r = 0; r < kRays; ++r) {
     Bounds3 box;
-    box.extend(random.vec3(-10, 10));
-    box.extend(random.vec3(-10, 10));
+    box.extend(testkit::random_vec3(random, -10, 10));
+    box.extend(testkit::random_vec3(random, -10, 10));
     // A point on one of the box's 12 edges: two coordinates at bounds, one inside.
-    const int free_axis = random.integer(0, 2);
+    const int free_axis = testkit::random_integer(random, 0, 2);
     glm::vec3 target;
     for (int axis = 0; axis < 3; ++axis)
       target[axis] = axis == free_axis ? random.uniform(box.min[axis], box.max[axis])
-                                       : (random.integer(0, 1) ? box.max[axis] : box.min[axis]);
-    Ray ray = make_ray(random.vec3(-30, 30), glm::vec3(0.0f));
+                                       : (testkit::random_integer(random, 0, 1) ? box.max[axis] : box.min[axis]);
+    Ray ray = make_ray(testkit::random_vec3(random, -30, 30), glm::vec3(0.0f));
     if (box.contains(ray.origin)) continue;
     ray.direction = (target - ray.origin) * random.uniform(0.5f, 2.0f);
     // The exact answer for these float inputs, in long double (entry <= exit: the box is hit).

@@ -73,7 +73,7 @@ std::vector<TestMesh> make_meshes() {
   // split down to max_leaf_size.
   triangles.clear();
   for (int i = 0; i < 100; ++i) {
-    const glm::vec3 shift = 0.01f * random.vec3(-1, 1);
+    const glm::vec3 shift = 0.01f * testkit::random_vec3(random, -1, 1);
     triangles.push_back({glm::vec3(-5, -5, 0) + shift, glm::vec3(5, -5, 1) + shift, glm::vec3(0, 5, -1) + shift});
   }
   meshes.push_back(make_mesh("100 overlapping triangles (the SAH prefers one big leaf)", triangles));
