@@ -23,8 +23,9 @@
 //   closed mesh hits at least one of them.
 //
 // READ docs/03b_watertight.md: section 2 (the algorithm, step by step), section 3
-//   (numerical care, the optional t error bound, and common mistakes, which the
-//   autograder's hints name).
+//   (numerical care and common mistakes, which the autograder's hints name), section 4 (the
+//   bound on t's rounding error: reject t_hit <= delta_t, or rays leaving a large triangle
+//   hit it again; graded by 06_robustness as shadow acne).
 //
 // HOW TO CHECK
 //   build/bin/autograder --stage 06_robustness     (the bonus stage 06_robustness shoots a million

@@ -11,9 +11,13 @@ constexpr int kShownOutputLines = 40;
 
 std::string status_text(const StageResult& stage) {
   if (stage.not_attempted) return "not attempted";
-  int failed = 0;
-  for (const TestResult& t : stage.tests) failed += t.status != Status::Passed;
+  int failed = 0, not_attempted = 0;
+  for (const TestResult& t : stage.tests) {
+    failed += t.status != Status::Passed && t.status != Status::NotAttempted;
+    not_attempted += t.status == Status::NotAttempted;
+  }
   std::string text = failed == 0 ? "passed" : std::to_string(failed) + " of " + std::to_string(stage.tests.size()) + " tests failed";
+  if (not_attempted > 0) text += "; " + std::to_string(not_attempted) + " tests not attempted (a function still a stub)";
   if (!stage.problem.empty()) text += "; " + stage.problem;
   return text;
 }
@@ -70,7 +74,10 @@ void print_results(const std::vector<StageResult>& results, const std::string& d
                     handout_of(*stage.stage).c_str());
         header = true;
       }
-      const char* label = t.status == Status::Passed ? "passed" : t.status == Status::Lost ? "LOST" : "FAILED";
+      const char* label = t.status == Status::Passed         ? "passed"
+                          : t.status == Status::Lost         ? "LOST"
+                          : t.status == Status::NotAttempted ? "not attempted:"
+                                                             : "FAILED";
       std::printf("  %-6s %s (%d points)\n", label, t.info.name.c_str(), t.info.points);
       std::istringstream lines(test_output(t));
       for (std::string line; std::getline(lines, line);) std::printf("         %s\n", printable(line).c_str());

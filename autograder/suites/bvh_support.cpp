@@ -3,10 +3,13 @@
 #include "grading.h"
 
 #include "raylab/scene_loader.h"
+#include "raylab/stages/04_box.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace raylab::grading {
 namespace {
@@ -54,6 +57,16 @@ std::vector<TestMesh> make_meshes() {
 
   triangles.assign(64, {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)});
   meshes.push_back(make_mesh("64 copies of one triangle (equal centroids)", triangles));
+
+  // Large triangles that all overlap, each moved a little: every split leaves both children
+  // about as large as the node, so the SAH prefers one leaf of all 100 -- which must still be
+  // split down to max_leaf_size.
+  triangles.clear();
+  for (int i = 0; i < 100; ++i) {
+    const glm::vec3 shift = 0.01f * testkit::random_vec3(random, -1, 1);
+    triangles.push_back({glm::vec3(-5, -5, 0) + shift, glm::vec3(5, -5, 1) + shift, glm::vec3(0, 5, -1) + shift});
+  }
+  meshes.push_back(make_mesh("100 overlapping triangles (the SAH prefers one big leaf)", triangles));
   return meshes;
 }
 
@@ -112,10 +125,247 @@ std::vector<std::uint32_t> subtree_primitive_counts(const Bvh& bvh) {
   for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
     const BvhNode& node = bvh.nodes[i];
     if (node.is_leaf()) counts[i] = node.primitive_count;
-    else if (node.first_index + 1 < counts.size()) counts[i] = counts[node.first_index] + counts[node.first_index + 1];
+    else if (children_in_range(bvh, node)) counts[i] = counts[node.first_index] + counts[node.first_index + 1];
   }
   return counts;
 }
+
+namespace {
+
+// Where the ray [t_min, infinity) enters `box` grown by a small margin (double precision),
+// or nullopt when it misses: the grader's own slab test, conservative so that a correct
+// traversal's leaves are never counted as missed.
+std::optional<double> box_entry(const Ray& ray, const Bounds3& box) {
+  double t_enter = ray.t_min, t_exit = kInfinity;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double margin = 1e-5 * (1.0 + std::fabs(double(box.min[axis])) + std::fabs(double(box.max[axis])));
+    const double low = double(box.min[axis]) - margin, high = double(box.max[axis]) + margin;
+    const double origin = ray.origin[axis], direction = ray.direction[axis];
+    if (direction == 0.0) {
+      if (origin < low || origin > high) return std::nullopt;
+      continue;
+    }
+    double t_near = (low - origin) / direction, t_far = (high - origin) / direction;
+    if (t_near > t_far) std::swap(t_near, t_far);
+    t_enter = std::max(t_enter, t_near);
+    t_exit = std::min(t_exit, t_far);
+    if (t_enter > t_exit) return std::nullopt;
+  }
+  return t_enter;
+}
+
+// The context of the counting intersector: the tree's shape, and what one ray has seen.
+class WorkProbe {
+ public:
+  WorkProbe(const Bvh& bvh, const TestMesh& mesh) : bvh_(bvh), mesh_(mesh) {
+    leaf_of_primitive_.assign(mesh.triangles.size(), 0);
+    parent_.assign(bvh.nodes.size(), kNone);
+    first_seen_.assign(bvh.nodes.size(), false);
+    for (std::uint32_t i = 0; i < bvh.nodes.size(); ++i) {
+      const BvhNode& node = bvh.nodes[i];
+      if (node.is_leaf()) {
+        for (std::uint32_t k = 0; k < node.primitive_count; ++k) leaf_of_primitive_[bvh.primitive_order[node.first_index + k]] = i;
+      } else {
+        parent_[node.first_index] = parent_[node.first_index + 1] = i;
+      }
+    }
+  }
+
+  PrimitiveIntersector intersector() { return PrimitiveIntersector{&WorkProbe::test, this}; }
+
+  void start_ray(const Ray& ray) {
+    for (std::uint32_t node : marked_) first_seen_[node] = false;
+    marked_.clear();
+    ray_ = ray;
+    closest_reported_ = kInfinity;
+    beyond_a_hit_ = false;
+    last_leaf_ = kNone;
+    ++work.rays;
+  }
+  void end_ray(const BvhTraversalStats& stats) {
+    work.nodes_visited += stats.nodes_visited;
+    work.primitives_counted += stats.primitives_tested;
+    work.rays_beyond_a_hit += beyond_a_hit_;
+  }
+
+  TraversalWork work;
+
+ private:
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+  static std::optional<float> test(void* context, const Ray& ray, std::uint32_t primitive) {
+    WorkProbe& probe = *static_cast<WorkProbe*>(context);
+    ++probe.work.primitives_tested;
+    if (ray.t_max > probe.closest_reported_) {
+      ++probe.work.calls_beyond_a_hit;
+      probe.beyond_a_hit_ = true;
+    }
+    if (primitive < probe.leaf_of_primitive_.size()) probe.entered(probe.leaf_of_primitive_[primitive]);
+    const std::optional<float> t = intersector_for(probe.mesh_).test(intersector_for(probe.mesh_).context, ray, primitive);
+    if (t) probe.closest_reported_ = std::min(probe.closest_reported_, *t);
+    return t;
+  }
+
+  // The first test in `leaf` on this ray: where its box is, and which child of the lowest
+  // ancestor already entered the traversal went into first.
+  void entered(std::uint32_t leaf) {
+    if (leaf == last_leaf_) return;
+    last_leaf_ = leaf;
+    if (first_seen_[leaf]) return;
+    ++work.leaves_entered;
+    const std::optional<double> entry = box_entry(ray_, bvh_.nodes[leaf].bounds);
+    if (!entry) ++work.leaves_missed_by_ray;
+    else if (*entry > double(closest_reported_) + 1e-4 * (1.0 + std::fabs(double(closest_reported_)))) ++work.leaves_beyond_hit;
+    std::uint32_t node = leaf;
+    mark(node);
+    while (parent_[node] != kNone) {
+      const std::uint32_t parent = parent_[node];
+      if (first_seen_[parent]) {
+        const BvhNode& inner = bvh_.nodes[parent];
+        const std::uint32_t sibling = node == inner.first_index ? inner.first_index + 1 : inner.first_index;
+        // The same rule as the handout: the second child is the nearer one when the ray goes
+        // down split_axis (a -0 component counts as negative).
+        const bool second_is_near = std::signbit(ray_.direction[inner.split_axis % 3]);
+        const std::uint32_t near_child = inner.first_index + (second_is_near ? 1u : 0u);
+        if (sibling == near_child) ++work.near_child_first;
+        else ++work.far_child_first;
+        return;
+      }
+      mark(parent);
+      node = parent;
+    }
+  }
+  void mark(std::uint32_t node) {
+    first_seen_[node] = true;
+    marked_.push_back(node);
+  }
+
+  const Bvh& bvh_;
+  const TestMesh& mesh_;
+  std::vector<std::uint32_t> leaf_of_primitive_, parent_, marked_;
+  std::vector<bool> first_seen_;
+  Ray ray_;
+  float closest_reported_ = kInfinity;
+  bool beyond_a_hit_ = false;
+  std::uint32_t last_leaf_ = kNone;
+};
+
+// The grader's traversal: the reference's algorithm with YOUR box test (stage 04), so that
+// a box test that prunes too little (or too much) changes both works alike, and the work
+// test judges the traversal alone.
+void grader_traversal(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector, BvhTraversalStats& stats) {
+  const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
+  Ray search = ray;
+  std::vector<std::uint32_t> stack{0};
+  while (!stack.empty()) {
+    const BvhNode& node = bvh.nodes[stack.back()];
+    stack.pop_back();
+    ++stats.nodes_visited;
+    if (!intersect_ray_box(search, ray_direction_inverse, node.bounds)) continue;
+    if (node.is_leaf()) {
+      for (std::uint32_t i = node.first_index; i < node.first_index + node.primitive_count; ++i) {
+        ++stats.primitives_tested;
+        if (const std::optional<float> t = intersector.test(intersector.context, search, bvh.primitive_order[i]))
+          search.t_max = *t;
+      }
+      continue;
+    }
+    const bool second_is_near = std::signbit(ray.direction[node.split_axis % 3]);
+    stack.push_back(node.first_index + (second_is_near ? 0u : 1u));  // the far child, later
+    stack.push_back(node.first_index + (second_is_near ? 1u : 0u));  // the near child, next
+  }
+}
+
+void build_grader_node(Bvh& bvh, const std::vector<Bounds3>& bounds, std::uint32_t node_index, std::uint32_t begin,
+                       std::uint32_t end, std::uint32_t max_leaf_size) {
+  Bounds3 box;
+  for (std::uint32_t i = begin; i < end; ++i) box.extend(bounds[bvh.primitive_order[i]]);
+  bvh.nodes[node_index].bounds = box;
+  if (end - begin <= max_leaf_size) {
+    bvh.nodes[node_index].first_index = begin;
+    bvh.nodes[node_index].primitive_count = static_cast<std::uint16_t>(end - begin);
+    return;
+  }
+  const int axis = box.longest_axis();
+  const std::uint32_t middle = begin + (end - begin) / 2;
+  std::nth_element(bvh.primitive_order.begin() + begin, bvh.primitive_order.begin() + middle,
+                   bvh.primitive_order.begin() + end, [&](std::uint32_t a, std::uint32_t b) {
+                     const float ca = bounds[a].centroid()[axis], cb = bounds[b].centroid()[axis];
+                     return ca < cb || (ca == cb && a < b);
+                   });
+  const auto first_child = static_cast<std::uint32_t>(bvh.nodes.size());
+  bvh.nodes.resize(bvh.nodes.size() + 2);
+  bvh.nodes[node_index].first_index = first_child;
+  bvh.nodes[node_index].split_axis = static_cast<std::uint8_t>(axis);
+  build_grader_node(bvh, bounds, first_child, begin, middle, max_leaf_size);
+  build_grader_node(bvh, bounds, first_child + 1, middle, end, max_leaf_size);
+}
+
+// The first box on the way from the root to `primitive`'s leaf that YOUR box test (stage 04)
+// reports as missed although the ray passes through it (the grader's test says so, and the
+// box holds the primitive's hit). nullopt when your box test reports every one of them.
+std::optional<Bounds3> box_wrongly_missed(const Bvh& bvh, const Ray& ray, std::uint32_t primitive) {
+  std::vector<std::uint32_t> parent(bvh.nodes.size(), 0xFFFFFFFFu);
+  std::uint32_t leaf = 0xFFFFFFFFu;
+  for (std::uint32_t i = 0; i < bvh.nodes.size(); ++i) {
+    const BvhNode& node = bvh.nodes[i];
+    if (!node.is_leaf()) {
+      if (children_in_range(bvh, node)) parent[node.first_index] = parent[node.first_index + 1] = i;
+      continue;
+    }
+    for (std::uint64_t k = node.first_index; k < std::uint64_t(node.first_index) + node.primitive_count; ++k)
+      if (k < bvh.primitive_order.size() && bvh.primitive_order[k] == primitive) leaf = i;
+  }
+  const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
+  std::optional<Bounds3> missed;
+  for (std::uint32_t node = leaf, steps = 0; node < bvh.nodes.size() && steps < kBvhMaxDepth; node = parent[node], ++steps) {
+    const Bounds3& box = bvh.nodes[node].bounds;
+    if (box_entry(ray, box) && !intersect_ray_box(ray, ray_direction_inverse, box)) missed = box;  // keep the highest
+  }
+  return missed;
+}
+
+}  // namespace
+
+Bvh grader_median_tree(const std::vector<Bounds3>& bounds, int max_leaf_size) {
+  Bvh bvh;
+  bvh.primitive_order.resize(bounds.size());
+  for (std::uint32_t i = 0; i < bounds.size(); ++i) bvh.primitive_order[i] = i;
+  if (bounds.empty()) return bvh;
+  bvh.nodes.resize(1);
+  build_grader_node(bvh, bounds, 0, 0, static_cast<std::uint32_t>(bounds.size()), static_cast<std::uint32_t>(max_leaf_size));
+  return bvh;
+}
+
+TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays) {
+  WorkProbe probe(bvh, mesh);
+  for (const Ray& ray : rays) {
+    probe.start_ray(ray);
+    BvhTraversalStats stats;
+    (void)intersect_bvh(bvh, ray, probe.intersector(), /*any_hit=*/false, stats);
+    probe.end_ray(stats);
+  }
+  return probe.work;
+}
+
+TraversalWork reference_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays) {
+  WorkProbe probe(bvh, mesh);
+  for (const Ray& ray : rays) {
+    probe.start_ray(ray);
+    BvhTraversalStats stats;
+    grader_traversal(bvh, ray, probe.intersector(), stats);
+    probe.end_ray(stats);
+  }
+  return probe.work;
+}
+
+namespace {
+std::string describe_ray(const Ray& ray) {
+  std::ostringstream text;
+  text << ray;
+  return text.str();
+}
+}  // namespace
 
 int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
                              const char* what) {
@@ -137,11 +387,25 @@ int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::ve
                "far to the tests, and skip only children whose box entry is beyond it");
     else if (got && expected)
       add_hint("returns a t closer than any real hit: return the t the primitive test reported, with its primitive");
-    else if (!got && expected && zero_component)
-      add_hint("misses hits of rays with zero direction components: check your box test (stage 04_box) with +-0 directions");
-    else if (!got && expected)
-      add_hint("misses a hit: a child was skipped although it holds a hit (is the box test right? is a leaf's every "
-               "primitive tested? are the primitive indices taken from primitive_order?)");
+    else if (!got && expected) {
+      // Whose code dropped the hit: your box test (stage 04), if it misses a box on the way
+      // to the hit; otherwise the traversal.
+      std::ostringstream box_text;
+      if (const std::optional<Bounds3> missed = box_wrongly_missed(bvh, ray, expected->primitive)) {
+        box_text << *missed;
+        add_hint(std::string("misses a hit because your box test (stage 04_box) misses a box the ray passes through") +
+                 (zero_component ? " (the ray has a zero direction component: check +-0 directions)" : "") +
+                 ": ray " + describe_ray(ray) + ", box " + box_text.str() + " holds the hit at t = " +
+                 std::to_string(expected->t_hit) + " (docs/04_box.md)");
+      } else if (zero_component) {
+        add_hint("misses hits of rays with zero direction components although your box test reports every box on "
+                 "the way to them: check how the traversal handles a +-0 direction (e.g. the near child)");
+      } else {
+        add_hint("misses a hit: a child was skipped although it holds a hit, and your box test reports every box on "
+                 "the way to it (is a leaf's every primitive tested? are the primitive indices taken from "
+                 "primitive_order? is a child skipped for another reason than its box?)");
+      }
+    }
     else
       add_hint("reports a hit where there is none: return only hits the primitive test reported");
     ADD_FAILURE() << what << " on " << mesh.name << ", ray " << r << ": " << ray << "\n  expected "

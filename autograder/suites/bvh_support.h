@@ -18,8 +18,9 @@ struct TestMesh {
 };
 
 // The meshes every BVH test runs on: the bunny (scenes/bunny.obj), a seeded triangle soup,
-// a flat grid in the plane y = 0 (boxes of zero thickness), and 64 copies of one triangle
-// (every centroid equal: the median split must still terminate).
+// a flat grid in the plane y = 0 (boxes of zero thickness), 64 copies of one triangle
+// (every centroid equal: the median split must still terminate), and 100 overlapping
+// triangles (the SAH prefers one leaf of them all, larger than max_leaf_size).
 const std::vector<TestMesh>& bvh_test_meshes();
 
 // The grader's own triangle test (double precision), so that BVH grades do not depend on
@@ -35,6 +36,41 @@ std::vector<Ray> rays_at(const TestMesh& mesh, int count, std::uint32_t seed, bo
 
 // Primitives below each node (counted through the tree).
 std::vector<std::uint32_t> subtree_primitive_counts(const Bvh& bvh);
+
+// The work of a closest-hit traversal over `rays`, seen from the primitive test's side (the
+// grader's own intersector counts every call) and from the traversal's own stats. Needs a
+// tree that passes bvh_invariant_violation.
+struct TraversalWork {
+  std::uint64_t rays = 0;
+  std::uint64_t nodes_visited = 0;         // the traversal's stats.nodes_visited
+  std::uint64_t primitives_counted = 0;    // the traversal's stats.primitives_tested
+  std::uint64_t primitives_tested = 0;     // calls of intersector.test, counted by the grader
+  std::uint64_t calls_beyond_a_hit = 0;    // calls whose t_max is larger than a hit already reported for that ray
+  std::uint64_t rays_beyond_a_hit = 0;     // rays with at least one such call
+  std::uint64_t leaves_entered = 0;        // distinct leaves whose primitives were tested
+  std::uint64_t leaves_missed_by_ray = 0;  // ... whose box the ray misses altogether
+  std::uint64_t leaves_beyond_hit = 0;     // ... whose box the ray enters beyond a hit already reported
+  std::uint64_t near_child_first = 0;      // inner nodes with leaves tested under both children: nearer one first
+  std::uint64_t far_child_first = 0;       // ... the farther one first
+  double nodes_per_ray() const { return rays ? double(nodes_visited) / double(rays) : 0.0; }
+  double tests_per_ray() const { return rays ? double(primitives_tested) / double(rays) : 0.0; }
+};
+
+// The grader's own median-split tree (the contract's build, ties broken by index), so that
+// the traversal's work is judged whatever your build_bvh returns.
+Bvh grader_median_tree(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size);
+
+// The student's intersect_bvh on `rays` (closest hit).
+TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays);
+// The grader's own traversal (the reference's algorithm: near child first, boxes tested with
+// t_max lowered to the closest hit so far, double-precision box test) on the same tree and rays.
+TraversalWork reference_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays);
+
+// Index arithmetic on a student's tree without wrap-around: whether nodes[first_index] and
+// nodes[first_index + 1] both exist.
+inline bool children_in_range(const Bvh& bvh, const BvhNode& node) {
+  return std::uint64_t(node.first_index) + 1 < bvh.nodes.size();
+}
 
 // Compares intersect_bvh with the oracle on `rays`; reports up to 3 differences with hints.
 // Returns the number of rays that differ.

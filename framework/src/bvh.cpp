@@ -15,11 +15,12 @@ std::ostream& operator<<(std::ostream& out, const Bounds3& box) {
 
 std::ostream& operator<<(std::ostream& out, const BvhNode& node) {
   out << "node " << node.bounds;
+  // In 64 bits: a broken node's first_index may be near 2^32 - 1.
+  const std::uint64_t first = node.first_index;
   if (node.is_leaf())
-    return out << " leaf: primitives " << node.first_index << " .. "
-               << node.first_index + node.primitive_count - 1;
-  return out << " inner: children " << node.first_index << ", " << node.first_index + 1
-             << ", split axis " << "xyz"[node.split_axis % 3];
+    return out << " leaf: primitives " << first << " .. " << first + node.primitive_count - 1;
+  return out << " inner: children " << first << ", " << first + 1 << ", split axis "
+             << "xyz"[node.split_axis % 3];
 }
 
 float bvh_sah_cost(const Bvh& bvh, float traversal_cost, float primitive_cost) {
@@ -38,6 +39,8 @@ namespace {
 
 // Walks the tree from the root with an explicit stack (a broken tree may be very deep or
 // cyclic), calling visit(node_index, depth). Returns "" or the first problem found.
+// Index arithmetic on a node read from a student's tree is done in 64 bits: first_index + 1
+// wraps around to 0 in 32 bits when first_index is 0xFFFFFFFF.
 template <typename Visit>
 std::string walk(const Bvh& bvh, Visit&& visit) {
   struct Entry {
@@ -59,10 +62,14 @@ std::string walk(const Bvh& bvh, Visit&& visit) {
     std::string message = visit(entry.node, entry.depth);
     if (!message.empty()) return message;
     if (!node.is_leaf()) {
-      if (node.first_index <= entry.node || node.first_index + 1 >= bvh.nodes.size()) {
-        problem << "inner node " << entry.node << " has children " << node.first_index << " and "
-                << node.first_index + 1 << ", expected indices after it and below "
-                << bvh.nodes.size();
+      const std::uint64_t first_child = node.first_index;
+      if (first_child <= entry.node || first_child + 1 >= bvh.nodes.size()) {
+        problem << "inner node " << entry.node << " has children " << first_child << " and "
+                << first_child + 1 << ", expected indices after it and below " << bvh.nodes.size();
+        if (first_child == 0)
+          problem << " (first_index 0 and primitive_count 0 are a new node's values: was this node"
+                     " written through a BvhNode& taken before a nodes.push_back? The vector grew and"
+                     " moved, and the write went to the old array: refer to nodes by index)";
         return problem.str();
       }
       stack.push_back({node.first_index, entry.depth + 1});
@@ -123,9 +130,9 @@ std::string bvh_invariant_violation(const Bvh& bvh, const std::vector<Bounds3>& 
             << " primitives, expected at most max_leaf_size = " << max_leaf_size;
         return out.str();
       }
-      if (std::size_t(node.first_index) + node.primitive_count > n) {
+      if (std::uint64_t(node.first_index) + node.primitive_count > n) {
         out << "leaf " << index << " lists primitive_order[" << node.first_index << " .. "
-            << node.first_index + node.primitive_count - 1 << "], past its end (" << n << ")";
+            << std::uint64_t(node.first_index) + node.primitive_count - 1 << "], past its end (" << n << ")";
         return out.str();
       }
       for (std::uint32_t i = node.first_index; i < node.first_index + node.primitive_count; ++i) {
@@ -146,7 +153,7 @@ std::string bvh_invariant_violation(const Bvh& bvh, const std::vector<Bounds3>& 
         out << "inner node " << index << " has split_axis " << int(node.split_axis) << ", expected 0, 1 or 2";
         return out.str();
       }
-      for (std::uint32_t child = node.first_index; child < node.first_index + 2 && child < bvh.nodes.size(); ++child)
+      for (std::uint64_t child = node.first_index; child < std::uint64_t(node.first_index) + 2 && child < bvh.nodes.size(); ++child)
         if (!node.bounds.contains(bvh.nodes[child].bounds)) {
           out << "inner node " << index << " has bounds " << node.bounds << " which do not hold child "
               << child << "'s " << bvh.nodes[child].bounds;

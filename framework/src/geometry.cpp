@@ -128,6 +128,15 @@ void SceneGeometry::build_bvhs() {
   }
 }
 
+bool SceneGeometry::record_is_of_object(const HitRecord& record, std::uint32_t object, float t_hit) const {
+  if (record.t_hit != t_hit) return false;
+  if (object < spheres_.size()) return record.kind == Kind::Sphere && record.index == object;
+  if (object - spheres_.size() >= meshes_.size()) return false;
+  const MeshPart& mesh = meshes_[object - spheres_.size()];
+  return record.kind == Kind::Triangle && record.index >= mesh.first_triangle &&
+         record.index - mesh.first_triangle < mesh.triangle_count;
+}
+
 std::size_t SceneGeometry::bvh_count() const {
   std::size_t count = objects_bvh_.nodes.empty() ? 0 : 1;
   for (const MeshPart& mesh : meshes_) count += mesh.bvh.nodes.empty() ? 0 : 1;
@@ -135,17 +144,23 @@ std::size_t SceneGeometry::bvh_count() const {
 }
 
 // ---- The primitive tests ----------------------------------------------------------------
-// Each is called with a ray whose t_max is the closest hit so far, so a hit it finds is the
-// new closest: it records it in the query's HitRecord unconditionally.
+// A traversal may call the tests in any order and with any t_max (a correct closest-hit
+// traversal passes the closest hit so far, but one that visits both children with the
+// original t_max also finds the right answer). So a test records a hit's details only when
+// it is closer than the query's record so far, and after a traversal the record is checked
+// against the primitive it returned: the framework shades what the traversal returned.
 
 std::optional<float> SceneGeometry::test_triangle(void* context, const Ray& ray, std::uint32_t triangle) {
   Query& query = *static_cast<Query*>(context);
   const Triangle& tri = query.mesh_triangles[triangle];
   const std::optional<TriangleHit> hit = query.geometry->intersect_triangle_(ray, tri.p0, tri.p1, tri.p2);
   if (!hit) return std::nullopt;
-  query.record->kind = Kind::Triangle;
-  query.record->index = query.mesh_first_triangle + triangle;
-  query.record->triangle_hit = *hit;
+  if (hit->t_hit < query.record->t_hit) {
+    query.record->kind = Kind::Triangle;
+    query.record->index = query.mesh_first_triangle + triangle;
+    query.record->t_hit = hit->t_hit;
+    query.record->triangle_hit = *hit;
+  }
   return hit->t_hit;
 }
 
@@ -160,8 +175,31 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
   if (!mesh.bvh.nodes.empty()) {
     BvhTraversalStats stats;
     const PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
-    const std::optional<BvhHit> hit = intersect_bvh(mesh.bvh, ray, intersector, query.any_hit, stats);
-    if (!hit) return std::nullopt;
+    if (query.any_hit) {
+      const std::optional<BvhHit> hit = intersect_bvh(mesh.bvh, ray, intersector, true, stats);
+      return hit ? std::optional<float>(hit->t_hit) : std::nullopt;
+    }
+    // This mesh's own closest hit is recorded apart from the query's (which may hold a closer
+    // hit on another object, when the traversal over the objects did not lower t_max).
+    HitRecord* const query_record = query.record;
+    HitRecord mesh_record;
+    query.record = &mesh_record;
+    const std::optional<BvhHit> hit = intersect_bvh(mesh.bvh, ray, intersector, false, stats);
+    query.record = query_record;
+    if (!hit || hit->primitive >= mesh.triangle_count) return std::nullopt;
+    const std::uint32_t returned = mesh.first_triangle + hit->primitive;
+    if (mesh_record.kind != Kind::Triangle || mesh_record.index != returned || mesh_record.t_hit != hit->t_hit) {
+      // The traversal returned another triangle than the closest one reported to the test
+      // (a tie, or a traversal that is wrong): shade the one it returned.
+      const Triangle& tri = triangles_[returned];
+      const std::optional<TriangleHit> details = intersect_triangle_(ray, tri.p0, tri.p1, tri.p2);
+      if (!details) return std::nullopt;
+      mesh_record.kind = Kind::Triangle;
+      mesh_record.index = returned;
+      mesh_record.triangle_hit = *details;
+    }
+    mesh_record.t_hit = hit->t_hit;
+    if (hit->t_hit < query_record->t_hit) *query_record = mesh_record;
     return hit->t_hit;
   }
   Ray search = ray;
@@ -180,9 +218,10 @@ std::optional<float> SceneGeometry::intersect_object(std::uint32_t object, const
   if (object < spheres_.size()) {
     const Sphere& sphere = spheres_[object];
     const std::optional<float> t = intersect_ray_sphere(ray, sphere.center, sphere.radius);
-    if (t) {
+    if (t && *t < query.record->t_hit) {
       query.record->kind = Kind::Sphere;
       query.record->index = object;
+      query.record->t_hit = *t;
     }
     return t;
   }
@@ -194,7 +233,15 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
     BvhTraversalStats stats;
     const PrimitiveIntersector intersector{&SceneGeometry::test_object, &query};
     const std::optional<BvhHit> hit = intersect_bvh(objects_bvh_, ray, intersector, query.any_hit, stats);
-    if (!hit) return std::nullopt;
+    if (!hit || query.any_hit) return hit ? std::optional<float>(hit->t_hit) : std::nullopt;
+    if (!record_is_of_object(*query.record, hit->primitive, hit->t_hit)) {
+      // Not the object whose hit the tests recorded as the closest: shade the returned one.
+      HitRecord returned;
+      Query again{this, &returned, /*any_hit=*/false};
+      if (hit->primitive >= spheres_.size() + meshes_.size() || !intersect_object(hit->primitive, ray, again))
+        return std::nullopt;
+      *query.record = returned;
+    }
     return hit->t_hit;
   }
   // Few objects: each in turn (spheres first, as the brute force always did), t_max shrinking.
@@ -217,14 +264,16 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
       search.t_max = *t;
       best.kind = Kind::Sphere;
       best.index = i;
+      best.t_hit = *t;
     }
   }
   for (std::size_t m = 0; m < mesh_count; ++m) {
     const MeshPart& mesh = meshes[m];
     if (!mesh.bvh.nodes.empty()) {
+      *query.record = HitRecord();
       if (const std::optional<float> t = intersect_mesh(mesh, search, query)) {
         search.t_max = *t;
-        best = *query.record;  // intersect_mesh wrote it
+        best = *query.record;  // intersect_mesh wrote its closest hit there
       }
       continue;
     }
@@ -235,6 +284,7 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
         search.t_max = hit->t_hit;
         best.kind = Kind::Triangle;
         best.index = i;
+        best.t_hit = hit->t_hit;
         best.triangle_hit = *hit;
       }
     }

