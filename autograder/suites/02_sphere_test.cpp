@@ -4,8 +4,10 @@
 
 #include "raylab/stages/02_sphere.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <vector>
 
 namespace raylab::grading {

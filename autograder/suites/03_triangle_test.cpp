@@ -4,8 +4,10 @@
 
 #include "raylab/stages/03_triangle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 
 namespace raylab::grading {
 namespace {

@@ -4,6 +4,7 @@
 
 #include "raylab/stages/04_box.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 

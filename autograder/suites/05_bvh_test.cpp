@@ -5,6 +5,7 @@
 #include "raylab/stages/05_bvh.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace raylab::grading {
 namespace {

@@ -18,6 +18,7 @@
 #include "raylab/stages/03_triangle.h"
 #include "raylab/stages/03b_watertight.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>

@@ -6,6 +6,7 @@
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <stdexcept>
