@@ -173,7 +173,8 @@ void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std
   TriangleContext context{tree.corners.data(), {}};
   const PrimitiveIntersector intersector{&test_triangle, &context};
   for (std::size_t i = begin; i < end; ++i) {
-    const std::optional<BvhHit> hit = intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
+    // Not const: DoNotOptimize(const T&) is deprecated since Google Benchmark 1.8.
+    std::optional<BvhHit> hit = intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
     if (t_out) t_out[i] = hit ? hit->t_hit : kInfinity;
     benchmark::DoNotOptimize(hit);
   }
