@@ -1,6 +1,6 @@
 # Runs one grader and checks its results.json (see CMakeLists.txt here for the modes).
 cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
-# Variables: GRADER, MODE (full | zero | broken), EXPECT_STAGE, EXPECT_HINT, ALSO_AFFECTED
+# Variables: GRADER, MODE (full | zero | broken), EXPECT_STAGE, EXPECT_HINT (regexes joined by "&&"), ALSO_AFFECTED
 # (optional regex of later tests that may lose points too), TIMEOUT, WORK.
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -60,8 +60,14 @@ endforeach()
 if(MODE STREQUAL "broken" AND NOT EXPECT_STAGE IN_LIST stages)
   list(APPEND problems "no results for ${EXPECT_STAGE}")
 endif()
-if(MODE STREQUAL "broken" AND NOT output MATCHES "${EXPECT_HINT}")
-  list(APPEND problems "the output does not name the mistake: no match for '${EXPECT_HINT}'")
+if(MODE STREQUAL "broken")
+  # EXPECT_HINT: one regex, or several joined by "&&", each of which must match (every mistake named).
+  string(REPLACE "&&" ";" expected_hints "${EXPECT_HINT}")
+  foreach(hint IN LISTS expected_hints)
+    if(NOT output MATCHES "${hint}")
+      list(APPEND problems "the output does not name the mistake: no match for '${hint}'")
+    endif()
+  endforeach()
 endif()
 if(MODE STREQUAL "zero")
   foreach(stage IN LISTS stages)
