@@ -178,6 +178,11 @@ std::vector<std::string> name_extent_mistakes(const Camera& camera, const Screen
             found = true;
           }
   if (found) return best;
+  // camera.up used as the up axis: perpendicular to the view but not unit length, it scales y.
+  const double up_length = glm::length(glm::dvec3(camera.up));
+  if (std::fabs(up_length - 1.0) > 1e-3 && close_ratio(ratio_x, 1.0) && close_ratio(std::fabs(ratio_y), up_length))
+    return {"camera basis wrong: screen_y comes out " + std::to_string(up_length) + " times too large, the length of "
+            "camera.up: use true_up = cross(right, forward), a unit vector, not camera.up (docs/01_camera_rays.md, section 2)"};
   std::ostringstream out;
   out << "screen size wrong: your screen_x spans +-" << std::fabs(fit.x.extent) << " and screen_y +-" << std::fabs(fit.y.extent)
       << " on a " << camera.width << "x" << camera.height << " image with fov_y " << camera.fov_y_degrees
