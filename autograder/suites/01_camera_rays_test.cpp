@@ -26,6 +26,12 @@ Camera make_camera(int width, int height, float fov_y_degrees) {
   return camera;
 }
 
+bool same_direction(const glm::vec3& a, const glm::vec3& b, float tolerance) {
+  const float la = glm::length(a), lb = glm::length(b);
+  if (!(la > 0.0f && lb > 0.0f)) return false;
+  return glm::all(glm::lessThanEqual(glm::abs(a / la - b / lb), glm::vec3(tolerance)));
+}
+
 // ---- Diagnosis from a fitted model of the student's screen mapping -----------------------
 //
 // A handful of the student's rays, each turned back into the point where it crosses the image

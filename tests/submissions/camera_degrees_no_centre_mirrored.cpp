@@ -5,7 +5,8 @@
 
 namespace raylab {
 
-Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y) {
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
+  (void)position_in_pixel;  // integer pixel indices: the corner, whatever the caller asks
   const float aspect = camera.aspect_ratio();
   const float ndc_x = static_cast<float>(pixel_x) / static_cast<float>(camera.width);
   const float ndc_y = static_cast<float>(pixel_y) / static_cast<float>(camera.height);

@@ -8,9 +8,9 @@
 
 namespace raylab {
 
-Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y) {
-  const double ndc_x = (pixel_x + 0.5) / camera.width;
-  const double ndc_y = (pixel_y + 0.5) / camera.height;
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
+  const double ndc_x = (pixel_x + static_cast<double>(position_in_pixel.x)) / camera.width;
+  const double ndc_y = (pixel_y + static_cast<double>(position_in_pixel.y)) / camera.height;
   const double scale = std::tan(camera.fov_y_degrees * 3.14159265358979323846 / 360.0);
   const double aspect = static_cast<double>(camera.width) / camera.height;
   const glm::dvec3 forward = glm::normalize(glm::dvec3(camera.look_at) - glm::dvec3(camera.position));

@@ -8,7 +8,8 @@
 
 namespace raylab {
 
-Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y) {
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
+  (void)position_in_pixel;  // integer pixel indices: the corner, whatever the caller asks
   const float width = static_cast<float>(camera.width);
   const float height = static_cast<float>(camera.height);
   const float scale = std::tan(degrees_to_radians(camera.fov_y_degrees) * 0.5f);

@@ -5,10 +5,10 @@
 
 namespace raylab {
 
-Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y) {
+Ray generate_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
   const float aspect = camera.aspect_ratio();
-  const float ndc_x = (static_cast<float>(pixel_x) + 0.5f) / static_cast<float>(camera.width);
-  const float ndc_y = (static_cast<float>(pixel_y) + 0.5f) / static_cast<float>(camera.height);
+  const float ndc_x = (static_cast<float>(pixel_x) + position_in_pixel.x) / static_cast<float>(camera.width);
+  const float ndc_y = (static_cast<float>(pixel_y) + position_in_pixel.y) / static_cast<float>(camera.height);
   const float scale = std::tan(degrees_to_radians(camera.fov_y_degrees) * 0.5f);
   const float screen_x = 2.0f * ndc_x * aspect * scale;
   const float screen_y = (1.0f - 2.0f * ndc_y) * scale;
