@@ -5,7 +5,7 @@
 // Meshes: the Stanford bunny (scenes/bunny.obj, 3674 triangles) and a displaced sphere of
 // about N triangles (default 1,000,000) made by make_displaced_sphere: no big files.
 // Accelerators: brute force (bunny only: every ray tests every triangle), the reference
-// median-split BVH, the reference binned-SAH BVH, and Embree 3 when CMake found it.
+// median-split BVH, the reference binned-SAH BVH, and Embree (3 or 4) when CMake found it.
 // Rays: "primary" (a 512 x 384 camera framing the mesh) and "random" (origins spread over
 // 1.5 times the mesh's box, directions uniform on the sphere), each traced as closest hit
 // and as any hit (t_max = infinity). Each timed iteration traces the whole set on one thread
@@ -27,7 +27,9 @@
 
 #include <benchmark/benchmark.h>
 
-#ifdef RAYLAB_HAVE_EMBREE
+#if defined(RAYLAB_HAVE_EMBREE) && RAYLAB_HAVE_EMBREE >= 4
+#include <embree4/rtcore.h>
+#elif defined(RAYLAB_HAVE_EMBREE)
 #include <embree3/rtcore.h>
 #endif
 
@@ -37,6 +39,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <map>
 #include <memory>
 #include <string>
@@ -171,7 +174,8 @@ void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std
   TriangleContext context{tree.corners.data(), {}};
   const PrimitiveIntersector intersector{&test_triangle, &context};
   for (std::size_t i = begin; i < end; ++i) {
-    const std::optional<BvhHit> hit = intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
+    // Not const: DoNotOptimize(const T&) is deprecated since Google Benchmark 1.8.
+    std::optional<BvhHit> hit = intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
     if (t_out) t_out[i] = hit ? hit->t_hit : kInfinity;
     benchmark::DoNotOptimize(hit);
   }
@@ -196,7 +200,7 @@ void trace_brute_force(const TestMesh& mesh, const std::vector<Ray>& rays, bool 
   }
 }
 
-// ---- Embree 3 -----------------------------------------------------------------------------
+// ---- Embree 3 or 4 ------------------------------------------------------------------------
 
 #ifdef RAYLAB_HAVE_EMBREE
 struct EmbreeScene {
@@ -242,8 +246,10 @@ void build_embree(EmbreeScene& out, RTCDevice device, const TestMesh& mesh) {
 
 void trace_embree(const EmbreeScene& embree, const std::vector<Ray>& rays, std::size_t begin,
                   std::size_t end, bool any_hit, float* t_out) {
-  RTCIntersectContext context;
+#if RAYLAB_HAVE_EMBREE < 4
+  RTCIntersectContext context;  // Embree 3 only; Embree 4's default arguments do the same
   rtcInitIntersectContext(&context);
+#endif
   for (std::size_t i = begin; i < end; ++i) {
     const Ray& ray = rays[i];
     RTCRayHit query;
@@ -261,12 +267,20 @@ void trace_embree(const EmbreeScene& embree, const std::vector<Ray>& rays, std::
     query.ray.flags = 0;
     float t = kInfinity;
     if (any_hit) {
+#if RAYLAB_HAVE_EMBREE >= 4
+      rtcOccluded1(embree.scene, &query.ray);
+#else
       rtcOccluded1(embree.scene, &context, &query.ray);
+#endif
       if (query.ray.tfar < 0.0f) t = 0.0f;  // occluded: Embree sets tfar to -infinity
     } else {
       query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+#if RAYLAB_HAVE_EMBREE >= 4
+      rtcIntersect1(embree.scene, &query);
+#else
       rtcIntersect1(embree.scene, &context, &query);
+#endif
       if (query.hit.geomID != RTC_INVALID_GEOMETRY_ID) t = query.ray.tfar;
     }
     if (t_out) t_out[i] = t;
@@ -298,6 +312,18 @@ void parallel_for_chunks(std::size_t count, int threads, TraceChunk&& trace_chun
 
 // ---- Collecting Google Benchmark's results for the summary ------------------------------
 
+// A run that stopped with an error: Google Benchmark 1.7 (Debian 12) says so in
+// Run::error_occurred, 1.8 and later (Debian 13) in Run::skipped. The overload whose member
+// exists is the one that compiles.
+template <typename BenchmarkRun>
+auto run_failed(const BenchmarkRun& run, int) -> decltype(static_cast<bool>(run.skipped)) {
+  return static_cast<bool>(run.skipped);
+}
+template <typename BenchmarkRun>
+auto run_failed(const BenchmarkRun& run, long) -> decltype(static_cast<bool>(run.error_occurred)) {
+  return static_cast<bool>(run.error_occurred);
+}
+
 class CollectingReporter : public benchmark::ConsoleReporter {
  public:
   void ReportRuns(const std::vector<Run>& runs) override {
@@ -305,7 +331,7 @@ class CollectingReporter : public benchmark::ConsoleReporter {
     // Keyed by the registered name (without "/iterations:3", "/real_time"); with
     // --benchmark_repetitions the fastest repetition is kept: the least disturbed by load.
     for (const Run& run : runs) {
-      if (run.error_occurred || run.iterations <= 0 || run.run_type != Run::RT_Iteration) continue;
+      if (run_failed(run, 0) || run.iterations <= 0 || run.run_type != Run::RT_Iteration) continue;
       const double s = run.real_accumulated_time / static_cast<double>(run.iterations);
       const auto [it, inserted] = seconds_per_iteration.emplace(run.run_name.function_name, s);
       if (!inserted) it->second = std::min(it->second, s);

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -135,12 +136,13 @@ void run_error(int repetitions, const std::string& output) {
     RenderSettings settings;
     settings.max_depth = 16;
     const Image reference = render(scene, settings);
+    const std::string scene_label = scene_name;  // GCC 14 cannot see that scene_name is never null
     auto report = [&](const char* sweep, int setting, const Timed& timed) {
       const Image compared = timed.image.width() == reference.width()
                                  ? timed.image
                                  : resize_image(timed.image, reference.width(), reference.height());
       const ImageDifference d = compare_images(compared, reference, 0.05f);
-      std::printf("%-8s %-10s %8d %8.4fs %11.5f %8.2f %9.3f%%\n", scene_name, sweep, setting, timed.seconds, d.rms_error,
+      std::printf("%-8s %-10s %8d %8.4fs %11.5f %8.2f %9.3f%%\n", scene_label.c_str(), sweep, setting, timed.seconds, d.rms_error,
                   d.psnr, 100.0 * d.fraction_over_threshold);
       csv << scene_name << ',' << sweep << ',' << setting << ',' << timed.seconds << ',' << d.rms_error << ','
           << d.psnr << ',' << d.fraction_over_threshold << '\n';

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>

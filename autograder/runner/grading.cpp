@@ -3,7 +3,9 @@
 #include "raylab/stage_table.h"
 
 #include <algorithm>
+#include <cctype>
 #include <set>
+#include <stdexcept>
 
 namespace raylab::grading {
 namespace {
@@ -60,6 +62,35 @@ std::set<int>& incomplete_dependencies() {
   return stages;
 }
 
+// A value that is not a number reads as what it is in every failure text, hint and note of
+// every stage: the stream's and std::to_string's "nan", "-nan", "inf", "-inf" (whole words)
+// become "NaN" and "infinity" / "-infinity".
+std::string name_non_finite(const std::string& text) {
+  auto is_word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const bool word_start = i == 0 || !is_word_char(text[i - 1]);
+    const std::size_t sign = word_start && (text[i] == '-' || text[i] == '+') ? 1 : 0;
+    const bool starts_word = word_start && (sign == 0 || i + 1 < text.size());
+    const std::string rest = starts_word ? text.substr(i + sign, 3) : std::string();
+    const std::size_t end = i + sign + 3;
+    if ((rest == "nan" || rest == "inf") && (end >= text.size() || !is_word_char(text[end]))) {
+      if (rest == "nan") out += "NaN";
+      else out += (text[i] == '-' ? "-infinity" : "infinity");
+      i = end;
+      continue;
+    }
+    out += text[i++];
+  }
+  return out;
+}
+std::vector<std::string> name_non_finite(const std::vector<std::string>& texts) {
+  std::vector<std::string> out;
+  for (const std::string& text : texts) out.push_back(name_non_finite(text));
+  return out;
+}
+
 // Hands each test's result to the judge's callbacks (in the judge's own process).
 class Recorder : public ::testing::EmptyTestEventListener {
  public:
@@ -76,15 +107,15 @@ class Recorder : public ::testing::EmptyTestEventListener {
     if (!result.failed()) return;
     std::string message = result.message();
     if (message.size() > 1500) message = message.substr(0, 1500) + " [...]";
-    messages_.push_back(message);
+    messages_.push_back(name_non_finite(message));
   }
 
   void OnTestEnd(const ::testing::TestInfo& info) override {
     bool not_implemented = false;
     for (const std::string& message : messages_)
       not_implemented = not_implemented || message.find("is not implemented yet") != std::string::npos;
-    on_end_(TestRecord{full_name(info), info.result()->Passed(), not_implemented, messages_, current().hints,
-                       current().notes});
+    on_end_(TestRecord{full_name(info), info.result()->Passed(), not_implemented, messages_, name_non_finite(current().hints),
+                       name_non_finite(current().notes)});
   }
 
  private:

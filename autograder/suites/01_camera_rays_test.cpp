@@ -4,8 +4,11 @@
 
 #include "raylab/stages/01_camera_rays.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace raylab::grading {
 namespace {
@@ -29,65 +32,249 @@ bool same_direction(const glm::vec3& a, const glm::vec3& b, float tolerance) {
   return glm::all(glm::lessThanEqual(glm::abs(a / la - b / lb), glm::vec3(tolerance)));
 }
 
-// Names the common mistake that turns `expected` into `got`, if one does. Every candidate is
-// built from the expected ray's screen position (x_s, y_s) on the plane one unit in front.
-void diagnose(const Camera& camera, int pixel_x, int pixel_y, const glm::vec3& got, const glm::vec3& expected) {
-  if (!is_finite(got)) {
-    add_hint("the direction has NaN or infinite components: check for a division by zero");
-    return;
-  }
-  const glm::vec3 forward = glm::normalize(camera.look_at - camera.position);
-  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-  const glm::vec3 true_up = glm::cross(right, forward);
-  const glm::vec3 e = glm::normalize(expected);
-  const float x_s = glm::dot(e, right) / glm::dot(e, forward);
-  const float y_s = glm::dot(e, true_up) / glm::dot(e, forward);
-  const float aspect = camera.aspect_ratio();
-  const float half = degrees_to_radians(camera.fov_y_degrees) * 0.5f;
-  const float scale = std::tan(half);
-  auto direction = [&](float x, float y) { return x * right + y * true_up + forward; };
-  const float pixel_w = 2.0f * aspect * scale / static_cast<float>(camera.width);
-  const float pixel_h = 2.0f * scale / static_cast<float>(camera.height);
-  (void)pixel_x;
-  (void)pixel_y;
+// ---- Diagnosis from a fitted model of the student's screen mapping -----------------------
+//
+// A handful of the student's rays, each turned back into the point where it crosses the image
+// plane one unit in front of the eye (screen_x = d.right / d.forward, screen_y likewise with
+// true_up), tell what the code computes on each axis. The handout's mapping is linear in the
+// pixel index:
+//   screen_x = extent_x * (2 (pixel_x + centre_x) / width  - 1)   extent_x = aspect * scale
+//   screen_y = extent_y * (2 (pixel_y + centre_y) / height - 1)   extent_y = -scale (y flipped)
+// with centre = 0.5. A least-squares fit of screen = slope * pixel + intercept (plus the other
+// axis's pixel index, which must not matter) recovers the student's extent and centre on each
+// axis; comparing them with the expected ones names every mistake at once: a factor 2, a
+// missing pixel centre, the aspect ratio, the field of view, a flipped axis. A fit that does not
+// match a flat plane means the basis (forward, right, true_up) is wrong.
 
-  if (same_direction(got, expected, kDirectionTolerance) && std::fabs(glm::length(got) - 1.0f) > 1e-3f) {
-    add_hint("direction not normalised: the direction is right but its length is " + std::to_string(glm::length(got)) +
-             "; return normalize(...) (docs/01_camera_rays.md, section 2)");
+// Rays on a 5 x 5 grid of pixels, corners and centre included.
+constexpr int kFitSamples = 5;
+// The probe camera has the failing camera's position and orientation, and a size and field of
+// view chosen so that no two combinations of the mistakes below give the same extents (the
+// closest two differ by 1.7%): aspect 1.6, scale = tan(25 degrees).
+constexpr int kProbeWidth = 48, kProbeHeight = 30;
+constexpr float kProbeFovDegrees = 50.0f;
+constexpr double kExtentTolerance = 2e-3;  // relative; a float computation is good to 1e-5
+constexpr double kCentreTolerance = 0.02;  // pixels
+
+struct AxisFit {
+  double extent = 0.0;       // signed half-size of the screen on this axis
+  double centre = 0.0;       // where in the pixel the ray goes: 0.5 is the centre
+  double other_axis = 0.0;   // change per pixel along the other axis (0 for a right basis)
+};
+
+struct ScreenFit {
+  bool finite = true, in_front = true, flat = true;
+  glm::ivec2 non_finite_pixel{0, 0};
+  AxisFit x, y;
+};
+
+// Least squares of value = c0 + c1 * a + c2 * b over the samples (normal equations, 3 x 3).
+glm::dvec3 fit_plane(const std::vector<glm::dvec3>& samples /* a, b, value */) {
+  glm::dmat3 normal(0.0);
+  glm::dvec3 rhs(0.0);
+  for (const glm::dvec3& s : samples) {
+    const glm::dvec3 basis(1.0, s.x, s.y);
+    normal += glm::outerProduct(basis, basis);
+    rhs += basis * s.z;
+  }
+  return glm::inverse(normal) * rhs;
+}
+
+ScreenFit fit_screen_mapping(const Camera& camera) {
+  const glm::dvec3 forward = glm::normalize(glm::dvec3(camera.look_at - camera.position));
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(camera.up)));
+  const glm::dvec3 true_up = glm::cross(right, forward);
+  ScreenFit fit;
+  std::vector<glm::dvec3> x_samples, y_samples;
+  for (int row = 0; row < kFitSamples; ++row)
+    for (int column = 0; column < kFitSamples; ++column) {
+      const int pixel_x = column * (camera.width - 1) / (kFitSamples - 1);
+      const int pixel_y = row * (camera.height - 1) / (kFitSamples - 1);
+      const glm::vec3 direction = generate_camera_ray(camera, pixel_x, pixel_y).direction;
+      if (!is_finite(direction)) {
+        fit.finite = false;
+        fit.non_finite_pixel = {pixel_x, pixel_y};
+        return fit;
+      }
+      const glm::dvec3 d(direction);
+      const double along = glm::dot(d, forward);
+      if (!(along > 1e-6 * glm::length(d))) {
+        fit.in_front = false;
+        return fit;
+      }
+      x_samples.emplace_back(pixel_x, pixel_y, glm::dot(d, right) / along);
+      y_samples.emplace_back(pixel_y, pixel_x, glm::dot(d, true_up) / along);
+    }
+  auto axis = [](const std::vector<glm::dvec3>& samples, int size, bool& flat) {
+    const glm::dvec3 c = fit_plane(samples);
+    AxisFit a;
+    a.extent = c[1] * size / 2.0;
+    a.centre = c[1] != 0.0 ? c[0] / c[1] + size / 2.0 : 0.0;
+    a.other_axis = c[2];
+    double worst = 0.0;
+    for (const glm::dvec3& s : samples) worst = std::max(worst, std::fabs(c[0] + c[1] * s.x + c[2] * s.y - s.z));
+    if (!(worst <= 1e-3 * (std::fabs(c[0]) + std::fabs(a.extent) + 1e-3))) flat = false;
+    return a;
+  };
+  fit.x = axis(x_samples, camera.width, fit.flat);
+  fit.y = axis(y_samples, camera.height, fit.flat);
+  return fit;
+}
+
+bool close_ratio(double got, double expected) { return std::fabs(got - expected) <= kExtentTolerance * std::fabs(expected); }
+
+// The hints for the extents: every combination of the screen-size, field-of-view and aspect
+// mistakes and the flips is tried; the one that explains both axes with the fewest mistakes wins.
+std::vector<std::string> name_extent_mistakes(const Camera& camera, const ScreenFit& fit) {
+  const double aspect = static_cast<double>(camera.width) / camera.height;
+  const double half_angle = glm::radians(static_cast<double>(camera.fov_y_degrees)) / 2.0;
+  const double scale = std::tan(half_angle);
+  const double degrees = camera.fov_y_degrees;
+  const double ratio_x = fit.x.extent / (aspect * scale), ratio_y = fit.y.extent / -scale;
+  struct Mistake {
+    double x, y;         // what it multiplies each axis's extent by
+    const char* hint;    // nullptr: no mistake
+  };
+  const Mistake sizes[] = {
+      {1.0, 1.0, nullptr},
+      {0.5, 0.5, "half-size screen: the factor 2 of `2 ndc - 1` is missing, so screen coordinates span [-0.5, 0.5] "
+                 "instead of [-1, 1] before aspect and scale, so everything looks twice as big (docs/01_camera_rays.md, section 2)"},
+  };
+  const Mistake fovs[] = {
+      {1.0, 1.0, nullptr},
+      {std::tan(2.0 * half_angle) / scale, std::tan(2.0 * half_angle) / scale, "field of view not halved: scale = tan(fov_y / 2), half the angle"},
+      {std::tan(degrees / 2.0) / scale, std::tan(degrees / 2.0) / scale,
+       "field of view still in degrees: std::tan takes radians, use degrees_to_radians(camera.fov_y_degrees)"},
+      {std::tan(degrees) / scale, std::tan(degrees) / scale, "field of view in degrees and not halved: scale = tan(degrees_to_radians(fov_y) / 2)"},
+      {1.0 / scale, 1.0 / scale, "field of view ignored: multiply the screen coordinates by scale = tan(fov_y / 2)"},
+  };
+  const Mistake aspects[] = {
+      {1.0, 1.0, nullptr},
+      {1.0 / aspect, 1.0, "aspect ratio missing: multiply screen_x by aspect = width / height"},
+      {1.0 / (aspect * aspect), 1.0, "aspect ratio inverted: aspect = width / height, not height / width"},
+      {1.0 / aspect, aspect, "aspect ratio applied to y instead of x: multiply screen_x (not screen_y) by width / height"},
+      {1.0, aspect, "aspect ratio applied to y as well: it multiplies screen_x only"},
+      {1.0 / aspect, 1.0 / aspect, "aspect ratio applied to y instead of x, and inverted: multiply screen_x (not screen_y) by width / height"},
+  };
+  const Mistake flips_x[] = {
+      {1.0, 1.0, nullptr},
+      {-1.0, 1.0, "picture mirrored left-right: column 0 is the LEFT edge, so screen_x = (2 ndc_x - 1) * aspect * scale, and right = cross(forward, up)"},
+  };
+  const Mistake flips_y[] = {
+      {1.0, 1.0, nullptr},
+      {1.0, -1.0, "picture upside down: row 0 is the TOP of the image, so screen_y = (1 - 2 ndc_y) * scale (docs/01_camera_rays.md, section 2)"},
+  };
+  std::vector<std::string> best;
+  bool found = false;
+  for (const Mistake& size : sizes)
+    for (const Mistake& fov : fovs)
+      for (const Mistake& aspect_mistake : aspects)
+        for (const Mistake& flip_x : flips_x)
+          for (const Mistake& flip_y : flips_y) {
+            const Mistake* parts[] = {&size, &fov, &aspect_mistake, &flip_x, &flip_y};
+            double x = 1.0, y = 1.0;
+            std::vector<std::string> hints;
+            for (const Mistake* part : parts) {
+              x *= part->x;
+              y *= part->y;
+              if (part->hint) hints.emplace_back(part->hint);
+            }
+            if (!close_ratio(ratio_x, x) || !close_ratio(ratio_y, y)) continue;
+            if (!found || hints.size() < best.size()) best = hints;
+            found = true;
+          }
+  if (found) return best;
+  // camera.up used as the up axis: perpendicular to the view but not unit length, it scales y.
+  const double up_length = glm::length(glm::dvec3(camera.up));
+  if (std::fabs(up_length - 1.0) > 1e-3 && close_ratio(ratio_x, 1.0) && close_ratio(std::fabs(ratio_y), up_length))
+    return {"camera basis wrong: screen_y comes out " + std::to_string(up_length) + " times too large, the length of "
+            "camera.up: use true_up = cross(right, forward), a unit vector, not camera.up (docs/01_camera_rays.md, section 2)"};
+  std::ostringstream out;
+  out << "screen size wrong: your screen_x spans +-" << std::fabs(fit.x.extent) << " and screen_y +-" << std::fabs(fit.y.extent)
+      << " on a " << camera.width << "x" << camera.height << " image with fov_y " << camera.fov_y_degrees
+      << " degrees, where +-" << aspect * scale << " and +-" << scale
+      << " are expected (half-width aspect * scale, half-height scale = tan(fov_y / 2); docs/01_camera_rays.md, section 2)";
+  if (fit.x.extent < 0.0) out << "; and the picture is mirrored left-right";
+  if (fit.y.extent > 0.0) out << "; and the picture is upside down (row 0 is the TOP)";
+  return {out.str()};
+}
+
+// The hints for where in the pixel the rays go, per axis.
+void name_centre_mistakes(const char* axis, const AxisFit& fit, int size, std::vector<std::string>& hints) {
+  const double centre = fit.centre;
+  if (std::fabs(centre - 0.5) <= kCentreTolerance) return;
+  if (std::fabs(centre) <= kCentreTolerance) {
+    hints.emplace_back("pixel centre missing: aim through (pixel_x + 0.5, pixel_y + 0.5), the centre of the pixel, not its corner");
     return;
   }
-  struct Candidate {
-    glm::vec3 direction;
-    const char* hint;
-  };
-  const Candidate candidates[] = {
-      {direction(x_s, -y_s), "picture upside down: row 0 is the TOP of the image, so screen_y = (1 - 2 ndc_y) * scale (docs/01_camera_rays.md, section 2)"},
-      {direction(-x_s, y_s), "picture mirrored left-right: column 0 is the LEFT edge, so screen_x = (2 ndc_x - 1) * aspect * scale, and right = cross(forward, up)"},
-      {direction(x_s / aspect, y_s * aspect), "aspect ratio applied to y instead of x: multiply screen_x (not screen_y) by width / height"},
-      {direction(x_s / (aspect * aspect), y_s), "aspect ratio inverted: aspect = width / height, not height / width"},
-      {direction(x_s / aspect, y_s), "aspect ratio missing: multiply screen_x by aspect = width / height"},
-      {direction(x_s * std::tan(2.0f * half) / scale, y_s * std::tan(2.0f * half) / scale),
-       "field of view not halved: scale = tan(fov_y / 2), half the angle"},
-      {direction(x_s * std::tan(camera.fov_y_degrees * 0.5f) / scale, y_s * std::tan(camera.fov_y_degrees * 0.5f) / scale),
-       "field of view still in degrees: std::tan takes radians, use degrees_to_radians(camera.fov_y_degrees)"},
-      {direction(x_s * std::tan(camera.fov_y_degrees) / scale, y_s * std::tan(camera.fov_y_degrees) / scale),
-       "field of view in degrees and not halved: scale = tan(degrees_to_radians(fov_y) / 2)"},
-      {direction(x_s - 0.5f * pixel_w, y_s + 0.5f * pixel_h),
-       "pixel centre missing: aim through (pixel_x + 0.5, pixel_y + 0.5), the centre of the pixel, not its corner"},
-      {direction(x_s / scale, y_s / scale), "field of view ignored: multiply the screen coordinates by scale = tan(fov_y / 2)"},
-  };
-  for (const Candidate& candidate : candidates)
-    if (same_direction(got, candidate.direction, 2e-4f)) {
-      add_hint(candidate.hint);
-      return;
-    }
+  std::ostringstream out;
+  if (std::fabs(centre - (0.5 + size / 2.0)) <= kCentreTolerance || std::fabs(centre - size / 2.0) <= kCentreTolerance) {
+    out << "screen not centred on " << axis << ": the -1 of `2 ndc - 1` (or the 1 of `1 - 2 ndc_y`) is missing, so the "
+        << "screen starts at the centre of the view instead of spanning both sides (docs/01_camera_rays.md, section 2)";
+    hints.push_back(out.str());
+    if (std::fabs(centre - size / 2.0) <= kCentreTolerance)
+      hints.emplace_back("pixel centre missing: aim through (pixel_x + 0.5, pixel_y + 0.5), the centre of the pixel, not its corner");
+    return;
+  }
+  out << "rays shifted on " << axis << ": they go through raster " << axis << " = pixel + " << centre
+      << " instead of pixel + 0.5, the pixel's centre (docs/01_camera_rays.md, section 2)";
+  hints.push_back(out.str());
+}
+
+// All the differences between the student's mapping on `camera` and the handout's; empty when
+// the fit finds none (the mistake is then somewhere else, e.g. the direction's length).
+std::vector<std::string> diagnose_mapping(const Camera& camera) {
+  const ScreenFit fit = fit_screen_mapping(camera);
+  if (!fit.finite) {
+    std::ostringstream out;
+    out << "returns NaN (the direction of pixel (" << fit.non_finite_pixel.x << ", " << fit.non_finite_pixel.y << ") of a "
+        << camera.width << "x" << camera.height << " image is not finite): check for a division by zero "
+        << "(docs/01_camera_rays.md, section 3)";
+    return {out.str()};
+  }
+  const char* basis =
+      "camera basis wrong: your rays do not go through a flat image plane in front of the eye. Use forward = "
+      "normalize(look_at - position), right = normalize(cross(forward, up)), true_up = cross(right, forward), "
+      "direction = normalize(screen_x * right + screen_y * true_up + forward) (docs/01_camera_rays.md, section 2)";
+  if (!fit.in_front) return {std::string(basis) + "; some rays point away from look_at"};
+  const double scale = std::tan(glm::radians(static_cast<double>(camera.fov_y_degrees)) / 2.0);
+  const double pixel_size = 2.0 * scale / camera.height;  // on the plane at distance 1, both axes
+  const bool mixed = std::fabs(fit.x.other_axis) > 1e-3 * pixel_size || std::fabs(fit.y.other_axis) > 1e-3 * pixel_size;
+  if (!fit.flat || mixed) return {basis};
+  std::vector<std::string> hints;
+  if (std::fabs(fit.x.extent) < 1e-9 || std::fabs(fit.y.extent) < 1e-9) {
+    hints.emplace_back(std::string("screen_") + (std::fabs(fit.x.extent) < 1e-9 ? "x" : "y") +
+                       " is the same for every pixel: integer division? (pixel_x + 0.5f) / width divides in floating "
+                       "point, pixel_x / width with two ints gives 0 (docs/01_camera_rays.md, section 3)");
+    return hints;
+  }
+  hints = name_extent_mistakes(camera, fit);
+  name_centre_mistakes("x", fit.x, camera.width, hints);
+  name_centre_mistakes("y", fit.y, camera.height, hints);
+  return hints;
+}
+
+// Names the mistakes that make the student's ray `got` differ from `expected` on `camera`.
+void diagnose(const Camera& camera, const glm::vec3& got, const glm::vec3& expected) {
+  if (hint_if_not_finite("direction", {got.x, got.y, got.z}, "check for a division by zero (docs/01_camera_rays.md, section 3)")) return;
+  Camera probe = camera;
+  probe.width = kProbeWidth;
+  probe.height = kProbeHeight;
+  probe.fov_y_degrees = kProbeFovDegrees;
+  std::vector<std::string> hints = diagnose_mapping(probe);
+  if (hints.empty()) hints = diagnose_mapping(camera);  // a mistake that shows only at this camera's size
+  for (const std::string& hint : hints) add_hint(hint);
+  const float length = glm::length(got);
+  if (hints.empty() && std::fabs(length - 1.0f) > 1e-3f && glm::length(got / length - glm::normalize(expected)) < 1e-4f)
+    add_hint("direction not normalised: the direction is right but its length is " + std::to_string(length) +
+             "; return normalize(...) (docs/01_camera_rays.md, section 2)");
 }
 
 void expect_camera_ray(const Camera& camera, int pixel_x, int pixel_y, const glm::vec3& expected_direction) {
   const Ray ray = generate_camera_ray(camera, pixel_x, pixel_y);
   const glm::vec3 expected = glm::normalize(expected_direction);
   const bool ok = glm::all(glm::lessThanEqual(glm::abs(ray.direction - expected), glm::vec3(kDirectionTolerance)));
-  if (!ok) diagnose(camera, pixel_x, pixel_y, ray.direction, expected);
+  if (!ok) diagnose(camera, ray.direction, expected);
   if (!ok) ADD_FAILURE() << "pixel (" << pixel_x << ", " << pixel_y << ") of a " << camera << ":\n  expected direction "
                   << expected << " (each component within " << kDirectionTolerance << ")\n  got               "
                   << ray.direction;
@@ -115,8 +302,8 @@ GRADED_TEST(kStage, Stage01CameraRays, TopRowLooksUpLeftColumnLooksLeft, 2) {
   // The picture must be upright: row 0 is the top, column 0 the left.
   const Camera camera = make_camera(64, 48, 60.0f);
   const Ray top_left = generate_camera_ray(camera, 0, 0);
-  if (top_left.direction.y < 0) add_hint("picture upside down: row 0 is the TOP of the image (docs/01_camera_rays.md, section 2)");
-  if (top_left.direction.x > 0) add_hint("picture mirrored left-right: column 0 is the LEFT edge");
+  if (!(top_left.direction.y > 0.0f && top_left.direction.x < 0.0f))
+    diagnose(camera, top_left.direction, glm::vec3(-camera.aspect_ratio(), 1.0f, -1.0f));
   EXPECT_GT(top_left.direction.y, 0.0f) << "the ray of pixel (0, 0), top left, must point up: got " << top_left.direction;
   EXPECT_LT(top_left.direction.x, 0.0f) << "the ray of pixel (0, 0), top left, must point left: got " << top_left.direction;
 }
@@ -192,7 +379,7 @@ GRADED_TEST(kStage, Stage01CameraRays, MatchesReferenceRays, 3) {
     const glm::vec3 got = generate_camera_ray(camera, x, y).direction;
     if (glm::all(glm::lessThanEqual(glm::abs(got - expected), glm::vec3(kDirectionTolerance)))) continue;
     if (++failures <= 3) {
-      diagnose(camera, x, y, got, expected);
+      diagnose(camera, got, expected);
       ADD_FAILURE() << "case " << c.at("id") << ", pixel (" << x << ", " << y << ") of a " << camera
                     << ":\n  expected direction " << expected << "\n  got               " << got;
     }

@@ -4,8 +4,10 @@
 
 #include "raylab/stages/02_sphere.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <vector>
 
 namespace raylab::grading {
@@ -42,7 +44,9 @@ bool assumed_unit_direction(const Ray& ray, const glm::vec3& center, float radiu
 // Names the mistake behind a wrong answer, from the answer itself.
 void diagnose(const Ray& ray, const glm::vec3& center, float radius, std::optional<float> got, std::optional<float> expected) {
   const bool origin_inside = glm::length(ray.origin - center) < radius;
-  if (got && !(*got > ray.t_min)) {
+  if (got && hint_if_not_finite("t", {*got}, "a negative discriminant is a miss: test it before std::sqrt, and divide "
+                                             "only by a = dot(d, d) (docs/02_sphere.md, section 2)")) {
+  } else if (got && !(*got > ray.t_min)) {
     add_hint("returns a hit behind the ray (t = " + std::to_string(*got) + "): only t_min < t < t_max counts (docs/02_sphere.md, section 2)");
   } else if (got && !(*got < ray.t_max)) {
     add_hint("ignores t_max: a hit at t = " + std::to_string(*got) + " is beyond t_max = " + std::to_string(ray.t_max));

@@ -4,8 +4,10 @@
 
 #include "raylab/stages/03_triangle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 
 namespace raylab::grading {
 namespace {
@@ -23,9 +25,13 @@ bool same_hit(const TriangleHit& a, const TriangleHit& b) {
   return close(a.t_hit, b.t_hit) && close(a.barycentric_b1, b.barycentric_b1) && close(a.barycentric_b2, b.barycentric_b2);
 }
 
+constexpr const char* kZeroDeterminant =
+    "a zero determinant (parallel ray or degenerate triangle) must be a miss, not a division";
+
 void diagnose(const Ray& ray, std::optional<TriangleHit> got, std::optional<TriangleHit> expected, bool back_face) {
-  if (got && !(std::isfinite(got->t_hit) && std::isfinite(got->barycentric_b1) && std::isfinite(got->barycentric_b2))) {
-    add_hint("returns NaN or infinity: a zero determinant (parallel ray or degenerate triangle) must be a miss, not a division");
+  if (got && (hint_if_not_finite("t_hit", {got->t_hit}, kZeroDeterminant) ||
+              hint_if_not_finite("barycentric_b1", {got->barycentric_b1}, kZeroDeterminant) ||
+              hint_if_not_finite("barycentric_b2", {got->barycentric_b2}, kZeroDeterminant))) {
   } else if (got && !(got->t_hit > ray.t_min)) {
     add_hint("accepts a hit behind the ray (t = " + std::to_string(got->t_hit) + "): only t_min < t < t_max counts");
   } else if (got && !(got->t_hit < ray.t_max)) {

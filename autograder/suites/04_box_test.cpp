@@ -4,6 +4,7 @@
 
 #include "raylab/stages/04_box.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -26,9 +27,8 @@ bool box_beyond_t_max(const Ray& ray, std::optional<float> got) { return got && 
 
 void diagnose(const Ray& ray, std::optional<float> got, std::optional<float> expected) {
   const bool zero_component = ray.direction.x == 0.0f || ray.direction.y == 0.0f || ray.direction.z == 0.0f;
-  if (got && !std::isfinite(*got)) {
-    add_hint("returns NaN or infinity: with a zero direction component, (bound - origin) * inverse can be 0 * inf = NaN; "
-             "order the comparisons so that NaN loses (docs/04_box.md, section 3)");
+  if (got && hint_if_not_finite("t_enter", {*got}, "with a zero direction component, (bound - origin) * inverse can be "
+                                                    "0 * inf = NaN; order the comparisons so that NaN loses (docs/04_box.md, section 3)")) {
   } else if (got && !expected && *got < ray.t_min) {
     add_hint("accepts a box behind the ray: require t_exit >= t_min (the whole box is behind when t_exit < t_min)");
   } else if (got && !expected && !std::isinf(ray.t_max) && box_beyond_t_max(ray, got)) {

@@ -23,6 +23,7 @@
 #include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/04_box.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <exception>

@@ -6,12 +6,24 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace raylab::grading {
+
+bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const std::string& advice) {
+  for (float value : results) {
+    if (std::isfinite(value)) continue;
+    const std::string name = std::isnan(value) ? "NaN" : value > 0.0f ? "infinity" : "-infinity";
+    add_hint("returns " + std::string(std::isnan(value) ? "NaN" : "infinity") + " (" + what + " = " + name + "): " + advice);
+    return true;
+  }
+  return false;
+}
 
 nlohmann::json to_json(const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <string>
 
 namespace raylab::grading {
@@ -19,6 +20,12 @@ namespace raylab::grading {
 // with a stream per purpose (testkit::stream_of) and the helpers of raylab/testkit/random_values.h.
 // Draw one value per statement (or in a braced list): the order in which a function's
 // arguments are evaluated differs between compilers, and the cases must not.
+
+// The first check of every stage's diagnosis: when one of the student's `results` is not a
+// number, adds the hint "returns NaN (<what> = NaN): <advice>" (or "returns infinity") and
+// returns true, so no later hint reads a NaN as a wrong number ("a hit behind the ray").
+// Failure texts need nothing: the grader prints every non-finite value as NaN or infinity.
+bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const std::string& advice);
 
 nlohmann::json to_json(const glm::vec3& v);
 glm::vec3 vec3_from_json(const nlohmann::json& value);

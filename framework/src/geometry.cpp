@@ -6,10 +6,14 @@
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace raylab {
 
@@ -25,12 +29,13 @@ struct SceneGeometry::Query {
 namespace {
 
 // One line, once per process, however many scenes or threads: the student should see it,
-// not drown in it.
-void report_fallback_once(const std::string& stage_id) {
+// not drown in it. `estimate` (how slow, and what to do about it) is computed only then.
+template <typename Estimate>
+void report_fallback_once(const std::string& stage_id, Estimate&& estimate) {
   static std::atomic<bool> reported{false};
   if (!reported.load(std::memory_order_relaxed) && !reported.exchange(true))
-    std::fprintf(stderr, "raylab: stage %s not implemented yet: testing every primitive (slow)\n",
-                 stage_id.c_str());
+    std::fprintf(stderr, "raylab: stage %s not implemented yet: testing every primitive (slow)%s\n",
+                 stage_id.c_str(), estimate().c_str());
 }
 
 // A student's build_bvh may return a tree that would send the traversal out of its arrays:
@@ -135,6 +140,43 @@ bool SceneGeometry::record_is_of_object(const HitRecord& record, std::uint32_t o
   const MeshPart& mesh = meshes_[object - spheres_.size()];
   return record.kind == Kind::Triangle && record.index >= mesh.first_triangle &&
          record.index - mesh.first_triangle < mesh.triangle_count;
+}
+
+// Every ray tests every primitive: the render takes about pixels x rays per pixel x one pass
+// over all primitives / threads. One pass is timed here, on the first ray, with the
+// student's own sphere and triangle functions; rays per pixel is taken as 1 + the number of
+// lights (a camera ray and a shadow ray per light), which reflections and refractions only
+// add to: the estimate is a lower bound. Said before the render starts, with a smaller
+// --width/--height that would take a few seconds.
+std::string SceneGeometry::brute_force_estimate(const Ray& sample) const {
+  const std::size_t primitives = spheres_.size() + triangles_.size();
+  const auto start = std::chrono::steady_clock::now();
+  std::size_t passes = 0, hits = 0;
+  double seconds = 0.0;
+  do {  // at least 2 ms of work, so that the clock's resolution does not matter
+    for (const Sphere& sphere : spheres_) hits += intersect_ray_sphere(sample, sphere.center, sphere.radius) ? 1 : 0;
+    for (const Triangle& tri : triangles_) hits += intersect_triangle_(sample, tri.p0, tri.p1, tri.p2) ? 1 : 0;
+    ++passes;
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  } while (seconds < 2e-3 && passes < 100000);
+  (void)hits;  // counted only so that the tests are not optimised away
+  const double pass_seconds = seconds / static_cast<double>(passes);
+  const double pixels = static_cast<double>(scene_.camera.width) * scene_.camera.height;
+  const double rays = pixels * (1.0 + static_cast<double>(scene_.lights.size()));
+  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  const double estimate = rays * pass_seconds / threads;
+  if (estimate < 10.0) return "";
+  // A size that would take about 5 s: both sides divided by the same factor.
+  const int factor = static_cast<int>(std::ceil(std::sqrt(estimate / 5.0)));
+  char text[400];
+  std::snprintf(text, sizeof text,
+                ": %zu primitives for every ray, so this %dx%d render will take at least %.0f s on %u threads "
+                "(at least %.0f rays, %.2f ms per ray); for a quick look render at --width %d --height %d "
+                "(about %.0f s), or write stage 05_bvh",
+                primitives, scene_.camera.width, scene_.camera.height, estimate, threads, rays, pass_seconds * 1e3,
+                std::max(1, scene_.camera.width / factor), std::max(1, scene_.camera.height / factor),
+                estimate / (factor * factor));
+  return text;
 }
 
 std::size_t SceneGeometry::bvh_count() const {
@@ -247,7 +289,7 @@ std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& que
   // Few objects: each in turn (spheres first, as the brute force always did), t_max shrinking.
   // Written out flat, without the per-object dispatch: this is also the whole render of a
   // small scene, and of every scene while stage 5 is a stub.
-  if (!fallback_stage_.empty()) report_fallback_once(fallback_stage_);
+  if (!fallback_stage_.empty()) report_fallback_once(fallback_stage_, [&] { return brute_force_estimate(ray); });
   if (query.any_hit) return occluded_by_any_object(ray, query) ? std::optional<float>(ray.t_min) : std::nullopt;
   // The best hit is kept in locals (registers) and written to the record once, at the end.
   // (Array pointers and sizes in locals: the stage functions are opaque calls, after which

@@ -1,6 +1,7 @@
 # Runs one grader and checks its results.json (see CMakeLists.txt here for the modes).
 cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
-# Variables: GRADER, MODE (full | zero | broken | contained | lost), EXPECT_STAGE, EXPECT_HINT, ALSO_AFFECTED
+# Variables: GRADER, MODE (full | zero | broken | contained | lost), EXPECT_STAGE, EXPECT_HINT (regexes joined by "&&", each of
+# which must match), ALSO_AFFECTED
 # (optional regex of later tests that may lose points too), TIMEOUT, WORK, REFERENCE (the
 # reference data folder, which no grading may change), and for the hostile submissions:
 #   HONEST         a grader of the same code without the attack: every test must score the same
@@ -144,8 +145,14 @@ endforeach()
 if((MODE STREQUAL "broken" OR MODE STREQUAL "contained") AND NOT EXPECT_STAGE IN_LIST stages)
   list(APPEND problems "no results for ${EXPECT_STAGE}")
 endif()
-if((MODE STREQUAL "broken" OR MODE STREQUAL "lost") AND NOT output MATCHES "${EXPECT_HINT}")
-  list(APPEND problems "the output does not name the mistake: no match for '${EXPECT_HINT}'")
+if(MODE STREQUAL "broken" OR MODE STREQUAL "lost")
+  # EXPECT_HINT: one regex, or several joined by "&&", each of which must match (every mistake named).
+  string(REPLACE "&&" ";" expected_hints "${EXPECT_HINT}")
+  foreach(hint IN LISTS expected_hints)
+    if(NOT output MATCHES "${hint}")
+      list(APPEND problems "the output does not name the mistake: no match for '${hint}'")
+    endif()
+  endforeach()
 endif()
 if(FORBID AND output MATCHES "${FORBID}")
   list(APPEND problems "the output says '${CMAKE_MATCH_0}', which blames what is right")

@@ -7,6 +7,8 @@
 // intersect_bvh or intersect_ray_box is still a stub (throws NotImplemented), the geometry
 // tests every primitive and says so once per process on stderr, at the first query:
 // "raylab: stage 05_bvh not implemented yet: testing every primitive (slow)": a student who has not reached stage 5 can still render.
+// When the render will take more than 10 s, the same line says how long at least (timed on a
+// sample of the student's own tests) and suggests a smaller --width/--height.
 #pragma once
 
 #include "raylab/ray.h"
@@ -94,6 +96,7 @@ class SceneGeometry {
   struct Query;
 
   void build_bvhs();
+  std::string brute_force_estimate(const Ray& sample) const;  // ": ... will take at least N s ..." or ""
   std::optional<float> intersect_objects(const Ray& ray, Query& query) const;
   bool occluded_by_any_object(const Ray& ray, Query& query) const;
   std::optional<float> intersect_object(std::uint32_t object, const Ray& ray, Query& query) const;

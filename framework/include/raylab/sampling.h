@@ -1,6 +1,6 @@
 // Warps from uniform random numbers in [0, 1)^2 to points and directions, each with its
-// density: what BSDFs and lights sample with. (The Monte Carlo stages, issue 11, have
-// students write these; the framework's own versions live here.)
+// density: what BSDFs and lights sample with. (The Monte Carlo stages planned for the
+// course have students write these; the framework's own versions live here.)
 #pragma once
 
 #include "raylab/math.h"
