@@ -134,8 +134,9 @@ TEST(Render, MoreSamplesPerPixelSmoothEdgesAndKeepFlatAreasExact) {
   const Image one_sample = render(scene, settings);
   settings.samples_per_pixel = 9;
   settings.track_variance = true;
-  const Film film = render_film(scene, settings);
-  const Image nine = film.mean(), variance = film.variance_of_mean();
+  const RenderOutput output = render_with_variance(scene, settings);
+  const Image& nine = output.mean;
+  const Image& variance = output.variance_of_mean;
   settings.threads = 1;
   const Image nine_one_thread = render(scene, settings);
   EXPECT_EQ(nine.pixels(), nine_one_thread.pixels()) << "9 spp: 1 and 2 threads differ";

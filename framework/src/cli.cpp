@@ -54,10 +54,10 @@ int run_render(const RenderOptions& options) {
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
   settings.show_progress = !options.quiet && isatty(fileno(stderr));
   RenderStats stats;
-  const Film film = render_film(scene, settings, &stats);
-  const Image image = film.mean();
+  const RenderOutput output = render_with_variance(scene, settings, &stats);
+  const Image& image = output.mean;
   write_image(image, options.output_path);
-  if (!options.variance_path.empty()) write_image(film.variance_of_mean(), options.variance_path);
+  if (!options.variance_path.empty()) write_image(output.variance_of_mean, options.variance_path);
   if (!options.quiet)
     std::fprintf(stderr, "rendered %s: %dx%d at %d spp in %.3f s on %d threads (%.2f Mrays/s) -> %s\n",
                  options.scene_path.c_str(), image.width(), image.height(), settings.samples_per_pixel, stats.seconds,

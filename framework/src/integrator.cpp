@@ -19,12 +19,4 @@ const char* integrator_name(IntegratorKind kind) {
   return "unknown";
 }
 
-glm::vec3 Integrator::li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats) const {
-  switch (kind_) {
-    case IntegratorKind::Whitted: return whitted_li(context, ray, sampler, stats);
-    case IntegratorKind::DirectLight: return direct_light_li(context, ray, sampler, stats);
-  }
-  return glm::vec3(0.0f);
-}
-
 }  // namespace raylab

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -46,18 +47,21 @@ void print_progress(std::size_t done, std::size_t total, double seconds, std::ui
 
 }  // namespace
 
-Film render_film(const Scene& scene, const RenderSettings& settings, RenderStats* stats) {
+RenderOutput render_with_variance(const Scene& scene, const RenderSettings& settings, RenderStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   if (settings.samples_per_pixel < 1 || settings.samples_per_pixel > kMaxSamplesPerPixel)
     throw std::invalid_argument("samples per pixel must be in [1, " + std::to_string(kMaxSamplesPerPixel) +
                                 "], got " + std::to_string(settings.samples_per_pixel));
   const Camera& camera = scene.camera;
-  Film film(camera.width, camera.height, settings.track_variance);
+  RenderOutput output;
+  output.mean = Image(camera.width, camera.height);
+  if (settings.track_variance) output.variance_of_mean = Image(camera.width, camera.height);
   const SceneGeometry geometry(scene, settings.skips.no_bvh_for_small_sets ? Acceleration::Bvh : Acceleration::BvhAlways,
                                settings.triangle_test);
   const RenderContext context(scene, geometry, settings.max_depth, settings.skips);
   const Integrator integrator(settings.integrator);
   const int samples_per_pixel = settings.samples_per_pixel;
+  const bool one_plain_sample = samples_per_pixel == 1 && !settings.track_variance;
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
 
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
@@ -78,13 +82,25 @@ Film render_film(const Scene& scene, const RenderSettings& settings, RenderStats
         const Tile& tile = tiles[t];
         ShadingStats tile_stats;
         Sampler sampler(samples_per_pixel, settings.seed);
+        std::optional<Film> film;
+        if (!one_plain_sample) film.emplace(tile.x1 - tile.x0, tile.y1 - tile.y0, settings.track_variance);
         for (int y = tile.y0; y < tile.y1; ++y)
-          for (int x = tile.x0; x < tile.x1; ++x)
+          for (int x = tile.x0; x < tile.x1; ++x) {
+            if (one_plain_sample) {  // the mean of one sample is that sample: no film needed
+              sampler.start_pixel_sample(x, y, 0);
+              const Ray ray = generate_camera_ray(camera, x, y, sampler.get_pixel_2d());
+              output.mean.at(x, y) = integrator.li(context, ray, sampler, tile_stats);
+              continue;
+            }
             for (int sample = 0; sample < samples_per_pixel; ++sample) {
               sampler.start_pixel_sample(x, y, sample);
               const Ray ray = generate_camera_ray(camera, x, y, sampler.get_pixel_2d());
-              film.add_sample(x, y, integrator.li(context, ray, sampler, tile_stats));
+              film->add_sample(x - tile.x0, y - tile.y0, integrator.li(context, ray, sampler, tile_stats));
             }
+            output.mean.at(x, y) = film->mean_at(x - tile.x0, y - tile.y0);
+            if (settings.track_variance)
+              output.variance_of_mean.at(x, y) = film->variance_of_mean_at(x - tile.x0, y - tile.y0);
+          }
         rays += tile_stats.rays();
         {
           std::lock_guard<std::mutex> lock(work_mutex);
@@ -117,11 +133,11 @@ Film render_film(const Scene& scene, const RenderSettings& settings, RenderStats
     stats->work = total_work;
     stats->threads = thread_count;
   }
-  return film;
+  return output;
 }
 
 Image render(const Scene& scene, const RenderSettings& settings, RenderStats* stats) {
-  return render_film(scene, settings, stats).mean();
+  return render_with_variance(scene, settings, stats).mean;
 }
 
 }  // namespace raylab

@@ -47,15 +47,11 @@ Sampler::Sampler(int samples_per_pixel, std::uint64_t seed) : samples_per_pixel_
   grid_rows_ = (samples_per_pixel + grid_columns_ - 1) / grid_columns_;
 }
 
-void Sampler::start_pixel_sample(int pixel_x, int pixel_y, int sample_index) {
-  const std::uint64_t pixel = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(pixel_y)) << 32u) |
-                              static_cast<std::uint32_t>(pixel_x);
-  pixel_key_ = mix_bits(pixel ^ mix_bits(seed_ + 0x9e3779b97f4a7c15ULL));
-  sample_index_ = static_cast<std::uint32_t>(sample_index);
-  dimension_ = 0;
-}
-
 std::uint64_t Sampler::dimension_key() {
+  if (!pixel_key_ready_) {
+    pixel_key_ = mix_bits(pixel_ ^ mix_bits(seed_ + 0x9e3779b97f4a7c15ULL));
+    pixel_key_ready_ = true;
+  }
   return mix_bits(pixel_key_ + static_cast<std::uint64_t>(dimension_++) * 0x9e3779b97f4a7c15ULL);
 }
 
@@ -84,14 +80,6 @@ glm::vec2 Sampler::get_2d() {
   const float y = (static_cast<float>(row) + (static_cast<float>(fine_y) + jitter_y) / static_cast<float>(m)) /
                   static_cast<float>(n);
   return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
-}
-
-glm::vec2 Sampler::get_pixel_2d() {
-  if (samples_per_pixel_ == 1) {
-    ++dimension_;  // the same dimensions follow at any sample count
-    return glm::vec2(0.5f);
-  }
-  return get_2d();
 }
 
 }  // namespace raylab

@@ -5,10 +5,6 @@
 
 namespace raylab {
 
-glm::vec3 reflect(const glm::vec3& incident, const glm::vec3& normal) {
-  return incident - 2.0f * glm::dot(incident, normal) * normal;
-}
-
 glm::vec3 refract(const glm::vec3& incident, const glm::vec3& normal, float ior) {
   float cos_incident = std::clamp(glm::dot(incident, normal), -1.0f, 1.0f);
   float eta_incident = 1.0f, eta_transmitted = ior;

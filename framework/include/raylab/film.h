@@ -2,8 +2,9 @@
 // asked for, the variance of that mean per pixel (how far the image may be from its
 // expectation: the grader's tests through the noise, and adaptive sampling, read it).
 //
-// Each pixel is written by one thread at a time (the renderer's tiles), in sample order, so
-// the result is the same at any thread count. Sums are kept in double: a mean of many
+// The renderer keeps one film per tile (render.cpp): each pixel is written by one thread, in
+// sample order, so the result is the same at any thread count, and the memory beyond the
+// image is one tile's. Sums are kept in double: a mean of many
 // float samples loses nothing, and a mean of one sample is that sample exactly.
 #pragma once
 
@@ -37,6 +38,14 @@ class Film {
   }
 
   std::uint32_t sample_count(int x, int y) const { return counts_[index(x, y)]; }
+  // The mean of pixel (x, y)'s samples (black if it has none).
+  glm::vec3 mean_at(int x, int y) const {
+    const std::size_t i = index(x, y);
+    if (counts_[i] == 1u) return glm::vec3(sums_[i]);  // the one sample, exactly
+    return counts_[i] > 1u ? glm::vec3(sums_[i] / static_cast<double>(counts_[i])) : glm::vec3(0.0f);
+  }
+  // See variance_of_mean(); requires tracks_variance().
+  glm::vec3 variance_of_mean_at(int x, int y) const;
   // The mean of each pixel's samples (black where there are none).
   Image mean() const;
   // Per pixel and channel: the sample variance s^2 (with n - 1) divided by n, the estimated

@@ -56,7 +56,7 @@ class Integrator {
   // The radiance (linear RGB) arriving along the camera ray `ray`; the background where it
   // hits nothing. Random numbers come from `sampler` only (started at the pixel sample by
   // the caller); the work done is added to `stats`.
-  glm::vec3 li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats) const;
+  inline glm::vec3 li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats) const;
 
  private:
   IntegratorKind kind_;
@@ -69,5 +69,15 @@ glm::vec3 whitted_li(const RenderContext& context, const Ray& ray, Sampler& samp
 // the first diffuse surface one light chosen uniformly and one point on it, with its shadow
 // ray: L = Le + f Li |cos| / (pdf_light * p_choice). Point lights fall off as 1 / d^2 here.
 glm::vec3 direct_light_li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats);
+
+// One switch per camera ray (inline: the renderer calls it for every sample).
+inline glm::vec3 Integrator::li(const RenderContext& context, const Ray& ray, Sampler& sampler,
+                                ShadingStats& stats) const {
+  switch (kind_) {
+    case IntegratorKind::Whitted: return whitted_li(context, ray, sampler, stats);
+    case IntegratorKind::DirectLight: return direct_light_li(context, ray, sampler, stats);
+  }
+  return glm::vec3(0.0f);
+}
 
 }  // namespace raylab

@@ -3,8 +3,8 @@
 //
 // Per pixel, samples_per_pixel samples: the sampler (sampler.h) gives the point in the pixel
 // (its centre at 1 sample, stratified points otherwise), stage 01 turns it into a camera ray,
-// the integrator (integrator.h) gives the radiance along it, and the film (film.h) keeps the
-// mean and, on request, the variance of the mean.
+// the integrator (integrator.h) gives the radiance along it, and a film per tile (film.h)
+// keeps the mean and, on request, the variance of the mean.
 #pragma once
 
 #include "raylab/film.h"
@@ -22,7 +22,7 @@ struct RenderSettings {
   IntegratorKind integrator = IntegratorKind::Whitted;
   int samples_per_pixel = 1;    // --spp; 1: one ray through each pixel's centre
   std::uint64_t seed = 0;       // changes every random number (an independent render)
-  bool track_variance = false;  // keep each pixel's variance of the mean (render_film)
+  bool track_variance = false;  // also give each pixel's variance of the mean (render_with_variance)
   int max_depth = 5;
   int threads = 0;             // 0: every core
   bool show_progress = false;  // progress, ETA and rays/s on stderr
@@ -40,13 +40,18 @@ struct RenderStats {
 // The largest --spp: 2^20 samples per pixel.
 constexpr int kMaxSamplesPerPixel = 1 << 20;
 
-// Renders scene.camera's view into a film: each pixel's mean, and its variance of the mean
-// when settings.track_variance. Exceptions from stage functions (NotImplemented, ...) stop
-// the render and are rethrown here, from the calling thread. Throws std::invalid_argument
-// for samples_per_pixel outside [1, kMaxSamplesPerPixel].
-Film render_film(const Scene& scene, const RenderSettings& settings, RenderStats* stats = nullptr);
+struct RenderOutput {
+  Image mean;              // each pixel's mean over its samples: the picture
+  Image variance_of_mean;  // per pixel and channel, s^2 / n (film.h); 0 x 0 unless track_variance
+};
 
-// The image alone: render_film(...).mean().
+// Renders scene.camera's view: each pixel's mean, and its variance of the mean when
+// settings.track_variance. Exceptions from stage functions (NotImplemented, ...) stop the
+// render and are rethrown here, from the calling thread. Throws std::invalid_argument for
+// samples_per_pixel outside [1, kMaxSamplesPerPixel].
+RenderOutput render_with_variance(const Scene& scene, const RenderSettings& settings, RenderStats* stats = nullptr);
+
+// The image alone: render_with_variance(...).mean.
 Image render(const Scene& scene, const RenderSettings& settings, RenderStats* stats = nullptr);
 
 }  // namespace raylab

@@ -31,14 +31,26 @@ class Sampler {
 
   // Starts sample `sample_index` (0 .. samples_per_pixel - 1) of pixel (pixel_x, pixel_y), at
   // dimension 0.
-  void start_pixel_sample(int pixel_x, int pixel_y, int sample_index);
+  void start_pixel_sample(int pixel_x, int pixel_y, int sample_index) {
+    pixel_ = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(pixel_y)) << 32u) |
+             static_cast<std::uint32_t>(pixel_x);
+    pixel_key_ready_ = false;  // hashed at the first number drawn: a Whitted render draws none
+    sample_index_ = static_cast<std::uint32_t>(sample_index);
+    dimension_ = 0;
+  }
 
   float get_1d();
   glm::vec2 get_2d();
   // The point in the pixel the camera ray passes through, each coordinate in [0, 1). At one
   // sample per pixel it is the pixel's centre (0.5, 0.5), so that a 1-spp render is exactly
   // the stage-01 picture; with more samples it is a 2D sample like get_2d.
-  glm::vec2 get_pixel_2d();
+  glm::vec2 get_pixel_2d() {
+    if (samples_per_pixel_ == 1) {
+      ++dimension_;  // the same dimensions follow at any sample count
+      return glm::vec2(0.5f);
+    }
+    return get_2d();
+  }
 
   int samples_per_pixel() const { return samples_per_pixel_; }
   int dimension() const { return dimension_; }
@@ -49,7 +61,9 @@ class Sampler {
   int samples_per_pixel_ = 1;
   int grid_columns_ = 1, grid_rows_ = 1;  // the 2D strata: columns * rows >= samples_per_pixel
   std::uint64_t seed_ = 0;
-  std::uint64_t pixel_key_ = 0;
+  std::uint64_t pixel_ = 0;      // (pixel_y, pixel_x) in one number
+  std::uint64_t pixel_key_ = 0;  // its hash with the seed, once a number is drawn
+  bool pixel_key_ready_ = false;
   std::uint32_t sample_index_ = 0;
   int dimension_ = 0;
 };

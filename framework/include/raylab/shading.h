@@ -11,7 +11,9 @@
 namespace raylab {
 
 // Mirror direction of `incident` (pointing towards the surface) about unit `normal`.
-glm::vec3 reflect(const glm::vec3& incident, const glm::vec3& normal);
+inline glm::vec3 reflect(const glm::vec3& incident, const glm::vec3& normal) {
+  return incident - 2.0f * glm::dot(incident, normal) * normal;
+}
 
 // Refracted direction of unit `incident` through a surface with unit `normal` (either side)
 // and index of refraction `ior` (outside 1); zero vector on total internal reflection.
