@@ -1,6 +1,6 @@
 // Process control for the judge: starting a sandboxed stage server, waiting for its answers
 // with a deadline, and making sure that it and everything it started are gone. The only
-// platform-specific part of the autograder (process_linux.cpp; issue 13 adds Windows).
+// platform-specific part of the autograder (process_linux.cpp; a Windows port adds its own file).
 #pragma once
 
 #include <chrono>

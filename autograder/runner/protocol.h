@@ -28,6 +28,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <memory>
 #include <vector>
 
 namespace raylab::grading::protocol {
@@ -68,8 +69,8 @@ class Writer {
     const auto* bytes = reinterpret_cast<const char*>(&value);
     data_.append(bytes, sizeof(T));
   }
-  template <class T>
-  void put_vector(const std::vector<T>& values) {
+  template <class T, class Allocator>
+  void put_vector(const std::vector<T, Allocator>& values) {
     static_assert(std::is_trivially_copyable_v<T>);
     put<std::uint64_t>(values.size());
     data_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
@@ -100,11 +101,11 @@ class Reader {
     std::memcpy(&value, take(sizeof(T)), sizeof(T));
     return value;
   }
-  template <class T>
-  std::vector<T> get_vector() {
+  template <class T, class Allocator = std::allocator<T>>
+  std::vector<T, Allocator> get_vector() {
     const auto count = get<std::uint64_t>();
     if (count > (data_.size() - offset_) / sizeof(T)) throw ProtocolError("a list longer than its frame");
-    std::vector<T> values(count);
+    std::vector<T, Allocator> values(count);
     if (count) std::memcpy(values.data(), take(count * sizeof(T)), count * sizeof(T));
     return values;
   }

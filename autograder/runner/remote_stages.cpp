@@ -53,14 +53,14 @@ Bvh call_builder(Function function, const std::vector<Bounds3>& primitive_bounds
   Reader in(reply);
   in.get<std::uint8_t>();
   Bvh bvh;
-  bvh.nodes = in.get_vector<BvhNode>();
+  bvh.nodes = in.get_vector<BvhNode, BvhNodeAllocator<BvhNode>>();
   bvh.primitive_order = in.get_vector<std::uint32_t>();
   in.expect_end();
   return bvh;
 }
 
-template <class T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
+template <class T, class Allocator>
+bool same_bytes(const std::vector<T, Allocator>& a, const std::vector<T, Allocator>& b) {
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 

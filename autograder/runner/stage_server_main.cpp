@@ -104,7 +104,7 @@ void answer(Reader& in, Writer& out, Cache& cache) {
     }
     case Function::IntersectBvh: {
       if (in.get<std::uint8_t>()) {
-        cache.bvh.nodes = in.get_vector<BvhNode>();
+        cache.bvh.nodes = in.get_vector<BvhNode, BvhNodeAllocator<BvhNode>>();
         cache.bvh.primitive_order = in.get_vector<std::uint32_t>();
       }
       const auto mode = in.get<std::uint8_t>();  // 0: callbacks; 1: grader's test, same mesh; 2: new mesh follows

@@ -5,6 +5,8 @@
 // fails, and its hint says what the contract asked for.
 #define build_bvh reference_build_bvh
 #include "../../solutions/05_bvh/bvh.cpp"
+
+#include <numeric>
 #undef build_bvh
 
 namespace raylab {

@@ -14,6 +14,8 @@
 #undef build_bvh
 
 #include <list>
+#include <algorithm>
+#include <numeric>
 
 namespace raylab {
 namespace {
@@ -22,7 +24,7 @@ struct DanglingBuilder {
   const std::vector<Bounds3>& bounds;
   std::uint32_t max_leaf_size;
   Bvh bvh;
-  std::list<std::vector<BvhNode>> old_arrays;  // where the dangling writes land
+  std::list<std::vector<BvhNode, BvhNodeAllocator<BvhNode>>> old_arrays;  // where the dangling writes land
   std::vector<BvhNode**> live_references;      // the `node` of every build_node in progress
 
   // nodes.push_back; when the vector grows, every reference into the array is left pointing

@@ -4,6 +4,9 @@
 // referred to by index. Expected: full marks.
 #define build_bvh reference_build_bvh
 #include "../../solutions/05_bvh/bvh.cpp"
+
+#include <algorithm>
+#include <numeric>
 #undef build_bvh
 
 namespace raylab {
