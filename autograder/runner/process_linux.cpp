@@ -182,12 +182,41 @@ void kill_every_descendant() {
 
 }  // namespace
 
+// Whether a process with the sandbox's uid can read and enter every folder the stage server
+// needs: the programs' folder (the server and the image module) and the source tree (scenes,
+// meshes). A checkout under a folder only root may enter (/root, a 0700 home) cannot be, and
+// then the server keeps the judge's uid: Landlock and the process limits still hold.
+static bool sandbox_uid_can_reach(uid_t uid) {
+  std::vector<std::string> folders;
+  char self[4096];
+  const ssize_t length = ::readlink("/proc/self/exe", self, sizeof self - 1);
+  if (length > 0) {
+    const std::string path(self, static_cast<std::size_t>(length));
+    folders.push_back(path.substr(0, path.find_last_of('/') + 1));
+  }
+#ifdef RAYLAB_SOURCE_DIR
+  folders.push_back(RAYLAB_SOURCE_DIR "/scenes");
+#endif
+  const pid_t probe = ::fork();
+  if (probe < 0) return false;
+  if (probe == 0) {
+    if (::setgroups(0, nullptr) != 0 || ::setgid(uid) != 0 || ::setuid(uid) != 0) ::_exit(1);
+    for (const std::string& folder : folders)
+      if (::access(folder.c_str(), R_OK | X_OK) != 0) ::_exit(1);
+    ::_exit(0);
+  }
+  int status = 0;
+  while (::waitpid(probe, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
 void prepare_judge() {
   ::prctl(PR_SET_CHILD_SUBREAPER, 1);
   ::signal(SIGPIPE, SIG_IGN);
   Sandbox& box = sandbox();
-  box.as_root = ::geteuid() == 0;
   box.uid = static_cast<uid_t>(1000000000u + static_cast<unsigned>(::getpid()));
+  box.as_root = ::geteuid() == 0 && sandbox_uid_can_reach(box.uid);
   box.landlock = landlock_abi();
 }
 
