@@ -1,4 +1,4 @@
-// BSDFs, lights, shapes and warps (bsdf.h, lights.h, shapes.h, sampling.h): each sampling
+// BSDFs, lights, shapes and warps (bsdf.h, lights.h, shapes.h, sampling.h, stages/07_sampling.h): each sampling
 // routine agrees with its own density, densities integrate to 1, BSDFs are reciprocal and
 // conserve energy, and light densities in solid angle match a numerical integral over the
 // sphere of directions. Integrals are midpoint sums over a (cos theta, phi) grid, where
@@ -10,6 +10,7 @@
 #include "raylab/random.h"
 #include "raylab/render.h"
 #include "raylab/sampling.h"
+#include "raylab/stages/07_sampling.h"
 #include "raylab/scene_loader.h"
 #include "raylab/shading.h"
 #include "raylab/shapes.h"
@@ -75,7 +76,7 @@ TEST(Sampling, CosineHemisphereSamplesHaveTheirDensity) {
     in_cap += d.z > 0.5f;
   }
   EXPECT_NEAR(static_cast<double>(in_cap) / count, 0.75, 0.005);  // ~4 sigma
-  EXPECT_NEAR(integrate_over_sphere([](const glm::vec3& d) { return cosine_hemisphere_pdf(d.z); }, 400, 200), 1.0, 1e-3);
+  EXPECT_NEAR(integrate_over_sphere([](const glm::vec3& d) { return cosine_hemisphere_pdf(d); }, 400, 200), 1.0, 1e-3);
 }
 
 TEST(Shapes, TriangleAreaAndUniformPointsByArea) {

@@ -37,6 +37,8 @@ const char* function_name(Function function) {
     case Function::IntersectBvh: return "intersect_bvh";
     case Function::RenderStageImage: return "rendering the stage's picture";
     case Function::TrianglesHit: return "intersect_ray_triangle";
+    case Function::WarpSamples: return "a stage-07 warp (sample_...)";
+    case Function::WarpPdfs: return "a stage-07 density (..._pdf)";
   }
   return "a stage function";
 }

@@ -51,6 +51,8 @@ enum class Function : std::uint8_t {
                         // or any other intersector through kCallback
   RenderStageImage,     // a whole picture, rendered by the stage code in the server
   TrianglesHit,         // a batch of stage-03 or stage-03b calls on one mesh (stage_calls.h)
+  WarpSamples,          // a batch of one stage-07 warp's samples (stage_calls.h)
+  WarpPdfs,             // a batch of one stage-07 density's values (stage_calls.h)
 };
 const char* function_name(Function function);
 

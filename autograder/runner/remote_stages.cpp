@@ -14,6 +14,7 @@
 #include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
+#include "raylab/stages/07_sampling.h"
 
 #include <cstring>
 
@@ -183,7 +184,67 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const Primit
   return hit;
 }
 
+// Stage 07: each function is a batch of one.
+glm::vec3 sample_uniform_hemisphere(glm::vec2 uniform_random) {
+  return grading::warp_samples(grading::Warp::UniformHemisphere, {uniform_random})[0];
+}
+float uniform_hemisphere_pdf(const glm::vec3& direction) {
+  return grading::warp_pdfs(grading::Warp::UniformHemisphere, {direction})[0];
+}
+glm::vec3 sample_cosine_hemisphere(glm::vec2 uniform_random) {
+  return grading::warp_samples(grading::Warp::CosineHemisphere, {uniform_random})[0];
+}
+float cosine_hemisphere_pdf(const glm::vec3& direction) {
+  return grading::warp_pdfs(grading::Warp::CosineHemisphere, {direction})[0];
+}
+glm::vec3 sample_uniform_sphere(glm::vec2 uniform_random) {
+  return grading::warp_samples(grading::Warp::UniformSphere, {uniform_random})[0];
+}
+float uniform_sphere_pdf(const glm::vec3& direction) {
+  return grading::warp_pdfs(grading::Warp::UniformSphere, {direction})[0];
+}
+glm::vec2 sample_uniform_disk(glm::vec2 uniform_random) {
+  return glm::vec2(grading::warp_samples(grading::Warp::UniformDisk, {uniform_random})[0]);
+}
+float uniform_disk_pdf(glm::vec2 point) {
+  return grading::warp_pdfs(grading::Warp::UniformDisk, {glm::vec3(point, 0.0f)})[0];
+}
+Barycentrics sample_uniform_triangle(glm::vec2 uniform_random) {
+  const glm::vec3 b = grading::warp_samples(grading::Warp::UniformTriangle, {uniform_random})[0];
+  return Barycentrics{b.x, b.y};
+}
+float uniform_triangle_pdf(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+  return grading::warp_pdfs(grading::Warp::UniformTriangle, {p0, p1, p2})[0];
+}
+
 namespace grading {
+
+std::vector<glm::vec3> warp_samples(Warp warp, const std::vector<glm::vec2>& uniform_randoms) {
+  Writer arguments;
+  arguments.put(warp);
+  arguments.put_vector(uniform_randoms);
+  const std::string reply = StageSession::instance().call(protocol::Function::WarpSamples, arguments);
+  Reader in(reply);
+  in.get<std::uint8_t>();
+  auto samples = in.get_vector<glm::vec3>();
+  in.expect_end();
+  if (samples.size() != uniform_randoms.size()) throw protocol::ProtocolError("an answer for the wrong number of samples");
+  return samples;
+}
+
+std::vector<float> warp_pdfs(Warp warp, const std::vector<glm::vec3>& arguments_in) {
+  Writer arguments;
+  arguments.put(warp);
+  arguments.put_vector(arguments_in);
+  const std::string reply = StageSession::instance().call(protocol::Function::WarpPdfs, arguments);
+  Reader in(reply);
+  in.get<std::uint8_t>();
+  auto values = in.get_vector<float>();
+  in.expect_end();
+  const std::size_t expected = warp == Warp::UniformTriangle ? arguments_in.size() / 3 : arguments_in.size();
+  if (values.size() != expected) throw protocol::ProtocolError("an answer for the wrong number of densities");
+  return values;
+}
 
 std::vector<std::vector<std::uint32_t>> triangles_hit(TriangleFunction function,
                                                       const std::vector<protocol::Triangle>& triangles,

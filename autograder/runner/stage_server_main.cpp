@@ -121,6 +121,18 @@ void answer(Reader& in, Writer& out, Cache& cache) {
       out.put<std::uint64_t>(counting.tests);
       return;
     }
+    case Function::WarpSamples: {
+      const auto warp = in.get<Warp>();
+      const auto uniform_randoms = in.get_vector<glm::vec2>();
+      out.put_vector(warp_samples(warp, uniform_randoms));
+      return;
+    }
+    case Function::WarpPdfs: {
+      const auto warp = in.get<Warp>();
+      const auto arguments = in.get_vector<glm::vec3>();
+      out.put_vector(warp_pdfs(warp, arguments));
+      return;
+    }
     case Function::RenderStageImage: {
       const Image image = render_stage_image(in.get_string());
       out.put<int>(image.width());

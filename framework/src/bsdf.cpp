@@ -2,6 +2,7 @@
 
 #include "raylab/sampling.h"
 #include "raylab/shading.h"
+#include "raylab/stages/07_sampling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,8 @@ float bsdf_pdf(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, c
   if (bsdf.kind != BsdfKind::Lambertian) return 0.0f;
   const float cos_o = glm::dot(normal, wo), cos_i = glm::dot(normal, wi);
   if (!(cos_o * cos_i > 0.0f)) return 0.0f;
-  return std::fabs(cos_i) / kPi;
+  const glm::vec3 facing_normal = cos_o > 0.0f ? normal : -normal;  // on wo's side, as bsdf_sample_f
+  return cosine_hemisphere_pdf(Frame(facing_normal).to_local(wi));
 }
 
 std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo,
@@ -36,7 +38,8 @@ std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& norma
       const float cos_i = glm::dot(facing_normal, sample.wi);
       if (!(cos_i > 0.0f)) return std::nullopt;
       sample.f = bsdf.albedo * (1.0f / kPi);
-      sample.pdf = cos_i / kPi;
+      sample.pdf = cosine_hemisphere_pdf(local);
+      if (!(sample.pdf > 0.0f) || !std::isfinite(sample.pdf)) return std::nullopt;
       return sample;
     }
     case BsdfKind::Mirror: {

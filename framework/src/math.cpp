@@ -1,6 +1,7 @@
 #include "raylab/math.h"
 #include "raylab/ray.h"
 #include "raylab/stages/03_triangle.h"
+#include "raylab/stages/07_sampling.h"
 
 #include <iomanip>
 #include <limits>
@@ -33,6 +34,10 @@ std::ostream& operator<<(std::ostream& out, const Ray& ray) {
 std::ostream& operator<<(std::ostream& out, const TriangleHit& hit) {
   return out << "t_hit " << hit.t_hit << " b1 " << hit.barycentric_b1 << " b2 "
              << hit.barycentric_b2;
+}
+
+std::ostream& operator<<(std::ostream& out, const Barycentrics& barycentrics) {
+  return out << "b1 " << barycentrics.barycentric_b1 << " b2 " << barycentrics.barycentric_b2;
 }
 
 }  // namespace raylab

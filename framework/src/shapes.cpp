@@ -1,6 +1,6 @@
 #include "raylab/shapes.h"
 
-#include "raylab/sampling.h"
+#include "raylab/stages/07_sampling.h"
 
 namespace raylab {
 
@@ -9,14 +9,14 @@ float triangle_area(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p
 }
 
 ShapeSample sample_triangle(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, glm::vec2 u) {
-  const glm::vec2 b = sample_uniform_triangle(u);
+  const Barycentrics b = sample_uniform_triangle(u);
   ShapeSample sample;
-  sample.point = (1.0f - b.x - b.y) * p0 + b.x * p1 + b.y * p2;
+  sample.point = (1.0f - b.barycentric_b1 - b.barycentric_b2) * p0 + b.barycentric_b1 * p1 + b.barycentric_b2 * p2;
   const glm::vec3 cross = glm::cross(p1 - p0, p2 - p0);
   const float twice_area = glm::length(cross);
   if (twice_area > 0.0f) {
     sample.normal = cross / twice_area;
-    sample.pdf_area = 2.0f / twice_area;
+    sample.pdf_area = uniform_triangle_pdf(p0, p1, p2);
   }
   return sample;
 }
@@ -25,7 +25,8 @@ ShapeSample sample_sphere(const Sphere& sphere, glm::vec2 u) {
   ShapeSample sample;
   sample.normal = sample_uniform_sphere(u);
   sample.point = sphere.center + sphere.radius * sample.normal;
-  sample.pdf_area = 1.0f / sphere_area(sphere);
+  // Directions per steradian of the unit sphere are points per unit area of this one over r^2.
+  sample.pdf_area = uniform_sphere_pdf(sample.normal) / (sphere.radius * sphere.radius);
   return sample;
 }
 

@@ -1,0 +1,807 @@
+// Autograder suite for stage 07_sampling (30 points: 6 per warp).
+//
+// The judge chooses the uniform inputs (fixed seeds: the same verdict on every run), the stage
+// server returns the student's samples and densities in bulk (stage_calls.h), and the judge
+// decides with the kit's statistics (raylab/testkit/statistics.h): a chi-square test of the
+// samples against the density they should have, and one against the student's own pdf
+// (expected counts from the pdf integrated over each cell), the pdf's integral, and every
+// sample's domain. Each warp is looked at in parameters where its density is smooth inside
+// every cell: directions by (phi, z = cos theta), where cells of equal size have equal solid
+// angle; disk points by (phi, r); triangle points by (t = b2 / (b1 + b2), s = b1 + b2).
+//
+// False failures: the 10 chi-square tests share kGraderFalseFailureRate (1 in 1,000 for the
+// whole stage, Sidak-corrected); the other tests are exact checks with tolerances for float
+// rounding, which a correct implementation never fails.
+#include "grading.h"
+#include "stage_calls.h"
+#include "support.h"
+
+#include "raylab/error.h"
+#include "raylab/image.h"
+#include "raylab/math.h"
+#include "raylab/stages/07_sampling.h"
+#include "raylab/testkit/statistics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace raylab::grading {
+namespace {
+
+constexpr const char* kStage = "07_sampling";
+constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
+constexpr double kPiD = 3.14159265358979323846;
+constexpr int kSampleCount = 200000;
+constexpr std::uint64_t kSeed = 7;
+const double kLevel = testkit::sidak_level(testkit::kGraderFalseFailureRate, 10);
+
+// Not attempted only while every function of the stage is a stub; one written warp makes the
+// others' tests "not attempted" one by one.
+const bool kRegistered = register_stage(kStage, [] {
+  std::optional<NotImplemented> first;
+  int stubs = 0, functions = 0;
+  for (const Warp warp : kWarps) {
+    for (const bool density : {false, true}) {
+      ++functions;
+      try {
+        if (!density)
+          (void)warp_samples(warp, {glm::vec2(0.5f)});
+        else if (warp == Warp::UniformTriangle)
+          (void)warp_pdfs(warp, {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)});
+        else
+          (void)warp_pdfs(warp, {glm::vec3(0, 0, 1)});
+      } catch (const NotImplemented& e) {
+        ++stubs;
+        if (!first) first = e;
+      }
+    }
+  }
+  if (stubs == functions && first) throw *first;
+});
+
+bool is_direction_warp(Warp warp) { return warp != Warp::UniformDisk && warp != Warp::UniformTriangle; }
+bool is_hemisphere(Warp warp) { return warp == Warp::UniformHemisphere || warp == Warp::CosineHemisphere; }
+
+const char* handout_section(Warp warp) {
+  switch (warp) {
+    case Warp::UniformHemisphere: return "docs/07_sampling.md, section 3";
+    case Warp::CosineHemisphere: return "docs/07_sampling.md, section 4";
+    case Warp::UniformSphere: return "docs/07_sampling.md, section 5";
+    case Warp::UniformDisk: return "docs/07_sampling.md, section 6";
+    case Warp::UniformTriangle: return "docs/07_sampling.md, section 7";
+  }
+  return "docs/07_sampling.md";
+}
+
+const char* file_name(Warp warp) {
+  switch (warp) {
+    case Warp::UniformHemisphere: return "uniform_hemisphere";
+    case Warp::CosineHemisphere: return "cosine_hemisphere";
+    case Warp::UniformSphere: return "uniform_sphere";
+    case Warp::UniformDisk: return "uniform_disk";
+    case Warp::UniformTriangle: return "uniform_triangle";
+  }
+  return "warp";
+}
+
+// The first part of the warp's test names ("CosineHemisphere").
+const char* test_prefix(Warp warp) {
+  switch (warp) {
+    case Warp::UniformHemisphere: return "UniformHemisphere";
+    case Warp::CosineHemisphere: return "CosineHemisphere";
+    case Warp::UniformSphere: return "UniformSphere";
+    case Warp::UniformDisk: return "UniformDisk";
+    case Warp::UniformTriangle: return "UniformTriangle";
+  }
+  return "";
+}
+
+// ---- The parameters each warp is judged in -------------------------------------------------
+
+struct Grid {
+  int columns, rows;
+  double u_min, u_max, v_min, v_max;
+};
+
+Grid grid_of(Warp warp) {
+  if (is_direction_warp(warp)) return {40, 20, 0.0, kTwoPi, -1.0, 1.0};  // (phi, z)
+  if (warp == Warp::UniformDisk) return {40, 20, 0.0, kTwoPi, 0.0, 1.0};  // (phi, r)
+  return {20, 20, 0.0, 1.0, 0.0, 1.0};                                   // (t, s)
+}
+
+double angle_of(double x, double y) {
+  const double phi = std::atan2(y, x);
+  return phi < 0.0 ? phi + kTwoPi : phi;
+}
+
+// A value just over 1 that rounding may produce is counted in the last cell below 1.
+double at_most_one(double value) { return value >= 1.0 && value <= 1.0 + 1e-5 ? std::nextafter(1.0, 0.0) : value; }
+
+// A sample's parameters (u, v) in its grid.
+glm::dvec2 parameters_of(Warp warp, const glm::vec3& sample) {
+  const glm::dvec3 s(sample);
+  if (is_direction_warp(warp)) {
+    const double length = glm::length(s);
+    return {angle_of(s.x, s.y), std::clamp(s.z / length, -1.0, std::nextafter(1.0, 0.0))};
+  }
+  if (warp == Warp::UniformDisk) return {angle_of(s.x, s.y), at_most_one(std::sqrt(s.x * s.x + s.y * s.y))};
+  const double sum = s.x + s.y;
+  return {sum > 0.0 ? at_most_one(s.y / sum) : 0.0, at_most_one(sum)};
+}
+
+// What the student's density function is given at parameters (u, v) (for the triangle, the
+// density is asked once, for the unit triangle below).
+glm::vec3 pdf_argument_at(Warp warp, double u, double v) {
+  if (is_direction_warp(warp)) {
+    const double radius = std::sqrt(std::max(0.0, 1.0 - v * v));
+    return glm::vec3(glm::dvec3(radius * std::cos(u), radius * std::sin(u), v));
+  }
+  return glm::vec3(glm::dvec3(v * std::cos(u), v * std::sin(u), 0.0));
+}
+
+// The measure (solid angle or area) per unit of du dv.
+double jacobian_at(Warp warp, double, double v) { return is_direction_warp(warp) ? 1.0 : v; }
+
+// The density each warp should have, in its own measure (per steradian or per unit area; the
+// triangle's per unit area of the unit triangle (0,0), (1,0), (0,1), whose area is 1/2).
+double intended_pdf(Warp warp, double, double v) {
+  switch (warp) {
+    case Warp::UniformHemisphere: return v >= 0.0 ? 1.0 / kTwoPi : 0.0;
+    case Warp::CosineHemisphere: return v >= 0.0 ? v / kPiD : 0.0;
+    case Warp::UniformSphere: return 1.0 / (2.0 * kTwoPi);
+    case Warp::UniformDisk: return 1.0 / kPiD;
+    case Warp::UniformTriangle: return 2.0;
+  }
+  return 0.0;
+}
+double intended_density(Warp warp, double u, double v) { return intended_pdf(warp, u, v) * jacobian_at(warp, u, v); }
+
+const glm::vec3 kUnitTriangle[3] = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
+
+// Mistakes whose samples have a known density: if the samples fit one, its hint names it.
+struct Mistake {
+  std::function<double(double u, double v)> pdf;  // in the warp's own measure, as intended_pdf
+  std::string hint;
+};
+std::vector<Mistake> sample_mistakes(Warp warp) {
+  switch (warp) {
+    case Warp::UniformHemisphere:
+      return {{[](double, double v) { return v >= 0.0 ? v / kPiD : 0.0; },
+               "your samples are cosine-weighted (density cos(theta) / pi, what sample_cosine_hemisphere does); here "
+               "every direction must be equally likely: z = cos(theta) uniform in [0, 1]"}};
+    case Warp::CosineHemisphere:
+      return {{[](double, double v) { return v >= 0.0 ? 1.0 / kTwoPi : 0.0; },
+               "your samples are uniform over the hemisphere, not cosine-weighted: z = cos(theta) must not be uniform, "
+               "but z^2 is (or lift a uniform disk point: z = sqrt(1 - x^2 - y^2))"}};
+    case Warp::UniformSphere:
+      return {{[](double, double v) { return v >= 0.0 ? 1.0 / kTwoPi : 0.0; },
+               "your samples cover only the upper hemisphere (z >= 0): z = cos(theta) must be uniform in [-1, 1]"}};
+    case Warp::UniformDisk:
+      return {{[](double, double v) { return v > 0.0 ? 1.0 / (kTwoPi * v) : 0.0; },
+               "samples crowd the centre of the disk: a square root missing (the radius uniform in [0, 1] puts as "
+               "many points within r < 1/2 as beyond, but that ring has 3 times the area; r = sqrt(u))"}};
+    case Warp::UniformTriangle:
+      return {{[](double, double v) { return v > 0.0 ? 1.0 / v : 0.0; },
+               "samples crowd the vertex p0: a square root missing (b1 + b2 uniform in [0, 1] puts as many points "
+               "near p0 as near the opposite edge, where the triangle is wider; use sqrt(u))"}};
+  }
+  return {};
+}
+
+// Mistaken densities a pdf may return (compared value by value with the student's).
+std::vector<Mistake> pdf_mistakes(Warp warp) {
+  switch (warp) {
+    case Warp::UniformHemisphere:
+      return {{[](double, double v) { return v >= 0.0 ? v / kPiD : 0.0; },
+               "uniform_hemisphere_pdf returns the cosine-weighted density cos(theta) / pi; uniform directions have "
+               "the same density everywhere: 1 / (2 pi), the hemisphere's solid angle being 2 pi"}};
+    case Warp::CosineHemisphere:
+      return {{[](double, double v) { return v >= 0.0 ? 1.0 / kTwoPi : 0.0; },
+               "cosine_hemisphere_pdf returns the uniform hemisphere's density 1 / (2 pi), but cosine-weighted samples "
+               "have density cos(theta) / pi = z / pi"}};
+    case Warp::UniformSphere: return {};
+    case Warp::UniformDisk:
+      return {{[](double, double v) { return v / kPiD; },
+               "uniform_disk_pdf includes the Jacobian r: r / pi is the density per dr dphi, but the pdf is per unit "
+               "area, the same everywhere: 1 / pi"}};
+    case Warp::UniformTriangle: return {};
+  }
+  return {};
+}
+
+// ---- What the student's code returned, fetched once per warp -------------------------------
+
+struct WarpData {
+  std::vector<glm::vec2> inputs;
+  std::vector<glm::vec3> samples;
+  std::size_t non_finite = 0, out_of_domain = 0;
+  std::optional<std::size_t> first_non_finite, first_out_of_domain;
+  std::string out_of_domain_reason;  // of the first such sample
+  std::size_t below_surface = 0;
+  testkit::Histogram2D histogram{1, 1, 0.0, 1.0, 0.0, 1.0};
+  std::vector<double> expected;  // from the intended density
+};
+
+// Why a finite sample is outside its warp's domain, or "".
+std::string domain_problem(Warp warp, const glm::vec3& s) {
+  std::ostringstream out;
+  if (is_direction_warp(warp)) {
+    const float length = glm::length(s);
+    if (std::fabs(length - 1.0f) > 1e-3f) {
+      out << "not unit length (length " << length << ")";
+      return out.str();
+    }
+    if (is_hemisphere(warp) && s.z < -1e-5f) {
+      out << "below the surface (z = " << s.z << " < 0)";
+      return out.str();
+    }
+    return "";
+  }
+  if (warp == Warp::UniformDisk) {
+    const float radius = std::sqrt(s.x * s.x + s.y * s.y);
+    if (radius > 1.0f + 1e-5f) out << "outside the unit disk (distance " << radius << " from the centre)";
+    return out.str();
+  }
+  if (s.x < -1e-6f || s.y < -1e-6f) out << "outside the triangle (a negative barycentric: b1 " << s.x << ", b2 " << s.y << ")";
+  else if (s.x + s.y > 1.0f + 1e-5f) out << "outside the triangle (b1 + b2 = " << s.x + s.y << " > 1, so b0 < 0)";
+  return out.str();
+}
+
+// The uniform inputs: the corners and middle of [0, 1)^2 first (where formulas meet 0, 1 and
+// sqrt(0)), then random pairs from the warp's own stream.
+std::vector<glm::vec2> inputs_of(Warp warp) {
+  const float below_one = std::nextafter(1.0f, 0.0f);
+  std::vector<glm::vec2> inputs = {{0.0f, 0.0f},      {0.0f, 0.5f},      {0.5f, 0.0f},      {0.5f, 0.5f},
+                                   {below_one, 0.0f}, {0.0f, below_one}, {below_one, below_one}, {0.25f, 0.75f}};
+  Pcg32 random(kSeed, testkit::stream_of(std::string(kStage) + "/" + warp_sample_function(warp)));
+  while (inputs.size() < static_cast<std::size_t>(kSampleCount)) {
+    const float a = random.next_float();
+    const float b = random.next_float();
+    inputs.push_back({a, b});
+  }
+  return inputs;
+}
+
+const WarpData& data_of(Warp warp) {
+  static std::map<Warp, WarpData> cache;
+  const auto found = cache.find(warp);
+  if (found != cache.end()) return found->second;
+  WarpData data;
+  data.inputs = inputs_of(warp);
+  data.samples = warp_samples(warp, data.inputs);  // throws NotImplemented for a stub: nothing cached
+  const Grid g = grid_of(warp);
+  data.histogram = testkit::Histogram2D(g.columns, g.rows, g.u_min, g.u_max, g.v_min, g.v_max);
+  for (std::size_t i = 0; i < data.samples.size(); ++i) {
+    const glm::vec3& s = data.samples[i];
+    if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z)) {
+      ++data.non_finite;
+      if (!data.first_non_finite) data.first_non_finite = i;
+      data.histogram.add(NAN, NAN);
+      continue;
+    }
+    const std::string problem = domain_problem(warp, s);
+    if (!problem.empty()) {
+      ++data.out_of_domain;
+      if (!data.first_out_of_domain) {
+        data.first_out_of_domain = i;
+        data.out_of_domain_reason = problem;
+      }
+    }
+    if (is_hemisphere(warp) && s.z < -1e-5f) ++data.below_surface;
+    const glm::dvec2 p = parameters_of(warp, s);
+    data.histogram.add(p.x, p.y);
+  }
+  data.expected = data.histogram.expected_counts([warp](double u, double v) { return intended_density(warp, u, v); },
+                                                 static_cast<double>(data.samples.size()), 4);
+  return cache.emplace(warp, std::move(data)).first->second;
+}
+
+// The student's density at the quadrature points of every cell, and the expected counts from it.
+struct PdfData {
+  std::vector<glm::dvec2> points;   // (u, v) of each quadrature point
+  std::vector<float> values;        // the student's pdf there
+  std::vector<double> expected;     // counts per cell from the student's pdf
+  double integral = 0;              // of the student's pdf over the grid's domain
+  float unit_triangle_pdf = 0;      // the triangle: the pdf of the unit triangle
+};
+
+const PdfData& pdf_data_of(Warp warp) {
+  static std::map<Warp, PdfData> cache;
+  const auto found = cache.find(warp);
+  if (found != cache.end()) return found->second;
+  const WarpData& samples = data_of(warp);
+  PdfData data;
+  // First pass: where the quadrature asks; then one bulk call; then the same pass with the answers.
+  samples.histogram.expected_counts(
+      [&](double u, double v) {
+        data.points.push_back({u, v});
+        return 0.0;
+      },
+      1.0, 4);
+  if (warp == Warp::UniformTriangle) {
+    data.unit_triangle_pdf = warp_pdfs(warp, {kUnitTriangle[0], kUnitTriangle[1], kUnitTriangle[2]}).at(0);
+    data.values.assign(data.points.size(), data.unit_triangle_pdf);
+  } else {
+    std::vector<glm::vec3> arguments;
+    arguments.reserve(data.points.size());
+    for (const glm::dvec2& p : data.points) arguments.push_back(pdf_argument_at(warp, p.x, p.y));
+    data.values = warp_pdfs(warp, arguments);
+  }
+  std::size_t next = 0;
+  const double count = static_cast<double>(samples.samples.size());
+  data.expected = samples.histogram.expected_counts(
+      [&](double u, double v) {
+        const float value = data.values[next++];
+        // A NaN or negative density is reported apart; here it counts as nothing.
+        return std::isfinite(value) && value > 0.0f ? value * jacobian_at(warp, u, v) : 0.0;
+      },
+      count, 4);
+  for (const double e : data.expected) data.integral += e / count;
+  return cache.emplace(warp, std::move(data)).first->second;
+}
+
+std::string point_text(Warp warp, const glm::vec3& p) {
+  std::ostringstream out;
+  if (warp == Warp::UniformDisk) out << "(" << p.x << ", " << p.y << ")";
+  else if (warp == Warp::UniformTriangle) out << "b1 " << p.x << ", b2 " << p.y;
+  else out << p;
+  return out.str();
+}
+
+std::string input_text(const glm::vec2& u) {
+  std::ostringstream out;
+  out.precision(9);
+  out << "uniform_random = (" << u.x << ", " << u.y << ")";
+  return out.str();
+}
+
+// ---- The histogram picture -------------------------------------------------------------------
+
+// black -> red -> yellow -> white as value goes 0 -> 1 (clamped).
+glm::vec3 heat(double value) {
+  const float x = static_cast<float>(std::clamp(value, 0.0, 1.0)) * 3.0f;
+  return glm::vec3(std::min(1.0f, x), std::clamp(x - 1.0f, 0.0f, 1.0f), std::clamp(x - 2.0f, 0.0f, 1.0f));
+}
+
+// <output>/07_sampling-<warp>.png: the student's samples per pixel | the count the intended
+// density expects there, on one colour scale (white = twice the domain's mean). Directions are
+// drawn by (phi across, z = cos theta up: an equal-area map, so a uniform warp looks flat),
+// disk points as they are, triangle points by (b1 across, b2 up).
+std::string write_histogram_picture(Warp warp, const WarpData& data) {
+  const bool directions = is_direction_warp(warp);
+  const int width = directions ? 128 : 96, height = directions ? 64 : 96, scale = 2, gap = 6;
+  std::vector<double> counts(static_cast<std::size_t>(width) * height, 0.0), expected(counts.size(), 0.0);
+  // The picture's coordinates of a sample, in [0, 1)^2 (y up).
+  auto picture_xy = [&](const glm::vec3& s) -> glm::dvec2 {
+    if (directions) {
+      const glm::dvec2 p = parameters_of(warp, s);
+      return {p.x / kTwoPi, (p.y + 1.0) / 2.0};
+    }
+    if (warp == Warp::UniformDisk) return {(s.x + 1.0) / 2.0, (s.y + 1.0) / 2.0};
+    return {s.x, s.y};
+  };
+  for (const glm::vec3& s : data.samples) {
+    if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z)) continue;
+    const glm::dvec2 p = picture_xy(s);
+    const int x = static_cast<int>(std::floor(p.x * width)), y = static_cast<int>(std::floor(p.y * height));
+    if (x >= 0 && x < width && y >= 0 && y < height) counts[static_cast<std::size_t>(y) * width + x] += 1.0;
+  }
+  // Expected: the intended density at 4 x 4 points of each pixel, times the pixel's measure.
+  const double n = static_cast<double>(data.samples.size());
+  double sum = 0, nonzero = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      double mean_pdf = 0;
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+          const double px = (x + (i + 0.5) / 4.0) / width, py = (y + (j + 0.5) / 4.0) / height;
+          if (directions) {
+            mean_pdf += intended_pdf(warp, px * kTwoPi, 2.0 * py - 1.0);
+          } else if (warp == Warp::UniformDisk) {
+            const double dx = 2.0 * px - 1.0, dy = 2.0 * py - 1.0;
+            mean_pdf += dx * dx + dy * dy <= 1.0 ? 1.0 / kPiD : 0.0;
+          } else {
+            mean_pdf += px + py <= 1.0 ? 2.0 : 0.0;
+          }
+        }
+      mean_pdf /= 16.0;
+      const double measure = directions ? (kTwoPi / width) * (2.0 / height)
+                                        : warp == Warp::UniformDisk ? (2.0 / width) * (2.0 / height)
+                                                                    : (1.0 / width) * (1.0 / height);
+      const double e = n * mean_pdf * measure;
+      expected[static_cast<std::size_t>(y) * width + x] = e;
+      if (e > 0) {
+        sum += e;
+        ++nonzero;
+      }
+    }
+  const double white = nonzero > 0 ? 2.0 * sum / nonzero : 1.0;
+  Image picture(2 * width * scale + gap, height * scale, glm::vec3(0.35f));
+  for (int y = 0; y < height * scale; ++y)
+    for (int x = 0; x < width * scale; ++x) {
+      const std::size_t cell = static_cast<std::size_t>(height - 1 - y / scale) * width + x / scale;  // y up
+      picture.at(x, y) = heat(counts[cell] / white);
+      picture.at(x + width * scale + gap, y) = heat(expected[cell] / white);
+    }
+  const std::string directory = output_directory();
+  std::filesystem::create_directories(directory);
+  const std::string path = directory + "/" + kStage + "-" + file_name(warp) + ".png";
+  write_image(picture, path);
+  return path;
+}
+
+// ---- The tests -------------------------------------------------------------------------------
+
+void hint_non_finite(Warp warp, const WarpData& data) {
+  if (!data.first_non_finite) return;
+  const std::size_t i = *data.first_non_finite;
+  const glm::vec3& s = data.samples[i];
+  const float bad = !std::isfinite(s.x) ? s.x : !std::isfinite(s.y) ? s.y : s.z;
+  hint_if_not_finite(std::string(warp_sample_function(warp)) + " for " + input_text(data.inputs[i]), {bad},
+                     "look for a division by 0, sqrt of a negative number (1 - x^2 rounding below 0: clamp it) or "
+                     "log/acos outside its range (" + std::string(handout_section(warp)) + ")");
+}
+
+void expect_samples_in_domain(Warp warp) {
+  const WarpData& data = data_of(warp);
+  hint_non_finite(warp, data);
+  if (data.below_surface > 0)
+    add_hint("directions below the surface (z < 0) in " + std::to_string(data.below_surface) + " of " +
+             std::to_string(data.samples.size()) + " samples: a hemisphere direction has z = cos(theta) in [0, 1] (the "
+             "sphere's z = 1 - 2u covers [-1, 1]) (" + handout_section(warp) + ")");
+  else if (data.first_out_of_domain && warp == Warp::UniformTriangle)
+    add_hint("barycentrics outside the triangle: b1 >= 0, b2 >= 0 and b1 + b2 <= 1 must hold (two independent uniform "
+             "numbers as b1 and b2 reach b1 + b2 > 1 half of the time) (" + std::string(handout_section(warp)) + ")");
+  else if (data.first_out_of_domain && is_direction_warp(warp))
+    add_hint("directions must be unit vectors: x^2 + y^2 + z^2 = 1 (" + std::string(handout_section(warp)) + ")");
+  else if (data.first_out_of_domain)
+    add_hint("points outside the unit disk: the radius must stay in [0, 1] (" + std::string(handout_section(warp)) + ")");
+  if (data.first_non_finite)
+    ADD_FAILURE() << warp_sample_function(warp) << " returned a value that is not a number for "
+                  << input_text(data.inputs[*data.first_non_finite]) << ": " << data.samples[*data.first_non_finite]
+                  << " (" << data.non_finite << " of " << data.samples.size() << " samples)";
+  if (data.first_out_of_domain)
+    ADD_FAILURE() << warp_sample_function(warp) << " for " << input_text(data.inputs[*data.first_out_of_domain])
+                  << " returned " << point_text(warp, data.samples[*data.first_out_of_domain]) << ": "
+                  << data.out_of_domain_reason << " (" << data.out_of_domain << " of " << data.samples.size()
+                  << " samples are outside the domain)";
+}
+
+testkit::ChiSquareResult chi_square_against(const WarpData& data, const std::vector<double>& expected) {
+  return testkit::chi_square_test(data.histogram.counts(), expected, kLevel);
+}
+
+// The fraction of finite samples whose v parameter is below `v_limit`.
+double fraction_below(Warp warp, const WarpData& data, double v_limit) {
+  double below = 0, finite = 0;
+  for (const glm::vec3& s : data.samples) {
+    if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z)) continue;
+    ++finite;
+    below += parameters_of(warp, s).y < v_limit;
+  }
+  return finite > 0 ? below / finite : 0.0;
+}
+
+// Names what the samples do instead of the intended density, when the intended test failed.
+void diagnose_samples(Warp warp, const WarpData& data) {
+  hint_non_finite(warp, data);
+  if (data.below_surface > 0)
+    add_hint("directions below the surface (z < 0) in " + std::to_string(data.below_surface) + " of " +
+             std::to_string(data.samples.size()) + " samples: a hemisphere direction has z = cos(theta) in [0, 1] (" +
+             handout_section(warp) + ")");
+  for (const Mistake& mistake : sample_mistakes(warp)) {
+    const std::vector<double> expected = data.histogram.expected_counts(
+        [&](double u, double v) { return mistake.pdf(u, v) * jacobian_at(warp, u, v); },
+        static_cast<double>(data.samples.size()), 4);
+    // Lenient: a mistake's density that the samples fit at 1e-6 names the mistake.
+    if (testkit::chi_square_test(data.histogram.counts(), expected, 1e-6).passed) {
+      add_hint(mistake.hint + " (" + handout_section(warp) + ")");
+      return;
+    }
+  }
+  // Crowding, whatever its exact form: the disk's inner half radius and the triangle's corner
+  // half towards p0 hold a quarter of the area, so a quarter of the samples.
+  if (warp == Warp::UniformDisk || warp == Warp::UniformTriangle) {
+    const double inner = fraction_below(warp, data, 0.5);
+    if (inner > 0.27) {
+      std::ostringstream hint;
+      hint.precision(3);
+      hint << (warp == Warp::UniformDisk ? "samples crowd the centre of the disk: " : "samples crowd the vertex p0: ")
+           << 100.0 * inner << "% of them lie in the "
+           << (warp == Warp::UniformDisk ? "inner half radius" : "corner triangle b1 + b2 < 1/2")
+           << ", which has a quarter of the area (25%); is a square root missing? (" << handout_section(warp) << ")";
+      add_hint(hint.str());
+      return;
+    }
+  }
+  if (is_direction_warp(warp)) {
+    // Crowding the pole(s): theta uniform instead of z = cos(theta).
+    double near_pole = 0, finite = 0;
+    for (const glm::vec3& s : data.samples) {
+      if (!std::isfinite(s.z)) continue;
+      ++finite;
+      near_pole += std::fabs(s.z) > 0.9f;
+    }
+    const double fraction = finite > 0 ? near_pole / finite : 0.0;
+    const double intended = warp == Warp::CosineHemisphere ? 0.19 : 0.1;  // P(|z| > 0.9)
+    if (fraction > intended + 0.04) {
+      add_hint("samples crowd the pole" + std::string(warp == Warp::UniformSphere ? "s" : "") +
+               " (|z| > 0.9 for " + std::to_string(static_cast<int>(100.0 * fraction + 0.5)) + "% of them, " +
+               std::to_string(static_cast<int>(100.0 * intended + 0.5)) + "% expected): is theta uniform? Equal "
+               "steps of theta cover less solid angle near the pole; make z = cos(theta) follow the density (" +
+               handout_section(warp) + ")");
+      return;
+    }
+  }
+  add_hint(std::string("your samples do not follow the intended density: compare your histogram with the expected one "
+                       "in the picture named below (") + handout_section(warp) + ")");
+}
+
+void expect_intended_density(Warp warp) {
+  const WarpData& data = data_of(warp);
+  const std::string picture = write_histogram_picture(warp, data);
+  add_note(std::string(warp_sample_function(warp)) + ": your samples | the intended density: " + picture);
+  const testkit::ChiSquareResult result = chi_square_against(data, data.expected);
+  if (!result.passed) {
+    diagnose_samples(warp, data);
+    ADD_FAILURE() << warp_sample_function(warp) << ": " << data.samples.size()
+                  << " samples do not follow the intended density (" << result.reason << ")\n  " << result.describe()
+                  << "\n  a correct warp fails this test by bad luck with probability " << kLevel
+                  << " (fixed seed " << kSeed << "); picture: " << picture;
+  }
+}
+
+// Where the student's pdf and the intended one differ, in words, or "" if they agree.
+struct PdfComparison {
+  bool equals_intended = true;
+  std::optional<double> constant_factor;  // student = factor x intended everywhere (factor != 1)
+  std::optional<glm::dvec2> not_zero_outside;  // a point where intended is 0 and the student's is not
+  std::optional<std::size_t> non_finite, negative;  // indices of points
+  std::optional<std::string> mistake_hint;
+};
+
+PdfComparison compare_pdf(Warp warp, const PdfData& pdf) {
+  PdfComparison c;
+  double low = INFINITY, high = -INFINITY, sum = 0, count = 0;
+  for (std::size_t i = 0; i < pdf.points.size(); ++i) {
+    const float value = pdf.values[i];
+    const glm::dvec2 p = pdf.points[i];
+    if (!std::isfinite(value)) {
+      if (!c.non_finite) c.non_finite = i;
+      c.equals_intended = false;
+      continue;
+    }
+    if (value < 0.0f && !c.negative) c.negative = i;
+    const double intended = intended_pdf(warp, p.x, p.y);
+    if (intended == 0.0) {
+      if (value != 0.0f) {
+        if (!c.not_zero_outside) c.not_zero_outside = p;
+        c.equals_intended = false;
+      }
+      continue;
+    }
+    const double ratio = value / intended;
+    low = std::min(low, ratio);
+    high = std::max(high, ratio);
+    sum += ratio;
+    ++count;
+    if (std::fabs(ratio - 1.0) > 1e-3) c.equals_intended = false;
+  }
+  if (!c.equals_intended && count > 0 && low > 0 && high / low < 1.0 + 1e-3 && std::fabs(sum / count - 1.0) > 1e-3)
+    c.constant_factor = sum / count;
+  if (!c.equals_intended)
+    for (const Mistake& mistake : pdf_mistakes(warp)) {
+      bool same = true;
+      for (std::size_t i = 0; i < pdf.points.size() && same; ++i) {
+        const double expected = mistake.pdf(pdf.points[i].x, pdf.points[i].y);
+        same = std::fabs(pdf.values[i] - expected) <= 1e-3 * std::max(expected, 1e-3);
+      }
+      if (same) {
+        c.mistake_hint = mistake.hint;
+        break;
+      }
+    }
+  return c;
+}
+
+void hint_pdf(Warp warp, const PdfData& pdf, const PdfComparison& c) {
+  const std::string section = handout_section(warp);
+  if (c.non_finite) {
+    const float value = pdf.values[*c.non_finite];
+    hint_if_not_finite(std::string(warp_pdf_function(warp)) + " at " +
+                           point_text(warp, pdf_argument_at(warp, pdf.points[*c.non_finite].x, pdf.points[*c.non_finite].y)),
+                       {value}, "a density is a finite number >= 0 (" + section + ")");
+  }
+  if (c.negative) add_hint(std::string(warp_pdf_function(warp)) + " returns a negative density; a density is >= 0 (" + section + ")");
+  if (c.not_zero_outside) {
+    std::ostringstream hint;
+    hint << warp_pdf_function(warp) << " is not 0 where the warp never goes (at "
+         << point_text(warp, pdf_argument_at(warp, c.not_zero_outside->x, c.not_zero_outside->y))
+         << (is_hemisphere(warp) ? ", below the surface" : "") << "): return 0 there (" << section << ")";
+    add_hint(hint.str());
+  }
+  if (c.mistake_hint) {
+    add_hint(*c.mistake_hint + " (" + section + ")");
+  } else if (c.constant_factor) {
+    std::ostringstream hint;
+    hint.precision(4);
+    hint << warp_pdf_function(warp) << " is off by a constant factor " << *c.constant_factor
+         << ": it integrates to " << *c.constant_factor << ", not 1 (not normalised: divide by the "
+         << (is_direction_warp(warp) ? "solid angle" : "area") << " of the whole domain) (" << section << ")";
+    add_hint(hint.str());
+  }
+}
+
+void expect_pdf_integrates_to_one(Warp warp) {
+  const std::string section = handout_section(warp);
+  if (warp == Warp::UniformTriangle) {
+    // Triangles of every size and shape: pdf x area must be 1 on each.
+    Pcg32 random(kSeed, testkit::stream_of(std::string(kStage) + "/triangles"));
+    std::vector<glm::vec3> corners;
+    std::vector<float> areas;
+    for (int i = 0; i < 64; ++i) {
+      const float size = std::pow(10.0f, random.uniform(-2.0f, 2.0f));
+      const glm::vec3 p0 = testkit::random_vec3(random, -10.0f, 10.0f);
+      const glm::vec3 p1 = p0 + size * testkit::random_vec3(random, -1.0f, 1.0f);
+      const glm::vec3 p2 = p0 + size * testkit::random_vec3(random, -1.0f, 1.0f);
+      const float area = 0.5f * glm::length(glm::cross(p1 - p0, p2 - p0));
+      if (!(area > 1e-6f * size * size)) continue;
+      corners.insert(corners.end(), {p0, p1, p2});
+      areas.push_back(area);
+    }
+    const std::vector<float> values = warp_pdfs(warp, corners);
+    int failures = 0;
+    bool returns_area = true, constant = true;
+    const double first_ratio = static_cast<double>(values[0]) * areas[0];
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const double integral = static_cast<double>(values[i]) * areas[i];
+      returns_area = returns_area && std::fabs(values[i] - areas[i]) <= 1e-3f * areas[i];
+      constant = constant && std::fabs(integral - first_ratio) <= 1e-3 * std::fabs(first_ratio);
+      if (std::isfinite(integral) && std::fabs(integral - 1.0) <= 1e-3) continue;
+      if (++failures <= 2)
+        ADD_FAILURE() << "uniform_triangle_pdf(" << corners[3 * i] << ", " << corners[3 * i + 1] << ", "
+                      << corners[3 * i + 2] << ") = " << values[i] << " on a triangle of area " << areas[i]
+                      << ": the density times the area is " << integral << ", expected 1 (within 1e-3)";
+    }
+    if (failures == 0) return;
+    if (hint_if_not_finite("uniform_triangle_pdf", {values[0]}, "the density is 1 / area (" + section + ")")) {
+    } else if (returns_area) {
+      add_hint("uniform_triangle_pdf returns the area; the density is 1 / area (" + section + ")");
+    } else if (constant) {
+      std::ostringstream hint;
+      hint.precision(4);
+      hint << "uniform_triangle_pdf is off by a constant factor " << first_ratio
+           << " (not normalised): the density is 1 / area, the area being |cross(p1 - p0, p2 - p0)| / 2 (" << section << ")";
+      add_hint(hint.str());
+    } else {
+      add_hint("uniform_triangle_pdf must be 1 / area of the triangle given (" + section + ")");
+    }
+    ADD_FAILURE() << failures << " of " << values.size() << " triangles";
+    return;
+  }
+  const PdfData& pdf = pdf_data_of(warp);
+  const PdfComparison c = compare_pdf(warp, pdf);
+  bool failed = false;
+  if (!(std::fabs(pdf.integral - 1.0) <= 1e-3) || c.non_finite || c.negative) {
+    failed = true;
+    ADD_FAILURE() << warp_pdf_function(warp) << " integrates to " << pdf.integral << " over "
+                  << (is_direction_warp(warp) ? "the whole sphere of directions" : "the unit disk")
+                  << ", expected 1 (within 1e-3)";
+  }
+  if (warp == Warp::UniformDisk) {
+    // Outside the disk the density is 0.
+    const std::vector<glm::vec3> outside = {{1.05f, 0, 0}, {0, -1.5f, 0}, {2.0f, 2.0f, 0}, {-0.8f, 0.8f, 0}};
+    const std::vector<float> values = warp_pdfs(warp, outside);
+    for (std::size_t i = 0; i < outside.size(); ++i)
+      if (values[i] != 0.0f) {
+        failed = true;
+        add_hint("uniform_disk_pdf must be 0 outside the unit disk (x^2 + y^2 > 1) (" + section + ")");
+        ADD_FAILURE() << "uniform_disk_pdf(" << point_text(warp, outside[i]) << ") = " << values[i]
+                      << " outside the disk, expected 0";
+      }
+  }
+  if (failed) hint_pdf(warp, pdf, c);
+}
+
+void expect_pdf_matches_samples(Warp warp) {
+  const WarpData& data = data_of(warp);
+  const PdfData& pdf = pdf_data_of(warp);
+  const PdfComparison c = compare_pdf(warp, pdf);
+  // The density must be > 0 wherever the warp goes (the renderer divides by it).
+  std::vector<glm::vec3> arguments;
+  std::vector<std::size_t> which;
+  for (std::size_t i = 0; i < data.samples.size() && which.size() < 2000; i += 97) {
+    const glm::vec3& s = data.samples[i];
+    if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z) || !domain_problem(warp, s).empty()) continue;
+    which.push_back(i);
+    if (warp == Warp::UniformTriangle) continue;
+    arguments.push_back(s);
+  }
+  if (warp != Warp::UniformTriangle && !arguments.empty()) {
+    const std::vector<float> values = warp_pdfs(warp, arguments);
+    for (std::size_t k = 0; k < values.size(); ++k)
+      if (!(values[k] > 0.0f) || !std::isfinite(values[k])) {
+        add_hint(std::string(warp_pdf_function(warp)) + " returns " +
+                 (std::isnan(values[k]) ? "NaN" : std::isinf(values[k]) ? "infinity" : "0") + " for a " +
+                 (is_direction_warp(warp) ? "direction" : "point") + " that " + warp_sample_function(warp) +
+                 " returns: the renderer divides by the pdf, giving NaN or infinity (" + handout_section(warp) + ")");
+        ADD_FAILURE() << warp_pdf_function(warp) << "(" << point_text(warp, arguments[k]) << ") = " << values[k]
+                      << " for the sample of " << input_text(data.inputs[which[k]]);
+        break;
+      }
+  }
+  const testkit::ChiSquareResult result = chi_square_against(data, pdf.expected);
+  if (result.passed) return;
+  const bool samples_right = chi_square_against(data, data.expected).passed;
+  if (c.equals_intended && !samples_right) {
+    add_hint(std::string(warp_pdf_function(warp)) + " is right; your samples are not (see " + test_prefix(warp) +
+             "FollowsIntendedDensity)");
+  } else {
+    hint_pdf(warp, pdf, c);
+    if (!c.mistake_hint && !c.constant_factor && !c.not_zero_outside && !c.non_finite && !c.negative) {
+      // Where the pdf and the histogram disagree most.
+      const auto& counts = data.histogram.counts();
+      std::size_t worst = 0;
+      double worst_score = -1;
+      for (std::size_t cell = 0; cell < counts.size(); ++cell) {
+        const double e = std::max(pdf.expected[cell], 1.0);
+        const double score = std::fabs(counts[cell] - pdf.expected[cell]) / std::sqrt(e);
+        if (score > worst_score) worst_score = score, worst = cell;
+      }
+      const int column = static_cast<int>(worst % data.histogram.columns()), row = static_cast<int>(worst / data.histogram.columns());
+      const double u = data.histogram.u_min() + (column + 0.5) * data.histogram.cell_width();
+      const double v = data.histogram.v_min() + (row + 0.5) * data.histogram.cell_height();
+      const double measure = data.histogram.cell_area() * jacobian_at(warp, u, v);
+      std::ostringstream hint;
+      hint.precision(3);
+      hint << warp_pdf_function(warp) << " does not describe your samples: near "
+           << point_text(warp, warp == Warp::UniformTriangle
+                                   ? glm::vec3(static_cast<float>(v * (1 - u)), static_cast<float>(v * u), 0.0f)
+                                   : pdf_argument_at(warp, u, v))
+           << " it gives " << pdf.values[worst * 16] << " where your samples' density is "
+           << counts[worst] / (static_cast<double>(data.samples.size()) * measure)
+           << (warp == Warp::UniformTriangle ? " (on the unit triangle)" : "") << " (" << handout_section(warp) << ")";
+      add_hint(hint.str());
+    }
+  }
+  ADD_FAILURE() << warp_sample_function(warp) << "'s samples do not follow " << warp_pdf_function(warp) << " ("
+                << result.reason << ")\n  " << result.describe() << "\n  a correct pair fails this test by bad luck "
+                << "with probability " << kLevel << " (fixed seed " << kSeed << ")";
+}
+
+// Each warp: its samples in their domain (1 point), following the intended density (2), its pdf
+// integrating to 1 (1) and describing its samples (2).
+GRADED_TEST(kStage, Stage07Sampling, UniformHemisphereSamplesInDomain, 1) { expect_samples_in_domain(Warp::UniformHemisphere); }
+GRADED_TEST(kStage, Stage07Sampling, UniformHemisphereFollowsIntendedDensity, 2) { expect_intended_density(Warp::UniformHemisphere); }
+GRADED_TEST(kStage, Stage07Sampling, UniformHemispherePdfIntegratesToOne, 1) { expect_pdf_integrates_to_one(Warp::UniformHemisphere); }
+GRADED_TEST(kStage, Stage07Sampling, UniformHemispherePdfMatchesSamples, 2) { expect_pdf_matches_samples(Warp::UniformHemisphere); }
+
+GRADED_TEST(kStage, Stage07Sampling, CosineHemisphereSamplesInDomain, 1) { expect_samples_in_domain(Warp::CosineHemisphere); }
+GRADED_TEST(kStage, Stage07Sampling, CosineHemisphereFollowsIntendedDensity, 2) { expect_intended_density(Warp::CosineHemisphere); }
+GRADED_TEST(kStage, Stage07Sampling, CosineHemispherePdfIntegratesToOne, 1) { expect_pdf_integrates_to_one(Warp::CosineHemisphere); }
+GRADED_TEST(kStage, Stage07Sampling, CosineHemispherePdfMatchesSamples, 2) { expect_pdf_matches_samples(Warp::CosineHemisphere); }
+
+GRADED_TEST(kStage, Stage07Sampling, UniformSphereSamplesInDomain, 1) { expect_samples_in_domain(Warp::UniformSphere); }
+GRADED_TEST(kStage, Stage07Sampling, UniformSphereFollowsIntendedDensity, 2) { expect_intended_density(Warp::UniformSphere); }
+GRADED_TEST(kStage, Stage07Sampling, UniformSpherePdfIntegratesToOne, 1) { expect_pdf_integrates_to_one(Warp::UniformSphere); }
+GRADED_TEST(kStage, Stage07Sampling, UniformSpherePdfMatchesSamples, 2) { expect_pdf_matches_samples(Warp::UniformSphere); }
+
+GRADED_TEST(kStage, Stage07Sampling, UniformDiskSamplesInDomain, 1) { expect_samples_in_domain(Warp::UniformDisk); }
+GRADED_TEST(kStage, Stage07Sampling, UniformDiskFollowsIntendedDensity, 2) { expect_intended_density(Warp::UniformDisk); }
+GRADED_TEST(kStage, Stage07Sampling, UniformDiskPdfIntegratesToOne, 1) { expect_pdf_integrates_to_one(Warp::UniformDisk); }
+GRADED_TEST(kStage, Stage07Sampling, UniformDiskPdfMatchesSamples, 2) { expect_pdf_matches_samples(Warp::UniformDisk); }
+
+GRADED_TEST(kStage, Stage07Sampling, UniformTriangleSamplesInDomain, 1) { expect_samples_in_domain(Warp::UniformTriangle); }
+GRADED_TEST(kStage, Stage07Sampling, UniformTriangleFollowsIntendedDensity, 2) { expect_intended_density(Warp::UniformTriangle); }
+GRADED_TEST(kStage, Stage07Sampling, UniformTrianglePdfIntegratesToOne, 1) { expect_pdf_integrates_to_one(Warp::UniformTriangle); }
+GRADED_TEST(kStage, Stage07Sampling, UniformTrianglePdfMatchesSamples, 2) { expect_pdf_matches_samples(Warp::UniformTriangle); }
+
+}  // namespace
+}  // namespace raylab::grading
