@@ -7,6 +7,7 @@
 
 #include "raylab/image.h"
 #include "raylab/stages/03_triangle.h"
+#include "raylab/testkit/warps.h"
 
 #include <optional>
 #include <string>
@@ -33,29 +34,10 @@ std::vector<std::vector<std::uint32_t>> triangles_hit(TriangleFunction function,
 Image render_stage_image(const std::string& stage_id);
 
 // Stage 07's warps, each with its density, called in bulk (a chi-square test needs 10^5 samples).
-enum class Warp : std::uint8_t { UniformHemisphere, CosineHemisphere, UniformSphere, UniformDisk, UniformTriangle };
-constexpr Warp kWarps[] = {Warp::UniformHemisphere, Warp::CosineHemisphere, Warp::UniformSphere, Warp::UniformDisk,
-                           Warp::UniformTriangle};
-inline const char* warp_sample_function(Warp warp) {
-  switch (warp) {
-    case Warp::UniformHemisphere: return "sample_uniform_hemisphere";
-    case Warp::CosineHemisphere: return "sample_cosine_hemisphere";
-    case Warp::UniformSphere: return "sample_uniform_sphere";
-    case Warp::UniformDisk: return "sample_uniform_disk";
-    case Warp::UniformTriangle: return "sample_uniform_triangle";
-  }
-  return "a warp";
-}
-inline const char* warp_pdf_function(Warp warp) {
-  switch (warp) {
-    case Warp::UniformHemisphere: return "uniform_hemisphere_pdf";
-    case Warp::CosineHemisphere: return "cosine_hemisphere_pdf";
-    case Warp::UniformSphere: return "uniform_sphere_pdf";
-    case Warp::UniformDisk: return "uniform_disk_pdf";
-    case Warp::UniformTriangle: return "uniform_triangle_pdf";
-  }
-  return "a density";
-}
+using testkit::kWarps;
+using testkit::Warp;
+using testkit::warp_pdf_function;
+using testkit::warp_sample_function;
 
 // The warp's result for each input: a direction as is; a disk point (x, y) as (x, y, 0);
 // barycentrics as (barycentric_b1, barycentric_b2, 0).
