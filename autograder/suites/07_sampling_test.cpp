@@ -447,6 +447,12 @@ void diagnose_samples(Warp warp, const WarpData& data) {
              handout_section(warp) + ")");
     return;
   }
+  if (data.first_out_of_domain) {
+    add_hint(std::to_string(data.out_of_domain) + " of " + std::to_string(data.samples.size()) + " samples are " +
+             data.out_of_domain_reason.substr(0, data.out_of_domain_reason.find(" (")) + " (see " + test_prefix(warp) +
+             "SamplesInDomain) (" + handout_section(warp) + ")");
+    return;
+  }
   for (const Mistake& mistake : sample_mistakes(warp)) {
     const std::vector<double> expected = data.histogram.expected_counts(
         [&](double u, double v) { return mistake.pdf(u, v) * jacobian_at(warp, u, v); },
