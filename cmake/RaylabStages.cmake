@@ -100,6 +100,12 @@ foreach(index RANGE ${raylab_last_stage})
   list(APPEND raylab_short_ids "${short_id}")
 
   raylab_table_get(title "${where}" stages ${index} title)
+  # "title_zh": the title in Simplified Chinese (the grader's table with --lang zh). Optional here
+  # so that a new row builds before its translation; the test messages_are_paired asks for it.
+  string(JSON title_zh ERROR_VARIABLE title_zh_missing GET "${raylab_table_text}" stages ${index} title_zh)
+  if(title_zh_missing)
+    set(title_zh "")
+  endif()
   raylab_table_get(handout "${where}" stages ${index} handout)
   raylab_table_get(section "${where}" stages ${index} section)
   raylab_table_string_list(files "${where}: \"files\"" stages ${index} files)
@@ -171,6 +177,7 @@ foreach(index RANGE ${raylab_last_stage})
   # One C++ initializer per stage, in the order of StageDescription's fields.
   raylab_cxx_literal(id_literal "${id}")
   raylab_cxx_literal(title_literal "${title}")
+  raylab_cxx_literal(title_zh_literal "${title_zh}")
   raylab_cxx_literal_list(files_literal ${files})
   raylab_cxx_literal_list(functions_literal ${functions})
   raylab_cxx_literal(handout_literal "${handout}")
@@ -184,7 +191,7 @@ foreach(index RANGE ${raylab_last_stage})
     set(bonus_literal false)
   endif()
   string(APPEND raylab_table_entries
-         "      {${id_literal}, ${title_literal}, ${files_literal}, ${functions_literal}, ${handout_literal},\n"
+         "      {${id_literal}, ${title_literal}, ${title_zh_literal}, ${files_literal}, ${functions_literal}, ${handout_literal},\n"
          "       ${section_literal}, ${scene_literal}, ${shows_literal}, ${needs_literal}, ${points}, ${bonus_literal}},\n")
 endforeach()
 

@@ -1,13 +1,15 @@
 // The autograder's entry point, shared by every variant (variant_main.cpp calls it):
 // grades the stage functions of the stage code its stage server links.
 //
-//   autograder [--stage ID]... [--json results.json] [--output DIR] [--timeout S] [--list]
+//   autograder [--stage ID]... [--json results.json] [--output DIR] [--timeout S] [--lang en|zh] [--list]
 //
 // A stage is named by its id in stages.json or its short form: 05b_bvh_sah, 05b or 5b.
 //
 // It is the judge (supervisor.cpp): it runs the suites itself and never runs stage code; every
 // stage function it calls is answered by a sandboxed stage server (stage_server_main.cpp,
 // built as <this program>-stage-server), which links the graded stage code.
+//
+// It speaks English or Simplified Chinese (messages.h): --lang, else LC_ALL / LC_MESSAGES / LANG.
 #include "grading.h"
 #include "supervisor.h"
 
@@ -19,12 +21,14 @@
 #include <filesystem>
 #include <iostream>
 
-int raylab_autograder_main(int argc, char** argv, const char* description) {
+int raylab_autograder_main(int argc, char** argv, const char* description, const char* description_zh) {
   using namespace raylab::grading;
   CLI::App app{"raylab autograder: grades your stage functions against the reference"};
   SupervisorOptions options;
   options.output_directory = "grading-output";
   options.description = description;
+  options.description_zh = description_zh;
+  std::string language_name;
   bool list = false;
   std::vector<std::string> stage_names;
   app.add_option("--stage", stage_names,
@@ -45,6 +49,10 @@ int raylab_autograder_main(int argc, char** argv, const char* description) {
   app.add_option("--stage-server", options.server_path, "The stage server to grade (default: this program's name + -stage-server)");
   app.add_flag("--verbose", options.verbose, "Also show notes (image metrics) of passed tests");
   app.add_flag("--list", list, "List the stages and their tests, then exit");
+  app.add_option("--lang", language_name,
+                 "Language of the table, the failures and the hints: en or zh (default: from LC_ALL, LC_MESSAGES or "
+                 "LANG; zh_CN... is Chinese)")
+      ->check(CLI::IsMember({"en", "zh"}));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -53,6 +61,7 @@ int raylab_autograder_main(int argc, char** argv, const char* description) {
     std::cerr << "autograder: " << e.what() << " (see autograder --help)\n";
     return 1;
   }
+  if (!language_name.empty()) set_language(*parse_language(language_name));
   const std::vector<std::string> problems = registration_problems();
   if (!problems.empty()) {
     std::cerr << "autograder: the suites and stages.json disagree (the grader's bug, not yours):\n";
@@ -62,18 +71,23 @@ int raylab_autograder_main(int argc, char** argv, const char* description) {
   for (const std::string& name : stage_names) {
     const StageInfo* stage = find_stage(std::string_view(name));
     if (!stage) {
-      std::cerr << "autograder: there is no stage \"" << name << "\"; the stages are " << raylab::stage_ids_text()
-                << " (or their short forms, e.g. 05b)\n";
+      std::cerr << render({MessageId::console_no_such_stage, {{"name", name}, {"stages", raylab::stage_ids_text()}}})
+                << "\n";
       return 1;
     }
     options.stages.push_back(stage->number);
   }
   if (list) {
     for (const StageInfo& stage : stages()) {
-      std::cout << stage.id << ": " << stage.title << " (" << stage.points << " points; handout: " << stage.handout
-                << ")\n";
+      std::cout << render({MessageId::console_list_stage,
+                           {{"stage", stage.id}, {"title", stage.title_text}, {"points", std::to_string(stage.points)},
+                            {"handout", stage.handout_text}}})
+                << "\n";
       for (const TestInfo& test : tests())
-        if (test.stage == stage.number) std::cout << "    " << test.name << " (" << test.points << " points)\n";
+        if (test.stage == stage.number)
+          std::cout << "    "
+                    << render({MessageId::console_list_test, {{"test", test.name}, {"points", std::to_string(test.points)}}})
+                    << "\n";
     }
     return 0;
   }

@@ -1,5 +1,6 @@
 #include "results.h"
 
+#include <cstdint>
 #include <cstdio>
 #include <sstream>
 
@@ -9,17 +10,48 @@ namespace {
 constexpr std::size_t kShownOutputBytes = 4096;
 constexpr int kShownOutputLines = 40;
 
+std::string text_of(MessageId id, std::vector<MessageArg> args = {}) { return render(Message(id, std::move(args))); }
+
 std::string status_text(const StageResult& stage) {
-  if (stage.not_attempted) return "not attempted";
+  if (stage.not_attempted) return text_of(MessageId::console_stage_not_attempted);
   int failed = 0, not_attempted = 0;
   for (const TestResult& t : stage.tests) {
     failed += t.status != Status::Passed && t.status != Status::NotAttempted;
     not_attempted += t.status == Status::NotAttempted;
   }
-  std::string text = failed == 0 ? "passed" : std::to_string(failed) + " of " + std::to_string(stage.tests.size()) + " tests failed";
-  if (not_attempted > 0) text += "; " + std::to_string(not_attempted) + " tests not attempted (a function still a stub)";
-  if (!stage.problem.empty()) text += "; " + stage.problem;
+  std::string text = failed == 0 ? text_of(MessageId::console_passed)
+                                 : text_of(MessageId::console_tests_failed,
+                                           {{"failed", std::to_string(failed)}, {"count", std::to_string(stage.tests.size())}});
+  if (not_attempted > 0) text += text_of(MessageId::console_tests_not_attempted, {{"count", std::to_string(not_attempted)}});
+  if (!stage.problem.empty()) text += text_of(MessageId::console_problem, {{"problem", stage.problem}});
   return text;
+}
+
+// The columns a text takes in a terminal: a CJK character or full-width punctuation takes two.
+std::size_t display_width(const std::string& text) {
+  std::size_t width = 0;
+  for (std::size_t i = 0; i < text.size();) {
+    const unsigned char lead = static_cast<unsigned char>(text[i]);
+    const std::size_t length = lead < 0x80 ? 1 : lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 1;
+    std::uint32_t code = length == 1 ? lead : lead & (0xFF >> (length + 1));
+    for (std::size_t k = 1; k < length && i + k < text.size(); ++k) code = (code << 6) | (text[i + k] & 0x3F);
+    const bool wide = (code >= 0x1100 && code <= 0x115F) || (code >= 0x2E80 && code <= 0xA4CF) ||
+                      (code >= 0xAC00 && code <= 0xD7A3) || (code >= 0xF900 && code <= 0xFAFF) ||
+                      (code >= 0xFE30 && code <= 0xFE4F) || (code >= 0xFF00 && code <= 0xFF60) ||
+                      (code >= 0xFFE0 && code <= 0xFFE6);
+    width += wide ? 2 : 1;
+    i += length;
+  }
+  return width;
+}
+// `text` padded with spaces to `width` columns, on the right (left-aligned) or on the left.
+std::string pad_right(const std::string& text, std::size_t width) {
+  const std::size_t used = display_width(text);
+  return used >= width ? text : text + std::string(width - used, ' ');
+}
+std::string pad_left(const std::string& text, std::size_t width) {
+  const std::size_t used = display_width(text);
+  return used >= width ? text : std::string(width - used, ' ') + text;
 }
 
 // Printable: control characters (escape sequences that could move the cursor or rewrite the
@@ -44,24 +76,25 @@ int StageResult::max() const {
   return sum;
 }
 
-std::string test_output(const TestResult& t) {
+std::string test_output(const TestResult& t, Language language) {
   std::string out;
-  for (const std::string& m : t.messages) out += m + "\n";
-  for (const std::string& h : t.hints) out += "hint: " + h + "\n";
+  for (const Message& m : t.messages) out += render(m, language) + "\n";
+  for (const Message& h : t.hints) out += render({MessageId::console_hint, {{"hint", h}}}, language) + "\n";
   for (const std::string& n : t.notes) out += n + "\n";
   return out;
 }
 
-void print_results(const std::vector<StageResult>& results, const std::string& description, bool verbose) {
-  std::printf("\nraylab autograder: %s\n\n", description.c_str());
-  std::printf("  %-22s %9s  %s\n", "stage", "points", "status");
+void print_results(const std::vector<StageResult>& results, const Message& description, bool verbose) {
+  std::printf("\n%s\n\n", text_of(MessageId::console_title, {{"description", description}}).c_str());
+  std::printf("  %s %s  %s\n", pad_right(text_of(MessageId::console_stage), 22).c_str(),
+              pad_left(text_of(MessageId::console_points), 9).c_str(), text_of(MessageId::console_status).c_str());
   int earned = 0, max = 0;
   for (const StageResult& stage : results) {
     std::printf("  %-22s %4d/%-4d  %s\n", stage.stage->id.c_str(), stage.earned(), stage.max(), status_text(stage).c_str());
     earned += stage.earned();
     max += stage.max();
   }
-  std::printf("  %-22s %4d/%-4d\n", "total", earned, max);
+  std::printf("  %s %4d/%-4d\n", pad_right(text_of(MessageId::console_total), 22).c_str(), earned, max);
 
   for (const StageResult& stage : results) {
     if (stage.not_attempted) continue;
@@ -70,16 +103,19 @@ void print_results(const std::vector<StageResult>& results, const std::string& d
       const bool show = t.status != Status::Passed || (verbose && !t.notes.empty());
       if (!show) continue;
       if (!header) {
-        std::printf("\n%s: %s (handout: %s)\n", stage.stage->id.c_str(), stage.stage->title.c_str(),
-                    handout_of(*stage.stage).c_str());
+        std::printf("\n%s\n", text_of(MessageId::console_failures_header,
+                                       {{"stage", stage.stage->id}, {"title", stage.stage->title_text},
+                                        {"handout", stage.stage->handout_text}})
+                                   .c_str());
         header = true;
       }
-      const char* label = t.status == Status::Passed         ? "passed"
-                          : t.status == Status::Lost         ? "LOST"
-                          : t.status == Status::NotAttempted ? "not attempted:"
-                                                             : "FAILED";
-      std::printf("  %-6s %s (%d points)\n", label, t.info.name.c_str(), t.info.points);
-      std::istringstream lines(test_output(t));
+      const MessageId label = t.status == Status::Passed         ? MessageId::console_label_passed
+                              : t.status == Status::Lost         ? MessageId::console_label_lost
+                              : t.status == Status::NotAttempted ? MessageId::console_label_not_attempted
+                                                                 : MessageId::console_label_failed;
+      std::printf("  %s %s%s\n", pad_right(text_of(label), 6).c_str(), t.info.name.c_str(),
+                  text_of(MessageId::console_test_points, {{"points", std::to_string(t.info.points)}}).c_str());
+      std::istringstream lines(test_output(t, language()));
       for (std::string line; std::getline(lines, line);) std::printf("         %s\n", printable(line).c_str());
     }
   }
@@ -88,7 +124,7 @@ void print_results(const std::vector<StageResult>& results, const std::string& d
   for (const StageResult& stage : results) {
     if (stage.output.empty()) continue;
     if (!header) {
-      std::printf("\nyour program's output (printed by your stage code; it does not change the scores above):\n");
+      std::printf("\n%s\n", text_of(MessageId::console_output_header).c_str());
       header = true;
     }
     std::printf("  %s:\n", stage.stage->id.c_str());
@@ -97,12 +133,12 @@ void print_results(const std::vector<StageResult>& results, const std::string& d
     for (std::string line; std::getline(lines, line) && shown < kShownOutputLines; ++shown)
       std::printf("    | %s\n", printable(line).c_str());
     if (stage.output.size() > kShownOutputBytes || shown == kShownOutputLines)
-      std::printf("    (%zu bytes in all; the rest is not shown)\n", stage.output.size());
+      std::printf("    %s\n", text_of(MessageId::console_output_cut, {{"bytes", std::to_string(stage.output.size())}}).c_str());
   }
   std::printf("\n");
   for (const StageResult& stage : results)
     if (stage.not_attempted && !stage.tests.empty() && !stage.tests.front().messages.empty()) {
-      std::printf("next: %s\n", stage.tests.front().messages.front().c_str());
+      std::printf("%s\n", text_of(MessageId::console_next, {{"what", stage.tests.front().messages.front()}}).c_str());
       break;
     }
 }

@@ -21,6 +21,20 @@ std::vector<StageInfo>& stage_registry() {
       stage.id = description.id;
       stage.title = description.display_title();
       stage.handout = description.handout_reference();
+      // docs/zh/<name>.md is the Chinese twin of docs/<name>.md, with the same sections.
+      const std::string handout(description.handout);
+      const std::string handout_zh = "docs/zh/" + handout.substr(handout.rfind('/') + 1);
+      Message handout_text = verbatim("");
+      handout_text.args = {MessageArg::bilingual("text", handout, handout_zh)};
+      if (!description.handout_section.empty())
+        handout_text = {MessageId::console_handout_section,
+                        {{"handout", handout_text}, {"section", std::string(description.handout_section)}}};
+      stage.handout_text = handout_text;
+      const std::string title(description.title);
+      Message title_text = verbatim("");
+      title_text.args = {MessageArg::bilingual("text", title, description.title_zh.empty() ? title : std::string(description.title_zh))};
+      if (description.bonus) title_text = {MessageId::console_bonus_title, {{"title", title_text}}};
+      stage.title_text = title_text;
       stage.points = description.points;
       for (std::string_view needed : description.needs)
         for (const StageInfo& earlier : rows)
@@ -46,7 +60,8 @@ std::vector<TestInfo>& test_registry() {
 }
 
 struct CurrentTest {
-  std::vector<std::string> hints, notes;
+  std::vector<Message> hints;
+  std::vector<std::string> notes;
 };
 CurrentTest& current() {
   static CurrentTest test;
@@ -88,6 +103,18 @@ std::string name_non_finite(const std::string& text) {
 std::vector<std::string> name_non_finite(const std::vector<std::string>& texts) {
   std::vector<std::string> out;
   for (const std::string& text : texts) out.push_back(name_non_finite(text));
+  return out;
+}
+Message name_non_finite(Message message) {
+  for (MessageArg& arg : message.args) {
+    arg.text = name_non_finite(arg.text);
+    for (Message& part : arg.parts) part = name_non_finite(part);
+  }
+  return message;
+}
+std::vector<Message> name_non_finite(const std::vector<Message>& messages) {
+  std::vector<Message> out;
+  for (const Message& message : messages) out.push_back(name_non_finite(message));
   return out;
 }
 
@@ -186,7 +213,7 @@ std::vector<std::string> registration_problems() {
 
 const std::vector<TestInfo>& tests() { return test_registry(); }
 
-void add_hint(const std::string& hint) {
+void add_hint(const Message& hint) {
   auto& hints = current().hints;
   if (std::find(hints.begin(), hints.end(), hint) == hints.end()) hints.push_back(hint);
 }
@@ -218,8 +245,7 @@ void hint_about_dependencies(const std::string& stage_id) {
   for (int earlier : stage->depends_on)
     if (dependency_incomplete(earlier)) {
       const StageInfo* dependency = find_stage(earlier);
-      add_hint("this picture is rendered with your stage " + (dependency ? dependency->id : std::to_string(earlier)) +
-               ", which is not complete yet: finish it first, then this test means something");
+      add_hint({MessageId::dependency_incomplete, {{"stage", dependency ? dependency->id : std::to_string(earlier)}}});
     }
 }
 

@@ -5,8 +5,11 @@
 // by id (a call of one of its functions, so that a stub's NotImplemented is seen at once). A
 // graded test is a GoogleTest TEST with points, which must add up to the table's points for
 // the stage; inside it, add_hint() names a common mistake that the test recognised, so the
-// student reads "picture upside down: ..." next to the failure.
+// student reads "picture upside down: ..." next to the failure. A hint is a Message: an id of the
+// catalogue (messages.def: English and Chinese) with its values (messages.h).
 #pragma once
+
+#include "messages.h"
 
 #include <gtest/gtest.h>
 
@@ -24,6 +27,8 @@ struct StageInfo {
   std::string id;                // "05b_bvh_sah"
   std::string title;             // "bonus: binned SAH build"
   std::string handout;           // "docs/05_bvh.md, section 5"
+  Message title_text{MessageId::verbatim};    // the title in either language ("附加题：分桶 SAH 构建")
+  Message handout_text{MessageId::verbatim};  // the handout in either language ("docs/zh/05_bvh.md，第 5 节")
   std::vector<int> depends_on;   // "needs": the stages its image test renders with
   int points = 0;                // what stages.json says its tests add up to
   std::function<void()> probe;   // calls the stage's function(s) once; a stub throws
@@ -53,8 +58,9 @@ struct TestInfo {
 };
 const std::vector<TestInfo>& tests();
 
-// Inside a test: a hint for the student, shown with the failure (deduplicated).
-void add_hint(const std::string& hint);
+// Inside a test: a hint for the student, shown with the failure (deduplicated). A hint is an entry
+// of messages.def: add_hint({MessageId::sphere_hit_behind, {{"t", std::to_string(t)}}}).
+void add_hint(const Message& hint);
 // Inside a test: a note shown with the result whether it passes or not (e.g. image metrics).
 void add_note(const std::string& note);
 
@@ -70,7 +76,9 @@ struct TestRecord {
   std::string test;  // "Suite.Name"
   bool passed = false;
   bool not_implemented = false;  // a failure message is a stub's NotImplemented
-  std::vector<std::string> messages, hints, notes;
+  std::vector<std::string> messages;
+  std::vector<Message> hints;
+  std::vector<std::string> notes;
 };
 // The judge: calls on_test_start before each test and on_test_end after it.
 void install_recorder(std::function<void(const std::string&)> on_test_start,

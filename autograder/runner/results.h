@@ -13,28 +13,32 @@ enum class Status { Passed, Failed, NotAttempted, Lost };
 struct TestResult {
   TestInfo info;
   Status status = Status::Lost;
-  std::vector<std::string> messages, hints, notes;
+  std::vector<Message> messages;  // what went wrong (an assertion's text is verbatim(), English)
+  std::vector<Message> hints;
+  std::vector<std::string> notes;
   int earned() const { return status == Status::Passed ? info.points : 0; }
 };
 
 struct StageResult {
   const StageInfo* stage = nullptr;
   std::vector<TestResult> tests;
-  std::string problem;  // crash / time-out, for the table
+  std::string problem;  // crash / time-out, for the table (the stage session's English)
   bool not_attempted = false;
   std::string output;   // what the stage code printed (never parsed, only shown)
   int earned() const;
   int max() const;
 };
 
-// A test's messages, hints and notes, one per line.
-std::string test_output(const TestResult& test);
+// A test's messages, hints and notes, one per line, in `language`.
+std::string test_output(const TestResult& test, Language language);
 
 // console.cpp: the score table, then the failures with their hints, then the stage code's
 // own output, set apart.
-void print_results(const std::vector<StageResult>& results, const std::string& description, bool verbose);
+// In this run's language (messages.h); `description` names what is graded, in either language.
+void print_results(const std::vector<StageResult>& results, const Message& description, bool verbose);
 
-// results_json.cpp: Gradescope's results.json, written to a fresh temporary file beside `path`
+// results_json.cpp: Gradescope's results.json (English; each test's hints also as ids with their
+// English and Chinese texts), written to a fresh temporary file beside `path`
 // and renamed over it, so nothing another process wrote there first survives.
 void write_results_json(const std::vector<StageResult>& results, const std::string& path);
 

@@ -19,10 +19,18 @@ void write_results_json(const std::vector<StageResult>& results, const std::stri
   int earned = 0, max = 0;
   for (const StageResult& stage : results)
     for (const TestResult& t : stage.tests) {
+      // The hints as the catalogue names them (messages.def), for tools; "output" is what a student reads.
+      json hints = json::array();
+      for (const Message& hint : t.hints)
+        hints.push_back({{"id", std::string(message_name(hint.id))},
+                         {"text", render(hint, Language::English)},
+                         {"text_zh", render(hint, Language::Chinese)}});
       tests_json.push_back({{"name", stage.stage->id + ": " + t.info.name},
                             {"score", t.earned()},
                             {"max_score", t.info.points},
-                            {"output", test_output(t)},
+                            {"output", test_output(t, Language::English)},
+                            {"output_zh", test_output(t, Language::Chinese)},
+                            {"hints", hints},
                             {"visibility", "visible"}});
       earned += t.earned();
       max += t.info.points;

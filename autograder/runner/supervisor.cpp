@@ -6,6 +6,7 @@
 #include "stage_session.h"
 
 #include "raylab/error.h"
+#include "raylab/stage_table.h"
 
 #include <gtest/gtest.h>
 
@@ -14,9 +15,24 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 
 namespace raylab::grading {
 namespace {
+
+// "stage 01_camera_rays is not implemented yet: write generate_camera_ray in
+// assignments/01_camera_rays/camera_rays.cpp (handout: docs/01_camera_rays.md)", in either language:
+// the same sentence as NotImplemented's own (framework/src/error.cpp).
+Message not_implemented_message(const NotImplemented& e) {
+  const StageDescription* description = find_stage_description(e.stage_id());
+  const StageInfo* stage = find_stage(std::string_view(e.stage_id()));
+  if (!description || !stage) return verbatim(e.what());
+  MessageArg files("files", "assignments/" + std::string(description->files.front()));
+  for (std::size_t i = 1; i < description->files.size(); ++i)
+    files.parts.push_back({MessageId::stage_file_or, {{"file", "assignments/" + std::string(description->files[i])}}});
+  return {MessageId::stage_not_implemented,
+          {{"stage", stage->id}, {"function", e.function()}, files, {"handout", stage->handout_text}}};
+}
 
 // Runs the GoogleTest suites of one stage here, in the judge; their stage calls go to the
 // session's stage server.
@@ -33,25 +49,25 @@ StageResult grade_stage(const StageInfo& stage) {
   StageResult result;
   result.stage = &stage;
   for (const TestInfo& test : tests())
-    if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {"not run"}, {}, {}});
+    if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {MessageId::test_not_run}, {}, {}});
 
   StageSession& session = StageSession::instance();
   session.begin_stage();
   session.begin_test("");
   // A stub throws NotImplemented at once: the stage is not attempted, no test runs.
-  std::string not_implemented;
+  std::optional<Message> not_implemented;
   try {
     if (stage.probe) stage.probe();
   } catch (const NotImplemented& e) {
-    not_implemented = e.what();
+    not_implemented = not_implemented_message(e);
   } catch (...) {
     // Anything else the probe meets is for the tests to find and explain.
   }
-  if (!not_implemented.empty()) {
+  if (not_implemented) {
     result.not_attempted = true;
     for (TestResult& t : result.tests) {
       t.status = Status::NotAttempted;
-      t.messages = {not_implemented};
+      t.messages = {*not_implemented};
     }
   } else {
     ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
@@ -67,7 +83,7 @@ StageResult grade_stage(const StageInfo& stage) {
                            if (t.info.full_name() != record.test) continue;
                            if (const auto loss = StageSession::instance().test_loss()) {
                              t.status = Status::Lost;  // whatever the test concluded without the stage's answers
-                             t.messages = {*loss};
+                             t.messages = {verbatim(*loss)};
                              t.hints.clear();
                              t.notes.clear();
                              return;
@@ -75,7 +91,8 @@ StageResult grade_stage(const StageInfo& stage) {
                            t.status = record.passed            ? Status::Passed
                                       : record.not_implemented ? Status::NotAttempted
                                                                : Status::Failed;
-                           t.messages = record.messages;
+                           t.messages.clear();
+                           for (const std::string& message : record.messages) t.messages.push_back(verbatim(message));
                            t.hints = record.hints;
                            t.notes = record.notes;
                          }
@@ -136,17 +153,20 @@ int run_supervisor(const SupervisorOptions& options) {
     for (int dependency : stage->depends_on)
       if (complete.count(dependency) && !complete[dependency]) incomplete.push_back(dependency);
     set_incomplete_dependencies(incomplete);
-    std::fprintf(stderr, "grading %s ...\n", stage->id.c_str());
+    std::fprintf(stderr, "%s\n", render({MessageId::console_grading_stage, {{"stage", stage->id}}}).c_str());
     results.push_back(grade_stage(*stage));
     complete[stage->number] = results.back().earned() == results.back().max();
   }
 
   std::fflush(stderr);
-  print_results(results, options.description, options.verbose);
-  if (options.verbose) std::printf("stage code ran sandboxed: %s\n", sandbox_description().c_str());
+  Message description = verbatim("");
+  description.args = {MessageArg::bilingual("text", options.description, options.description_zh)};
+  print_results(results, description, options.verbose);
+  if (options.verbose)
+    std::printf("%s\n", render({MessageId::console_sandbox, {{"how", sandbox_description()}}}).c_str());
   if (!options.json_path.empty()) {
     write_results_json(results, options.json_path);
-    std::printf("results written to %s\n", options.json_path.c_str());
+    std::printf("%s\n", render({MessageId::console_results_written, {{"path", options.json_path}}}).c_str());
   }
   std::fflush(stdout);
   return 0;

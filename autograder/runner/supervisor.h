@@ -10,6 +10,7 @@ namespace raylab::grading {
 
 struct SupervisorOptions {
   std::string description;         // which code is graded, for the heading
+  std::string description_zh;      // the same in Chinese
   std::string server_path;         // the stage server linked with that code
   std::vector<int> stages;         // empty: every stage
   std::string json_path;           // Gradescope results.json, if set

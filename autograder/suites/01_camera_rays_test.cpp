@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -121,11 +122,19 @@ ScreenFit fit_screen_mapping(const Camera& camera) {
   return fit;
 }
 
+// A number as a stream writes it by default (6 significant digits): the hints' format.
+template <typename Number>
+std::string stream_text(Number value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
 bool close_ratio(double got, double expected) { return std::fabs(got - expected) <= kExtentTolerance * std::fabs(expected); }
 
 // The hints for the extents: every combination of the screen-size, field-of-view and aspect
 // mistakes and the flips is tried; the one that explains both axes with the fewest mistakes wins.
-std::vector<std::string> name_extent_mistakes(const Camera& camera, const ScreenFit& fit) {
+std::vector<Message> name_extent_mistakes(const Camera& camera, const ScreenFit& fit) {
   const double aspect = static_cast<double>(camera.width) / camera.height;
   const double half_angle = glm::radians(static_cast<double>(camera.fov_y_degrees)) / 2.0;
   const double scale = std::tan(half_angle);
@@ -133,38 +142,36 @@ std::vector<std::string> name_extent_mistakes(const Camera& camera, const Screen
   const double ratio_x = fit.x.extent / (aspect * scale), ratio_y = fit.y.extent / -scale;
   struct Mistake {
     double x, y;         // what it multiplies each axis's extent by
-    const char* hint;    // nullptr: no mistake
+    std::optional<MessageId> hint;  // none: no mistake
   };
   const Mistake sizes[] = {
-      {1.0, 1.0, nullptr},
-      {0.5, 0.5, "half-size screen: the factor 2 of `2 ndc - 1` is missing, so screen coordinates span [-0.5, 0.5] "
-                 "instead of [-1, 1] before aspect and scale, so everything looks twice as big (docs/01_camera_rays.md, section 2)"},
+      {1.0, 1.0, std::nullopt},
+      {0.5, 0.5, MessageId::camera_half_size_screen},
   };
   const Mistake fovs[] = {
-      {1.0, 1.0, nullptr},
-      {std::tan(2.0 * half_angle) / scale, std::tan(2.0 * half_angle) / scale, "field of view not halved: scale = tan(fov_y / 2), half the angle"},
-      {std::tan(degrees / 2.0) / scale, std::tan(degrees / 2.0) / scale,
-       "field of view still in degrees: std::tan takes radians, use degrees_to_radians(camera.fov_y_degrees)"},
-      {std::tan(degrees) / scale, std::tan(degrees) / scale, "field of view in degrees and not halved: scale = tan(degrees_to_radians(fov_y) / 2)"},
-      {1.0 / scale, 1.0 / scale, "field of view ignored: multiply the screen coordinates by scale = tan(fov_y / 2)"},
+      {1.0, 1.0, std::nullopt},
+      {std::tan(2.0 * half_angle) / scale, std::tan(2.0 * half_angle) / scale, MessageId::camera_fov_not_halved},
+      {std::tan(degrees / 2.0) / scale, std::tan(degrees / 2.0) / scale, MessageId::camera_fov_in_degrees},
+      {std::tan(degrees) / scale, std::tan(degrees) / scale, MessageId::camera_fov_in_degrees_not_halved},
+      {1.0 / scale, 1.0 / scale, MessageId::camera_fov_ignored},
   };
   const Mistake aspects[] = {
-      {1.0, 1.0, nullptr},
-      {1.0 / aspect, 1.0, "aspect ratio missing: multiply screen_x by aspect = width / height"},
-      {1.0 / (aspect * aspect), 1.0, "aspect ratio inverted: aspect = width / height, not height / width"},
-      {1.0 / aspect, aspect, "aspect ratio applied to y instead of x: multiply screen_x (not screen_y) by width / height"},
-      {1.0, aspect, "aspect ratio applied to y as well: it multiplies screen_x only"},
-      {1.0 / aspect, 1.0 / aspect, "aspect ratio applied to y instead of x, and inverted: multiply screen_x (not screen_y) by width / height"},
+      {1.0, 1.0, std::nullopt},
+      {1.0 / aspect, 1.0, MessageId::camera_aspect_missing},
+      {1.0 / (aspect * aspect), 1.0, MessageId::camera_aspect_inverted},
+      {1.0 / aspect, aspect, MessageId::camera_aspect_on_y},
+      {1.0, aspect, MessageId::camera_aspect_on_both},
+      {1.0 / aspect, 1.0 / aspect, MessageId::camera_aspect_on_y_inverted},
   };
   const Mistake flips_x[] = {
-      {1.0, 1.0, nullptr},
-      {-1.0, 1.0, "picture mirrored left-right: column 0 is the LEFT edge, so screen_x = (2 ndc_x - 1) * aspect * scale, and right = cross(forward, up)"},
+      {1.0, 1.0, std::nullopt},
+      {-1.0, 1.0, MessageId::camera_mirrored},
   };
   const Mistake flips_y[] = {
-      {1.0, 1.0, nullptr},
-      {1.0, -1.0, "picture upside down: row 0 is the TOP of the image, so screen_y = (1 - 2 ndc_y) * scale (docs/01_camera_rays.md, section 2)"},
+      {1.0, 1.0, std::nullopt},
+      {1.0, -1.0, MessageId::camera_upside_down},
   };
-  std::vector<std::string> best;
+  std::vector<Message> best;
   bool found = false;
   for (const Mistake& size : sizes)
     for (const Mistake& fov : fovs)
@@ -173,11 +180,11 @@ std::vector<std::string> name_extent_mistakes(const Camera& camera, const Screen
           for (const Mistake& flip_y : flips_y) {
             const Mistake* parts[] = {&size, &fov, &aspect_mistake, &flip_x, &flip_y};
             double x = 1.0, y = 1.0;
-            std::vector<std::string> hints;
+            std::vector<Message> hints;
             for (const Mistake* part : parts) {
               x *= part->x;
               y *= part->y;
-              if (part->hint) hints.emplace_back(part->hint);
+              if (part->hint) hints.emplace_back(*part->hint);
             }
             if (!close_ratio(ratio_x, x) || !close_ratio(ratio_y, y)) continue;
             if (!found || hints.size() < best.size()) best = hints;
@@ -187,65 +194,50 @@ std::vector<std::string> name_extent_mistakes(const Camera& camera, const Screen
   // camera.up used as the up axis: perpendicular to the view but not unit length, it scales y.
   const double up_length = glm::length(glm::dvec3(camera.up));
   if (std::fabs(up_length - 1.0) > 1e-3 && close_ratio(ratio_x, 1.0) && close_ratio(std::fabs(ratio_y), up_length))
-    return {"camera basis wrong: screen_y comes out " + std::to_string(up_length) + " times too large, the length of "
-            "camera.up: use true_up = cross(right, forward), a unit vector, not camera.up (docs/01_camera_rays.md, section 2)"};
-  std::ostringstream out;
-  out << "screen size wrong: your screen_x spans +-" << std::fabs(fit.x.extent) << " and screen_y +-" << std::fabs(fit.y.extent)
-      << " on a " << camera.width << "x" << camera.height << " image with fov_y " << camera.fov_y_degrees
-      << " degrees, where +-" << aspect * scale << " and +-" << scale
-      << " are expected (half-width aspect * scale, half-height scale = tan(fov_y / 2); docs/01_camera_rays.md, section 2)";
-  if (fit.x.extent < 0.0) out << "; and the picture is mirrored left-right";
-  if (fit.y.extent > 0.0) out << "; and the picture is upside down (row 0 is the TOP)";
-  return {out.str()};
+    return {{MessageId::camera_up_not_unit, {{"factor", std::to_string(up_length)}}}};
+  std::vector<Message> also;
+  if (fit.x.extent < 0.0) also.emplace_back(MessageId::camera_also_mirrored);
+  if (fit.y.extent > 0.0) also.emplace_back(MessageId::camera_also_upside_down);
+  return {{MessageId::camera_screen_size_wrong,
+           {{"extent_x", stream_text(std::fabs(fit.x.extent))}, {"extent_y", stream_text(std::fabs(fit.y.extent))},
+            {"width", std::to_string(camera.width)}, {"height", std::to_string(camera.height)},
+            {"fov_y", stream_text(camera.fov_y_degrees)}, {"expected_x", stream_text(aspect * scale)},
+            {"expected_y", stream_text(scale)}, {"also", also}}}};
 }
 
 // The hints for where in the pixel the rays go, per axis.
-void name_centre_mistakes(const char* axis, const AxisFit& fit, int size, std::vector<std::string>& hints) {
+void name_centre_mistakes(const char* axis, const AxisFit& fit, int size, std::vector<Message>& hints) {
   const double centre = fit.centre;
   if (std::fabs(centre - 0.5) <= kCentreTolerance) return;
   if (std::fabs(centre) <= kCentreTolerance) {
-    hints.emplace_back("pixel centre missing: aim through (pixel_x + 0.5, pixel_y + 0.5), the centre of the pixel, not its corner");
+    hints.emplace_back(MessageId::camera_pixel_centre_missing);
     return;
   }
-  std::ostringstream out;
   if (std::fabs(centre - (0.5 + size / 2.0)) <= kCentreTolerance || std::fabs(centre - size / 2.0) <= kCentreTolerance) {
-    out << "screen not centred on " << axis << ": the -1 of `2 ndc - 1` (or the 1 of `1 - 2 ndc_y`) is missing, so the "
-        << "screen starts at the centre of the view instead of spanning both sides (docs/01_camera_rays.md, section 2)";
-    hints.push_back(out.str());
-    if (std::fabs(centre - size / 2.0) <= kCentreTolerance)
-      hints.emplace_back("pixel centre missing: aim through (pixel_x + 0.5, pixel_y + 0.5), the centre of the pixel, not its corner");
+    hints.push_back({MessageId::camera_screen_not_centred, {{"axis", axis}}});
+    if (std::fabs(centre - size / 2.0) <= kCentreTolerance) hints.emplace_back(MessageId::camera_pixel_centre_missing);
     return;
   }
-  out << "rays shifted on " << axis << ": they go through raster " << axis << " = pixel + " << centre
-      << " instead of pixel + 0.5, the pixel's centre (docs/01_camera_rays.md, section 2)";
-  hints.push_back(out.str());
+  hints.push_back({MessageId::camera_rays_shifted, {{"axis", axis}, {"centre", stream_text(centre)}}});
 }
 
 // All the differences between the student's mapping on `camera` and the handout's; empty when
 // the fit finds none (the mistake is then somewhere else, e.g. the direction's length).
-std::vector<std::string> diagnose_mapping(const Camera& camera) {
+std::vector<Message> diagnose_mapping(const Camera& camera) {
   const ScreenFit fit = fit_screen_mapping(camera);
-  if (!fit.finite) {
-    std::ostringstream out;
-    out << "returns NaN (the direction of pixel (" << fit.non_finite_pixel.x << ", " << fit.non_finite_pixel.y << ") of a "
-        << camera.width << "x" << camera.height << " image is not finite): check for a division by zero "
-        << "(docs/01_camera_rays.md, section 3)";
-    return {out.str()};
-  }
-  const char* basis =
-      "camera basis wrong: your rays do not go through a flat image plane in front of the eye. Use forward = "
-      "normalize(look_at - position), right = normalize(cross(forward, up)), true_up = cross(right, forward), "
-      "direction = normalize(screen_x * right + screen_y * true_up + forward) (docs/01_camera_rays.md, section 2)";
-  if (!fit.in_front) return {std::string(basis) + "; some rays point away from look_at"};
+  if (!fit.finite)
+    return {{MessageId::camera_direction_not_finite,
+             {{"x", std::to_string(fit.non_finite_pixel.x)}, {"y", std::to_string(fit.non_finite_pixel.y)},
+              {"width", std::to_string(camera.width)}, {"height", std::to_string(camera.height)}}}};
+  const Message basis{MessageId::camera_basis_wrong, {{"also", ""}}};
+  if (!fit.in_front) return {{MessageId::camera_basis_wrong, {{"also", Message(MessageId::camera_also_rays_behind)}}}};
   const double scale = std::tan(glm::radians(static_cast<double>(camera.fov_y_degrees)) / 2.0);
   const double pixel_size = 2.0 * scale / camera.height;  // on the plane at distance 1, both axes
   const bool mixed = std::fabs(fit.x.other_axis) > 1e-3 * pixel_size || std::fabs(fit.y.other_axis) > 1e-3 * pixel_size;
   if (!fit.flat || mixed) return {basis};
-  std::vector<std::string> hints;
+  std::vector<Message> hints;
   if (std::fabs(fit.x.extent) < 1e-9 || std::fabs(fit.y.extent) < 1e-9) {
-    hints.emplace_back(std::string("screen_") + (std::fabs(fit.x.extent) < 1e-9 ? "x" : "y") +
-                       " is the same for every pixel: integer division? (pixel_x + 0.5f) / width divides in floating "
-                       "point, pixel_x / width with two ints gives 0 (docs/01_camera_rays.md, section 3)");
+    hints.push_back({MessageId::camera_integer_division, {{"axis", std::fabs(fit.x.extent) < 1e-9 ? "x" : "y"}}});
     return hints;
   }
   hints = name_extent_mistakes(camera, fit);
@@ -256,18 +248,17 @@ std::vector<std::string> diagnose_mapping(const Camera& camera) {
 
 // Names the mistakes that make the student's ray `got` differ from `expected` on `camera`.
 void diagnose(const Camera& camera, const glm::vec3& got, const glm::vec3& expected) {
-  if (hint_if_not_finite("direction", {got.x, got.y, got.z}, "check for a division by zero (docs/01_camera_rays.md, section 3)")) return;
+  if (hint_if_not_finite("direction", {got.x, got.y, got.z}, MessageId::camera_advice_division_by_zero)) return;
   Camera probe = camera;
   probe.width = kProbeWidth;
   probe.height = kProbeHeight;
   probe.fov_y_degrees = kProbeFovDegrees;
-  std::vector<std::string> hints = diagnose_mapping(probe);
+  std::vector<Message> hints = diagnose_mapping(probe);
   if (hints.empty()) hints = diagnose_mapping(camera);  // a mistake that shows only at this camera's size
-  for (const std::string& hint : hints) add_hint(hint);
+  for (const Message& hint : hints) add_hint(hint);
   const float length = glm::length(got);
   if (hints.empty() && std::fabs(length - 1.0f) > 1e-3f && glm::length(got / length - glm::normalize(expected)) < 1e-4f)
-    add_hint("direction not normalised: the direction is right but its length is " + std::to_string(length) +
-             "; return normalize(...) (docs/01_camera_rays.md, section 2)");
+    add_hint({MessageId::camera_not_normalised_length, {{"length", std::to_string(length)}}});
 }
 
 void expect_camera_ray(const Camera& camera, int pixel_x, int pixel_y, const glm::vec3& expected_direction) {
@@ -317,7 +308,7 @@ GRADED_TEST(kStage, Stage01CameraRays, OriginAtCameraAndUnitDirection, 2) {
       const Ray ray = generate_camera_ray(camera, x, y);
       ASSERT_EQ(ray.origin, camera.position) << "pixel (" << x << ", " << y << "): the ray must start at the camera";
       if (std::fabs(glm::length(ray.direction) - 1.0f) > 1e-4f)
-        add_hint("direction not normalised: return normalize(...) (docs/01_camera_rays.md, section 2)");
+        add_hint(MessageId::camera_not_normalised);
       ASSERT_NEAR(glm::length(ray.direction), 1.0f, 1e-4f) << "pixel (" << x << ", " << y << "): direction " << ray.direction;
       ASSERT_EQ(ray.t_min, 0.0f) << "leave t_min at 0";
       ASSERT_EQ(ray.t_max, kInfinity) << "leave t_max at infinity";
@@ -354,8 +345,7 @@ GRADED_TEST(kStage, Stage01CameraRays, RaysThroughOtherPointsOfThePixel, 2) {
     const glm::vec3 expected = glm::normalize(c.expected);
     if (glm::all(glm::lessThanEqual(glm::abs(got - expected), glm::vec3(kDirectionTolerance)))) continue;
     if (same_direction(got, generate_camera_ray(camera, c.pixel_x, c.pixel_y).direction, kDirectionTolerance))
-      add_hint("position_in_pixel ignored: aim through raster point (pixel_x + position_in_pixel.x, pixel_y + "
-               "position_in_pixel.y); (0.5, 0.5) is only the centre (docs/01_camera_rays.md, section 2)");
+      add_hint(MessageId::camera_position_in_pixel_ignored);
     ADD_FAILURE() << "point " << c.position_in_pixel << " of pixel (" << c.pixel_x << ", " << c.pixel_y << ") of a "
                   << camera << ":\n  expected direction " << expected << " (each component within "
                   << kDirectionTolerance << ")\n  got               " << got;

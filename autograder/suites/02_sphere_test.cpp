@@ -44,25 +44,24 @@ bool assumed_unit_direction(const Ray& ray, const glm::vec3& center, float radiu
 // Names the mistake behind a wrong answer, from the answer itself.
 void diagnose(const Ray& ray, const glm::vec3& center, float radius, std::optional<float> got, std::optional<float> expected) {
   const bool origin_inside = glm::length(ray.origin - center) < radius;
-  if (got && hint_if_not_finite("t", {*got}, "a negative discriminant is a miss: test it before std::sqrt, and divide "
-                                             "only by a = dot(d, d) (docs/02_sphere.md, section 2)")) {
+  if (got && hint_if_not_finite("t", {*got}, MessageId::sphere_advice_negative_discriminant)) {
   } else if (got && !(*got > ray.t_min)) {
-    add_hint("returns a hit behind the ray (t = " + std::to_string(*got) + "): only t_min < t < t_max counts (docs/02_sphere.md, section 2)");
+    add_hint({MessageId::sphere_hit_behind, {{"t", std::to_string(*got)}}});
   } else if (got && !(*got < ray.t_max)) {
-    add_hint("ignores t_max: a hit at t = " + std::to_string(*got) + " is beyond t_max = " + std::to_string(ray.t_max));
+    add_hint({MessageId::sphere_ignores_t_max, {{"t", std::to_string(*got)}, {"t_max", std::to_string(ray.t_max)}}});
   } else if (!got && expected && origin_inside) {
-    add_hint("misses when the origin is inside the sphere: the near root is then behind the ray, so return the far root");
+    add_hint(MessageId::sphere_misses_from_inside);
   } else if (got && expected && origin_inside && *got < *expected) {
-    add_hint("returns the near root when the origin is inside: it is behind the ray; return the far root");
+    add_hint(MessageId::sphere_near_root_inside);
   } else if (assumed_unit_direction(ray, center, radius, got)) {
-    add_hint("assumes a unit-length direction: a = dot(d, d) is not 1 in general, and t must be in units of d");
+    add_hint(MessageId::sphere_assumes_unit_direction);
   } else if (got && expected) {
     if (std::fabs(*got - *expected) < 1e-2f * std::max(1.0f, std::fabs(*expected)))
-      add_hint("close but not accurate: compute the roots in the stable form (docs/02_sphere.md, section 3)");
+      add_hint(MessageId::sphere_not_accurate);
   } else if (got && !expected) {
-    add_hint("reports a hit where there is none: check the sign test of the discriminant");
+    add_hint(MessageId::sphere_false_hit);
   } else if (!got && expected) {
-    add_hint("misses a sphere that the ray hits: check a, b, c (b = 2 dot(origin - center, d)) and the discriminant");
+    add_hint(MessageId::sphere_misses);
   }
 }
 

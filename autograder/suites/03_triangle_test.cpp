@@ -25,34 +25,33 @@ bool same_hit(const TriangleHit& a, const TriangleHit& b) {
   return close(a.t_hit, b.t_hit) && close(a.barycentric_b1, b.barycentric_b1) && close(a.barycentric_b2, b.barycentric_b2);
 }
 
-constexpr const char* kZeroDeterminant =
-    "a zero determinant (parallel ray or degenerate triangle) must be a miss, not a division";
+constexpr MessageId kZeroDeterminant = MessageId::triangle_advice_zero_determinant;
 
 void diagnose(const Ray& ray, std::optional<TriangleHit> got, std::optional<TriangleHit> expected, bool back_face) {
   if (got && (hint_if_not_finite("t_hit", {got->t_hit}, kZeroDeterminant) ||
               hint_if_not_finite("barycentric_b1", {got->barycentric_b1}, kZeroDeterminant) ||
               hint_if_not_finite("barycentric_b2", {got->barycentric_b2}, kZeroDeterminant))) {
   } else if (got && !(got->t_hit > ray.t_min)) {
-    add_hint("accepts a hit behind the ray (t = " + std::to_string(got->t_hit) + "): only t_min < t < t_max counts");
+    add_hint({MessageId::triangle_hit_behind, {{"t", std::to_string(got->t_hit)}}});
   } else if (got && !(got->t_hit < ray.t_max)) {
-    add_hint("ignores t_max: a hit at t = " + std::to_string(got->t_hit) + " is beyond t_max");
+    add_hint({MessageId::triangle_ignores_t_max, {{"t", std::to_string(got->t_hit)}}});
   } else if (got && !expected) {
     const float b0 = 1.0f - got->barycentric_b1 - got->barycentric_b2;
     if (got->barycentric_b1 < 0 || got->barycentric_b2 < 0 || b0 < 0)
-      add_hint("accepts points outside the triangle: require b1 >= 0, b2 >= 0 and b1 + b2 <= 1 (docs/03_triangle.md, section 2)");
+      add_hint(MessageId::triangle_accepts_outside);
     else
-      add_hint("reports a hit where there is none");
+      add_hint(MessageId::triangle_false_hit);
   } else if (got && expected) {
     if (close(got->barycentric_b1, expected->barycentric_b2) && close(got->barycentric_b2, expected->barycentric_b1))
-      add_hint("barycentrics swapped: b1 is the weight of p1 and b2 of p2 (point = (1-b1-b2) p0 + b1 p1 + b2 p2)");
+      add_hint(MessageId::triangle_barycentrics_swapped);
     else if (!close(got->t_hit, expected->t_hit))
-      add_hint("t_hit is wrong while the hit itself is found: t_hit = dot(s2, edge_02) / det");
+      add_hint(MessageId::triangle_t_wrong);
     else
-      add_hint("the barycentric coordinates are wrong: b1 = dot(s1, s) / det, b2 = dot(s2, direction) / det");
+      add_hint(MessageId::triangle_barycentrics_wrong);
   } else if (!got && expected && back_face) {
-    add_hint("culls back faces: this course hits both faces, so do not reject det < 0, only det == 0");
+    add_hint(MessageId::triangle_culls_back_faces);
   } else if (!got && expected) {
-    add_hint("misses a triangle that the ray hits: check the determinant and the inside test (edges count as inside)");
+    add_hint(MessageId::triangle_misses);
   }
 }
 

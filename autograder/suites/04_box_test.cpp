@@ -27,24 +27,21 @@ bool box_beyond_t_max(const Ray& ray, std::optional<float> got) { return got && 
 
 void diagnose(const Ray& ray, std::optional<float> got, std::optional<float> expected) {
   const bool zero_component = ray.direction.x == 0.0f || ray.direction.y == 0.0f || ray.direction.z == 0.0f;
-  if (got && hint_if_not_finite("t_enter", {*got}, "with a zero direction component, (bound - origin) * inverse can be "
-                                                    "0 * inf = NaN; order the comparisons so that NaN loses (docs/04_box.md, section 3)")) {
+  if (got && hint_if_not_finite("t_enter", {*got}, MessageId::box_advice_nan)) {
   } else if (got && !expected && *got < ray.t_min) {
-    add_hint("accepts a box behind the ray: require t_exit >= t_min (the whole box is behind when t_exit < t_min)");
+    add_hint(MessageId::box_accepts_behind);
   } else if (got && !expected && !std::isinf(ray.t_max) && box_beyond_t_max(ray, got)) {
-    add_hint("ignores t_max: a box that starts beyond t_max does not count (clip t_exit to t_max)");
+    add_hint(MessageId::box_ignores_t_max);
   } else if (got && !expected) {
-    add_hint("reports a box that the ray misses: clip [t_enter, t_exit] to [t_min, t_max] and require t_enter <= t_exit; "
-             "a box beyond t_max does not count");
+    add_hint(MessageId::box_false_hit);
   } else if (!got && expected && zero_component) {
-    add_hint("misses a box when a direction component is zero: 1 / 0 is +-infinity, which the slab test handles by itself; "
-             "do not skip or special-case that axis wrongly, and keep NaN from turning a hit into a miss");
+    add_hint(MessageId::box_misses_zero_component);
   } else if (!got && expected) {
-    add_hint("misses a box that the ray passes through: t_enter = max of the three entries, t_exit = min of the three exits");
+    add_hint(MessageId::box_misses);
   } else if (got && expected && *got < ray.t_min - 1e-6f) {
-    add_hint("the entry is not clipped to t_min: when the origin is inside (t_enter < t_min) return t_min");
+    add_hint(MessageId::box_entry_not_clipped);
   } else if (got && expected) {
-    add_hint("the entry distance is wrong: per axis, entry = min((min - o) * inv, (max - o) * inv)");
+    add_hint(MessageId::box_entry_wrong);
   }
 }
 

@@ -27,7 +27,7 @@ void expect_valid_trees(Builder build, const char* builder_name) {
     const Bvh bvh = build(mesh.bounds, kLeafSize);
     const std::string violation = bvh_invariant_violation(bvh, mesh.bounds, kLeafSize);
     if (!violation.empty()) {
-      if (!hinted) add_hint("the tree breaks a rule every BVH keeps: " + violation);  // each mesh's rule is below
+      if (!hinted) add_hint({MessageId::bvh_breaks_invariant, {{"violation", violation}}});  // each mesh's rule is below
       hinted = true;
       ADD_FAILURE() << builder_name << " on " << mesh.name << " (" << mesh.bounds.size() << " triangles, leaves of at most "
                     << kLeafSize << "): " << violation;
@@ -70,15 +70,13 @@ GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
   const std::vector<std::uint32_t> counts = subtree_primitive_counts(bvh);
   const long long left = counts[root.first_index], right = counts[root.first_index + 1];
   if (std::llabs(left - right) > 1)
-    add_hint("the split is not at the median: the contract asks for the median split (half of the primitives on each "
-             "side, by centroid along the longest axis: std::nth_element); a midpoint or SAH split makes a valid BVH, "
-             "but not the one this stage asks for (docs/05_bvh.md, section 2)");
+    add_hint(MessageId::bvh_not_median);
   EXPECT_LE(std::llabs(left - right), 1) << "the root's children hold " << left << " and " << right << " triangles";
   Bounds3 centroids;
   for (const Bounds3& b : bunny.bounds) centroids.extend(b.centroid());
   const int longest_node = root.bounds.longest_axis(), longest_centroids = centroids.longest_axis();
   if (root.split_axis != longest_node && root.split_axis != longest_centroids)
-    add_hint("the split axis is not the longest axis of the node's box");
+    add_hint(MessageId::bvh_split_axis_not_longest);
   EXPECT_TRUE(root.split_axis == longest_node || root.split_axis == longest_centroids)
       << "root split_axis " << int(root.split_axis) << ", but the longest axis of its box " << root.bounds << " is "
       << longest_node;
@@ -139,19 +137,16 @@ GRADED_TEST(kStage, Stage05Bvh, DoesNoMoreWorkThanTheReference, 3) {
   bool explained = false;
   if (yours.calls_beyond_a_hit > 0) {
     explained = true;
-    add_hint("t_max not lowered after a hit: on " + std::to_string(yours.rays_beyond_a_hit) + " of " +
-             std::to_string(rays.size()) + " rays the primitive test was called with a t_max beyond a hit it had "
-             "already reported (" + std::to_string(yours.calls_beyond_a_hit) + " calls). After a hit at t, set "
-             "search.t_max = t and pass `search` to every later box and primitive test, also in the other child: "
-             "then farther children are skipped (docs/05_bvh.md, section 3)");
+    add_hint({MessageId::bvh_t_max_not_lowered,
+              {{"rays", std::to_string(yours.rays_beyond_a_hit)}, {"total", std::to_string(rays.size())},
+               {"calls", std::to_string(yours.calls_beyond_a_hit)}}});
     ADD_FAILURE() << "t_max not lowered after a hit: " << yours.calls_beyond_a_hit << " calls of intersector.test on "
                   << yours.rays_beyond_a_hit << " rays had a t_max larger than a hit already reported on that ray";
   }
   if (yours.leaves_missed_by_ray > 0) {
     explained = true;
-    add_hint("primitives are tested in leaves whose box the ray misses (" + std::to_string(yours.leaves_missed_by_ray) +
-             " of " + std::to_string(yours.leaves_entered) + " leaves entered): test each node's box with "
-             "intersect_ray_box and skip the node when it misses (docs/05_bvh.md, section 3)");
+    add_hint({MessageId::bvh_tests_missed_leaves,
+              {{"missed", std::to_string(yours.leaves_missed_by_ray)}, {"entered", std::to_string(yours.leaves_entered)}}});
     ADD_FAILURE() << yours.leaves_missed_by_ray << " of the " << yours.leaves_entered
                   << " leaves whose triangles were tested lie off the ray";
   }
@@ -160,26 +155,19 @@ GRADED_TEST(kStage, Stage05Bvh, DoesNoMoreWorkThanTheReference, 3) {
   if (too_much && yours.leaves_missed_by_ray == 0 && ordered > 0 && near_fraction < 0.75) {
     explained = true;
     if (near_fraction < 0.25)
-      add_hint("visits the far child first: of the two children, enter the one on the side the ray comes from "
-               "(second_is_near = the ray goes down split_axis) and push the other, so that the closest hit is found "
-               "early and the far child is then skipped (docs/05_bvh.md, section 3)");
+      add_hint(MessageId::bvh_far_child_first);
     else
-      add_hint("does not visit the nearer child first (only " + std::to_string(int(100 * near_fraction)) +
-               "% of the time): choose the child to enter by the ray's direction along split_axis, not always the "
-               "first one (docs/05_bvh.md, section 3)");
+      add_hint({MessageId::bvh_near_child_sometimes, {{"percent", std::to_string(int(100 * near_fraction))}}});
   }
   if (too_much && !explained && yours.leaves_beyond_hit > reference.leaves_beyond_hit + yours.leaves_entered / 10) {
     explained = true;
-    add_hint("enters children whose box starts beyond the closest hit so far (" + std::to_string(yours.leaves_beyond_hit) +
-             " of " + std::to_string(yours.leaves_entered) + " leaves): test each box with `search`, whose t_max is "
-             "the closest hit, not with the original ray (docs/05_bvh.md, section 3)");
+    add_hint({MessageId::bvh_enters_beyond_hit,
+              {{"beyond", std::to_string(yours.leaves_beyond_hit)}, {"entered", std::to_string(yours.leaves_entered)}}});
   }
   if (too_much && !explained)
-    add_hint("the traversal does too much work: skip a child whose box the ray misses or whose entry is beyond the "
-             "closest hit so far, and visit the nearer child first so that the closest hit is found early");
+    add_hint(MessageId::bvh_too_much_work);
   if (yours.primitives_counted != yours.primitives_tested) {
-    add_hint("stats.primitives_tested does not count the calls of intersector.test: add 1 per call, and add to "
-             "`stats` rather than resetting it");
+    add_hint(MessageId::bvh_stats_not_counted);
     ADD_FAILURE() << "stats.primitives_tested says " << per_ray(double(yours.primitives_counted) / rays.size())
                   << " per ray, but intersector.test was called " << per_ray(yours.tests_per_ray()) << " times per ray";
   }
@@ -210,9 +198,7 @@ GRADED_TEST(kBonusStage, Stage05bBvhSah, SahCostNearTheReference, 4) {
        << reference_median << " (limit " << limit << ", halfway between)";
   add_note(note.str());
   if (cost > limit)
-    add_hint("the SAH tree is not much better than a median split: for each axis, bin the centroids, sweep the bins "
-             "to evaluate cost = area(left) * count(left) + area(right) * count(right) at every boundary, take the "
-             "cheapest, and make a leaf when no split is cheaper than testing every primitive");
+    add_hint(MessageId::bvh_sah_not_better);
   EXPECT_LE(cost, limit) << note.str();
 }
 

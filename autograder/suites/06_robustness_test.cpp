@@ -62,11 +62,7 @@ const bool kRegistered = register_stage(kStage, probe_written_functions);
 // The reference's error on these cases is below 3e-6; the textbook quadratic's reaches 1e-3.
 constexpr double kSphereRelativeTolerance = 1e-5;
 
-const char* const kCancellationHint =
-    "loses digits to catastrophic cancellation: b^2 - 4ac subtracts two nearly equal numbers when the sphere is small "
-    "and far, and -b - sqrt(discriminant) does when the origin is close to a large sphere. Compute the discriminant "
-    "from the distance between the centre and the ray's line, and the roots as q = -(b + sign(b) sqrt(disc)) / 2, "
-    "t0 = q / a, t1 = c / q (docs/02_sphere.md, section 3)";
+constexpr MessageId kCancellationHint = MessageId::robust_cancellation;
 
 Ray make_ray(glm::vec3 origin, glm::vec3 direction) {
   Ray ray;
@@ -136,13 +132,13 @@ GRADED_TEST(kStage, Stage06Robustness, WatertightMatchesStage03Answers, 3) {
     if (ok) continue;
     if (got && expected && close(got->barycentric_b1, c["hit"].at(2).get<float>()) &&
         close(got->barycentric_b2, c["hit"].at(1).get<float>()))
-      add_hint("barycentrics swapped: b1 = v / det is p1's weight and b2 = w / det is p2's (docs/03b_watertight.md, section 2)");
+      add_hint(MessageId::robust_barycentrics_swapped);
     else if (got && expected && close(got->t_hit, c["hit"].at(0).get<float>()))
-      add_hint("the barycentrics are wrong: u is p0's weight (edge p1-p2), v is p1's, w is p2's; divide each by det");
+      add_hint(MessageId::robust_barycentrics_wrong);
     else if (!got && expected)
-      add_hint("misses triangles that stage 03 hits: check the sign test (u, v, w all >= 0 or all <= 0) and det != 0");
+      add_hint(MessageId::robust_misses);
     else if (got && !expected)
-      add_hint("reports hits that stage 03 rejects: check the sign test and t_min < t < t_max");
+      add_hint(MessageId::robust_false_hits);
     if (++failures <= 3) {
       std::ostringstream got_text;
       if (got) got_text << *got; else got_text << "no hit";
@@ -229,9 +225,7 @@ GRADED_TEST(kStage, Stage06Robustness, NoRayLeaksThroughClosedMeshes, 6) {
     add_note("watertight, " + mesh.name + ": " + std::to_string(leaks) + " of " + std::to_string(kRays) +
              " rays through edges and vertices leaked");
     if (leaks > 0) {
-      add_hint("rays slip between triangles at shared edges: compute each corner's sheared x, y from that corner alone "
-               "(p - origin, then the shear), test all three edge functions with the same formula, count 0 as inside, "
-               "and retry in double when one is exactly 0 (docs/03b_watertight.md, section 3)");
+      add_hint(MessageId::robust_leaks);
       ADD_FAILURE() << mesh.name << ": " << leaks << " of " << kRays
                     << " rays from inside through its edges and vertices hit no triangle; the first: " << first_leak;
     }
@@ -263,8 +257,7 @@ GRADED_TEST(kStage, Stage06Robustness, DegenerateAndParallelInputsGiveNoNaN, 2) 
     if (!got) continue;
     const bool finite = std::isfinite(got->t_hit) && std::isfinite(got->barycentric_b1) && std::isfinite(got->barycentric_b2);
     if (finite && got->t_hit > input.ray.t_min) continue;  // a finite hit on a degenerate input is acceptable
-    add_hint("NaN or infinity from a degenerate input: write every test so that NaN rejects (if (!(det != 0)) ...), "
-             "reject det == 0 and a zero direction (docs/03b_watertight.md, section 3)");
+    add_hint(MessageId::robust_degenerate_nan);
     ADD_FAILURE() << input.what << ": ray " << input.ray << ", triangle " << input.a << " " << input.b << " " << input.c
                   << "\n  expected no hit (or a finite one)\n  got      " << *got;
   }
@@ -328,9 +321,7 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
   add_note("shadow acne: " + std::to_string(acne) + " of " + std::to_string(tested) +
            " rays leaving a large triangle hit it again");
   if (acne > 0) {
-    add_hint("hits the surface the ray starts on (shadow acne): t itself carries rounding error, so a hit at a t "
-             "within that error of 0 may be the ray's own starting surface. Bound the error of t from the sheared "
-             "coordinates and edge functions and reject t <= delta_t (docs/03b_watertight.md, section 4)");
+    add_hint(MessageId::robust_shadow_acne);
     ADD_FAILURE() << acne << " of " << tested << " rays leaving a triangle hit it again; the first: " << first << " from the triangle "
                   << first_corners[0] << " " << first_corners[1] << " " << first_corners[2] << ", at t = " << first_t
                   << " (expected no hit: the ray starts on it)";
@@ -383,10 +374,7 @@ GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
   add_note("box test: " + std::to_string(lost) + " of " + std::to_string(touching) +
            " boxes touched at an edge reported as missed");
   if (lost > 0) {
-    add_hint("the box test loses boxes that the ray touches at an edge: each slab distance is rounded, so the exit "
-             "can come out a hair below the entry. Multiply each exit by 1 + 2 * gamma_bound(3) (Ize 2013) so that "
-             "the test is conservative (docs/04_box.md, section 4). Stage 04 does not test this; a BVH loses the "
-             "triangles in such boxes");
+    add_hint(MessageId::robust_box_edge);
     ADD_FAILURE() << lost << " of " << touching << " rays aimed exactly at a box edge were reported as missing it; the first: "
                   << first << ", box " << first_box;
   }

@@ -383,31 +383,27 @@ int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::ve
     if (++differences > 3) continue;
     const bool zero_component = ray.direction.x == 0 || ray.direction.y == 0 || ray.direction.z == 0;
     if (got && expected && got->t_hit > expected->t_hit)
-      add_hint("returns a hit that is not the closest: keep searching after the first hit, pass t_max = the closest t so "
-               "far to the tests, and skip only children whose box entry is beyond it");
+      add_hint(MessageId::bvh_not_closest);
     else if (got && expected)
-      add_hint("returns a t closer than any real hit: return the t the primitive test reported, with its primitive");
+      add_hint(MessageId::bvh_t_too_close);
     else if (!got && expected) {
       // Whose code dropped the hit: your box test (stage 04), if it misses a box on the way
       // to the hit; otherwise the traversal.
       std::ostringstream box_text;
       if (const std::optional<Bounds3> missed = box_wrongly_missed(bvh, ray, expected->primitive)) {
         box_text << *missed;
-        add_hint(std::string("misses a hit because your box test (stage 04_box) misses a box the ray passes through") +
-                 (zero_component ? " (the ray has a zero direction component: check +-0 directions)" : "") +
-                 ": ray " + describe_ray(ray) + ", box " + box_text.str() + " holds the hit at t = " +
-                 std::to_string(expected->t_hit) + " (docs/04_box.md)");
+        add_hint({MessageId::bvh_box_test_misses,
+                  {{"zero_component", zero_component ? std::vector<Message>{MessageId::bvh_zero_component_note}
+                                                     : std::vector<Message>{}},
+                   {"ray", describe_ray(ray)}, {"box", box_text.str()}, {"t", std::to_string(expected->t_hit)}}});
       } else if (zero_component) {
-        add_hint("misses hits of rays with zero direction components although your box test reports every box on "
-                 "the way to them: check how the traversal handles a +-0 direction (e.g. the near child)");
+        add_hint(MessageId::bvh_misses_zero_component);
       } else {
-        add_hint("misses a hit: a child was skipped although it holds a hit, and your box test reports every box on "
-                 "the way to it (is a leaf's every primitive tested? are the primitive indices taken from "
-                 "primitive_order? is a child skipped for another reason than its box?)");
+        add_hint(MessageId::bvh_misses_hit);
       }
     }
     else
-      add_hint("reports a hit where there is none: return only hits the primitive test reported");
+      add_hint(MessageId::bvh_false_hit);
     ADD_FAILURE() << what << " on " << mesh.name << ", ray " << r << ": " << ray << "\n  expected "
                   << (expected ? "t = " + std::to_string(expected->t_hit) + " (triangle " + std::to_string(expected->primitive) + ")" : std::string("no hit"))
                   << "\n  got      "

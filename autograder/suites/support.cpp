@@ -15,11 +15,12 @@
 
 namespace raylab::grading {
 
-bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const std::string& advice) {
+bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice) {
   for (float value : results) {
     if (std::isfinite(value)) continue;
     const std::string name = std::isnan(value) ? "NaN" : value > 0.0f ? "infinity" : "-infinity";
-    add_hint("returns " + std::string(std::isnan(value) ? "NaN" : "infinity") + " (" + what + " = " + name + "): " + advice);
+    add_hint({std::isnan(value) ? MessageId::not_finite_nan : MessageId::not_finite_infinity,
+              {{"what", what}, {"value", name}, {"advice", advice}}});
     return true;
   }
   return false;

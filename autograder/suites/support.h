@@ -5,6 +5,7 @@
 #include "raylab/random.h"
 #include "raylab/scene.h"
 #include "raylab/testkit/random_values.h"
+#include "messages.h"
 #include "stage_calls.h"
 
 #include <nlohmann/json.hpp>
@@ -25,7 +26,7 @@ namespace raylab::grading {
 // number, adds the hint "returns NaN (<what> = NaN): <advice>" (or "returns infinity") and
 // returns true, so no later hint reads a NaN as a wrong number ("a hit behind the ray").
 // Failure texts need nothing: the grader prints every non-finite value as NaN or infinity.
-bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const std::string& advice);
+bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice);
 
 nlohmann::json to_json(const glm::vec3& v);
 glm::vec3 vec3_from_json(const nlohmann::json& value);

@@ -30,7 +30,7 @@ endif()
 
 # A forged results.json, planted where the grader will write its own.
 file(WRITE "${WORK}/results.json" "{\"score\": 99999, \"max_score\": 1, \"tests\": [{\"name\": \"planted: Forged\", \"score\": 99999, \"max_score\": 1}]}\n")
-execute_process(COMMAND "${GRADER}" --json "${WORK}/results.json" --output "${WORK}/images" --timeout ${TIMEOUT}
+execute_process(COMMAND "${GRADER}" --json "${WORK}/results.json" --output "${WORK}/images" --timeout ${TIMEOUT} --lang en
                 RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE errors)
 message("${output}")
 if(NOT status EQUAL 0)

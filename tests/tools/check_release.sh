@@ -29,11 +29,11 @@ process=$(cd "$release" && grep -rniE "\b(issues?|(this|that|next|earlier|later|
 cmake -S "$release" -B "$release/build" -G Ninja -DRAYLAB_WERROR=ON >/dev/null
 cmake --build "$release/build" -j "$(nproc)" >/dev/null
 [ ! -e "$release/build/bin/raylab-reference" ] || { echo "FAIL: the release built raylab-reference"; exit 1; }
-(cd "$release" && build/bin/autograder --json "$work/results.json" --output "$work/images") > "$work/grader.txt"
+(cd "$release" && build/bin/autograder --lang en --json "$work/results.json" --output "$work/images") > "$work/grader.txt"
 cat "$work/grader.txt"
 grep -q '"score": 0,' "$work/results.json" || { echo "FAIL: the stubs scored points"; exit 1; }
 # The stages are stages.json's, as the grader lists them: each must be "not attempted".
-ids=$(cd "$release" && build/bin/autograder --list | sed -n 's/^\([0-9][0-9a-z_]*\): .*/\1/p')
+ids=$(cd "$release" && build/bin/autograder --lang en --list | sed -n 's/^\([0-9][0-9a-z_]*\): .*/\1/p')
 listed=$(echo "$ids" | wc -w)
 stages=0
 for id in $ids; do

@@ -12,6 +12,8 @@ namespace raylab {
 struct StageDescription {
   std::string_view id;                       // "05b_bvh_sah": the stage's name everywhere
   std::string_view title;                    // "binned SAH build"
+  std::string_view title_zh;                 // "分桶 SAH 构建": the title in Simplified Chinese
+                                             // (empty while a new row is not translated yet)
   std::vector<std::string_view> files;       // the files to write, under assignments/
   std::vector<std::string_view> functions;   // the functions to write in them
   std::string_view handout;                  // "docs/05_bvh.md"

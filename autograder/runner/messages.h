@@ -1,0 +1,91 @@
+// Everything the autograder tells a student, in English and Simplified Chinese: one catalogue
+// (messages.def: an id and its two texts), the language of this run, and a Message, which is an
+// id with the values of its placeholders, rendered in either language when it is shown.
+//
+//   add_hint({MessageId::sphere_hit_behind, {{"t", std::to_string(t)}}});
+//
+// shows "returns a hit behind the ray (t = -1.000000): ..." or its Chinese text: the texts of
+// sphere_hit_behind in messages.def both hold the placeholder {t}. A new hint is a new entry in
+// messages.def with both texts (the test messages_are_paired fails on an entry without its
+// Chinese text); docs/zh/glossary.md lists the Chinese terms the texts use.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace raylab::grading {
+
+enum class Language { English, Chinese };
+
+enum class MessageId : int {
+#define RAYLAB_MESSAGE(id, english, chinese) id,
+#include "messages.def"
+#undef RAYLAB_MESSAGE
+};
+
+struct MessageArg;
+
+// An id and the values of its placeholders. A value is a text (numbers formatted by the caller,
+// the same in both languages) or other messages, rendered in the same language and joined.
+struct Message {
+  MessageId id;
+  std::vector<MessageArg> args;
+  Message(MessageId message_id);  // NOLINT: implicit, so that add_hint(MessageId::x) reads well
+  Message(MessageId message_id, std::vector<MessageArg> message_args);
+  bool operator==(const Message& other) const;
+};
+
+struct MessageArg {
+  std::string name;           // the placeholder {name}
+  std::string text;           // its value ...
+  std::vector<Message> parts; // ... followed by these, rendered and joined
+  std::string chinese_text;   // if not empty: the value in Chinese (a stage's title, a handout's path)
+  static MessageArg bilingual(std::string arg_name, std::string english, std::string chinese);
+  MessageArg(std::string arg_name, std::string value);
+  MessageArg(std::string arg_name, const char* value);
+  MessageArg(std::string arg_name, Message part);
+  MessageArg(std::string arg_name, std::vector<Message> message_parts);
+  bool operator==(const MessageArg& other) const;
+};
+
+// A text in `language`: its catalogue template with each {name} replaced by its argument.
+std::string render(const Message& message, Language language);
+// In this run's language.
+std::string render(const Message& message);
+// The text of messages that wrap a text that has no translation (a failure message of an
+// assertion, a framework error), shown as it is in both languages.
+Message verbatim(std::string text);
+
+// "sphere_hit_behind": the id as results.json names it.
+std::string_view message_name(MessageId id);
+
+// The catalogue, in the order of messages.def.
+struct CatalogueEntry {
+  MessageId id;
+  std::string_view name, english, chinese;
+};
+const std::vector<CatalogueEntry>& message_catalogue();
+// The placeholders of a template: the names between { and } (letters, digits, '_').
+std::vector<std::string> placeholders_of(std::string_view text);
+
+// This run's language: --lang if given, otherwise the environment (LC_ALL, LC_MESSAGES, LANG:
+// the first that is set and not empty; a value starting with "zh" is Chinese), otherwise English.
+Language language();
+void set_language(Language language);
+Language language_from_environment();
+// "en" or "zh" (also "zh_CN", "zh-CN", "zh_CN.UTF-8", "en_US" ...); nullopt otherwise.
+std::optional<Language> parse_language(std::string_view name);
+
+// A hint given as text fails to compile with this message: every hint is a catalogue entry.
+template <typename Text, typename = std::enable_if_t<std::is_convertible_v<Text, std::string_view>>>
+void add_hint(const Text&) {
+  static_assert(!std::is_convertible_v<Text, std::string_view>,
+                "add_hint takes a Message, not a text: add the hint to autograder/runner/messages.def as "
+                "RAYLAB_MESSAGE(your_id, \"English text with {placeholders}\", \"Chinese text with the same "
+                "{placeholders}\") and call add_hint({MessageId::your_id, {{\"placeholder\", value}}})");
+}
+
+}  // namespace raylab::grading

@@ -1,0 +1,137 @@
+# Every student handout exists in English (docs/<name>.md) and Simplified Chinese
+# (docs/zh/<name>.md), and each names its twin at the top:
+#   - the handouts of stages.json, docs/conventions.md and docs/student-README.md need a Chinese twin;
+#   - every docs/zh/<name>.md needs its English docs/<name>.md;
+#   - the twins have the same "## " sections (the hints cite "docs/zh/<name>.md，第 N 节" for section N)
+#     and the same fenced code blocks (code and formulas are not translated);
+#   - every row of stages.json has a "title_zh".
+# Variables: SOURCE (the repository).
+cmake_minimum_required(VERSION 3.19)  # string(JSON)
+
+# Handouts whose Chinese twin is being written: named in the test's output, not failed. This
+# list only shrinks; a handout that is not on it fails the test without its twin.
+set(not_yet_translated docs/01_camera_rays.md docs/02_sphere.md docs/03_triangle.md docs/03b_watertight.md
+    docs/04_box.md docs/05_bvh.md docs/conventions.md)
+
+file(READ "${SOURCE}/stages.json" table)
+string(JSON count LENGTH "${table}" stages)
+math(EXPR last "${count} - 1")
+set(required docs/student-README.md docs/conventions.md)
+set(problems "")
+foreach(i RANGE ${last})
+  string(JSON id GET "${table}" stages ${i} id)
+  string(JSON handout GET "${table}" stages ${i} handout)
+  list(APPEND required "${handout}")
+  string(JSON title_zh ERROR_VARIABLE missing GET "${table}" stages ${i} title_zh)
+  if(missing OR title_zh STREQUAL "")
+    string(JSON title GET "${table}" stages ${i} title)
+    list(APPEND problems "stages.json: the stage ${id} has no \"title_zh\": add \"title_zh\": \"<its title \"${title}\" in "
+                         "Simplified Chinese>\" after its \"title\" (the grader's table shows it with --lang zh)")
+  endif()
+endforeach()
+list(REMOVE_DUPLICATES required)
+
+file(GLOB chinese RELATIVE "${SOURCE}/docs/zh" "${SOURCE}/docs/zh/*.md")
+foreach(name IN LISTS chinese)
+  if(NOT EXISTS "${SOURCE}/docs/${name}")
+    list(APPEND problems "docs/zh/${name} has no English twin: write docs/${name}, or remove the Chinese one")
+  else()
+    list(APPEND required "docs/${name}")
+  endif()
+endforeach()
+list(REMOVE_DUPLICATES required)
+
+# The lines of a file that are "## " headings, and its fenced code blocks, as lists.
+function(read_structure path sections_out code_out)
+  file(STRINGS "${path}" lines ENCODING UTF-8)
+  set(sections "")
+  set(code "")
+  set(in_code OFF)
+  set(block "")
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^```")
+      if(in_code)
+        string(MD5 hash "${block}")
+        list(APPEND code "${hash}")
+        set(in_code OFF)
+      else()
+        set(in_code ON)
+        set(block "")
+      endif()
+    elseif(in_code)
+      string(APPEND block "${line}\n")
+    elseif(line MATCHES "^## ([0-9]+[a-z]?)[ .]")
+      list(APPEND sections "${CMAKE_MATCH_1}")
+    elseif(line MATCHES "^## ")
+      list(APPEND sections "-")
+    endif()
+  endforeach()
+  set(${sections_out} "${sections}" PARENT_SCOPE)
+  set(${code_out} "${code}" PARENT_SCOPE)
+endfunction()
+
+# Whether one of the first lines of `path` links to `twin` (a Markdown link or a path).
+function(names_twin path twin out)
+  file(STRINGS "${path}" lines ENCODING UTF-8 LIMIT_COUNT 6)
+  string(REPLACE "." "\\." pattern "${twin}")
+  set(found OFF)
+  foreach(line IN LISTS lines)
+    if(line MATCHES "\\(${pattern}\\)" OR line MATCHES "`${pattern}`")
+      set(found ON)
+    endif()
+  endforeach()
+  set(${out} ${found} PARENT_SCOPE)
+endfunction()
+
+foreach(english IN LISTS required)
+  get_filename_component(name "${english}" NAME)
+  set(chinese_path "docs/zh/${name}")
+  if(NOT EXISTS "${SOURCE}/${english}")
+    continue()  # stages.json's own check names a missing handout
+  endif()
+  if(NOT EXISTS "${SOURCE}/${chinese_path}" AND english IN_LIST not_yet_translated)
+    message("not translated yet: ${english} (its twin will be ${chinese_path})")
+    continue()
+  endif()
+  if(NOT EXISTS "${SOURCE}/${chinese_path}")
+    list(APPEND problems "${english} has no Chinese twin: translate it to ${chinese_path} (Simplified Chinese, the terms of "
+                         "docs/glossary.md, code, formulas and paths unchanged, the same numbered \"## \" sections), "
+                         "with \"[English](../${name})\" at its top and \"[简体中文](zh/${name})\" at the top of ${english}")
+    continue()
+  endif()
+  # The twins name each other (the student README becomes the release's README.md).
+  if(name STREQUAL "student-README.md")
+    set(to_chinese "docs/zh/${name}")
+    set(to_english "../../README.md")
+  else()
+    set(to_chinese "zh/${name}")
+    set(to_english "../${name}")
+  endif()
+  names_twin("${SOURCE}/${english}" "${to_chinese}" linked)
+  if(NOT linked)
+    list(APPEND problems "${english} does not link its Chinese twin in its first lines: add \"[简体中文](${to_chinese})\"")
+  endif()
+  names_twin("${SOURCE}/${chinese_path}" "${to_english}" linked)
+  if(NOT linked)
+    list(APPEND problems "${chinese_path} does not link its English twin in its first lines: add \"[English](${to_english})\"")
+  endif()
+  read_structure("${SOURCE}/${english}" english_sections english_code)
+  read_structure("${SOURCE}/${chinese_path}" chinese_sections chinese_code)
+  if(NOT english_sections STREQUAL chinese_sections)
+    list(APPEND problems "${chinese_path} has the \"## \" sections [${chinese_sections}], ${english} [${english_sections}] "
+                         "(numbers, or - for unnumbered ones): keep the twins' sections the same, the hints cite them by number")
+  endif()
+  if(NOT english_code STREQUAL chinese_code)
+    list(LENGTH english_code english_blocks)
+    list(LENGTH chinese_code chinese_blocks)
+    list(APPEND problems "${chinese_path} and ${english} differ in their fenced code blocks (${chinese_blocks} and "
+                         "${english_blocks} blocks): code and formulas stay as in English; bring the changed block over")
+  endif()
+endforeach()
+
+if(problems)
+  list(JOIN problems "\n  " text)
+  message(FATAL_ERROR "handouts in one language only, or twins that disagree:\n  ${text}")
+endif()
+list(LENGTH required pairs)
+message("${pairs} handouts in English and Chinese")
