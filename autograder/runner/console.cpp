@@ -80,7 +80,7 @@ std::string test_output(const TestResult& t, Language language) {
   std::string out;
   for (const Message& m : t.messages) out += render(m, language) + "\n";
   for (const Message& h : t.hints) out += render({MessageId::console_hint, {{"hint", h}}}, language) + "\n";
-  for (const std::string& n : t.notes) out += n + "\n";
+  for (const Message& n : t.notes) out += render(n, language) + "\n";
   return out;
 }
 

@@ -60,8 +60,7 @@ std::vector<TestInfo>& test_registry() {
 }
 
 struct CurrentTest {
-  std::vector<Message> hints;
-  std::vector<std::string> notes;
+  std::vector<Message> hints, notes;
 };
 CurrentTest& current() {
   static CurrentTest test;
@@ -98,11 +97,6 @@ std::string name_non_finite(const std::string& text) {
     }
     out += text[i++];
   }
-  return out;
-}
-std::vector<std::string> name_non_finite(const std::vector<std::string>& texts) {
-  std::vector<std::string> out;
-  for (const std::string& text : texts) out.push_back(name_non_finite(text));
   return out;
 }
 Message name_non_finite(Message message) {
@@ -218,7 +212,7 @@ void add_hint(const Message& hint) {
   if (std::find(hints.begin(), hints.end(), hint) == hints.end()) hints.push_back(hint);
 }
 
-void add_note(const std::string& note) { current().notes.push_back(note); }
+void add_note(const Message& note) { current().notes.push_back(note); }
 
 const std::string& output_directory() { return output_directory_storage(); }
 void set_output_directory(const std::string& directory) { output_directory_storage() = directory; }

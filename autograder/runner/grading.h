@@ -61,8 +61,9 @@ const std::vector<TestInfo>& tests();
 // Inside a test: a hint for the student, shown with the failure (deduplicated). A hint is an entry
 // of messages.def: add_hint({MessageId::sphere_hit_behind, {{"t", std::to_string(t)}}}).
 void add_hint(const Message& hint);
-// Inside a test: a note shown with the result whether it passes or not (e.g. image metrics).
-void add_note(const std::string& note);
+// Inside a test: a note shown with the result whether it passes or not (e.g. image metrics), an
+// entry of messages.def like a hint.
+void add_note(const Message& note);
 
 // Where image tests write yours | reference | difference pictures.
 const std::string& output_directory();
@@ -78,7 +79,7 @@ struct TestRecord {
   bool not_implemented = false;  // a failure message is a stub's NotImplemented
   std::vector<std::string> messages;
   std::vector<Message> hints;
-  std::vector<std::string> notes;
+  std::vector<Message> notes;
 };
 // The judge: calls on_test_start before each test and on_test_end after it.
 void install_recorder(std::function<void(const std::string&)> on_test_start,

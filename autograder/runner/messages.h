@@ -11,6 +11,7 @@
 #pragma once
 
 #include <optional>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -79,13 +80,28 @@ Language language_from_environment();
 // "en" or "zh" (also "zh_CN", "zh-CN", "zh_CN.UTF-8", "en_US" ...); nullopt otherwise.
 std::optional<Language> parse_language(std::string_view name);
 
-// A hint given as text fails to compile with this message: every hint is a catalogue entry.
+// A number as a stream writes it by default (6 significant digits), the format of many texts.
+template <typename Number>
+std::string stream_text(Number value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+// A hint or note given as text fails to compile with this message: each is a catalogue entry.
 template <typename Text, typename = std::enable_if_t<std::is_convertible_v<Text, std::string_view>>>
 void add_hint(const Text&) {
   static_assert(!std::is_convertible_v<Text, std::string_view>,
                 "add_hint takes a Message, not a text: add the hint to autograder/runner/messages.def as "
                 "RAYLAB_MESSAGE(your_id, \"English text with {placeholders}\", \"Chinese text with the same "
                 "{placeholders}\") and call add_hint({MessageId::your_id, {{\"placeholder\", value}}})");
+}
+template <typename Text, typename = std::enable_if_t<std::is_convertible_v<Text, std::string_view>>>
+void add_note(const Text&) {
+  static_assert(!std::is_convertible_v<Text, std::string_view>,
+                "add_note takes a Message, not a text: add the note to autograder/runner/messages.def as "
+                "RAYLAB_MESSAGE(your_id, \"English text with {placeholders}\", \"Chinese text with the same "
+                "{placeholders}\") and call add_note({MessageId::your_id, {{\"placeholder\", value}}})");
 }
 
 }  // namespace raylab::grading

@@ -15,7 +15,7 @@ struct TestResult {
   Status status = Status::Lost;
   std::vector<Message> messages;  // what went wrong (an assertion's text is verbatim(), English)
   std::vector<Message> hints;
-  std::vector<std::string> notes;
+  std::vector<Message> notes;
   int earned() const { return status == Status::Passed ? info.points : 0; }
 };
 

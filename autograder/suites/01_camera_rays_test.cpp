@@ -122,14 +122,6 @@ ScreenFit fit_screen_mapping(const Camera& camera) {
   return fit;
 }
 
-// A number as a stream writes it by default (6 significant digits): the hints' format.
-template <typename Number>
-std::string stream_text(Number value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 bool close_ratio(double got, double expected) { return std::fabs(got - expected) <= kExtentTolerance * std::fabs(expected); }
 
 // The hints for the extents: every combination of the screen-size, field-of-view and aspect

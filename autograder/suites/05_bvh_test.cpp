@@ -44,8 +44,7 @@ void expect_same_hits_as_brute_force(Builder build, const char* builder_name, bo
     if (!bvh_invariant_violation(bvh, mesh.bounds, kLeafSize).empty()) {
       // A broken tree costs BuildsAValidTree; a traversal of it could run off its arrays.
       // Here your intersect_bvh is tested on the grader's own tree instead.
-      add_note(std::string(builder_name) + "'s tree for " + mesh.name +
-               " is broken (see BuildsAValidTree): your intersect_bvh is tested on the grader's median-split tree");
+      add_note({MessageId::note_bvh_tree_broken, {{"builder", builder_name}, {"mesh", mesh.name}}});
       bvh = grader_median_tree(mesh.bounds, kLeafSize);
     }
     const std::vector<Ray> rays = rays_at(mesh, 500, seed++, axis_aligned);
@@ -125,13 +124,12 @@ GRADED_TEST(kStage, Stage05Bvh, DoesNoMoreWorkThanTheReference, 3) {
   }
   const double node_limit = kWorkMargin * reference.nodes_per_ray() + 1.0;
   const double test_limit = kWorkMargin * reference.tests_per_ray() + 1.0;
-  std::ostringstream note;
-  note << "work per ray on " << bunny.name << " (" << bunny.bounds.size() << " triangles, " << bvh.nodes.size()
-       << " nodes of a median-split tree, " << rays.size() << " rays): nodes visited: yours " << per_ray(yours.nodes_per_ray())
-       << ", reference " << per_ray(reference.nodes_per_ray()) << " (limit " << per_ray(node_limit)
-       << "); triangles tested: yours " << per_ray(yours.tests_per_ray()) << ", reference "
-       << per_ray(reference.tests_per_ray()) << " (limit " << per_ray(test_limit) << ")";
-  add_note(note.str());
+  add_note({MessageId::note_bvh_work,
+            {{"mesh", bunny.name}, {"triangles", std::to_string(bunny.bounds.size())},
+             {"nodes", std::to_string(bvh.nodes.size())}, {"rays", std::to_string(rays.size())},
+             {"your_nodes", per_ray(yours.nodes_per_ray())}, {"reference_nodes", per_ray(reference.nodes_per_ray())},
+             {"node_limit", per_ray(node_limit)}, {"your_tests", per_ray(yours.tests_per_ray())},
+             {"reference_tests", per_ray(reference.tests_per_ray())}, {"test_limit", per_ray(test_limit)}}});
 
   const bool too_much = yours.nodes_per_ray() > node_limit || yours.tests_per_ray() > test_limit;
   bool explained = false;
@@ -193,13 +191,13 @@ GRADED_TEST(kBonusStage, Stage05bBvhSah, SahCostNearTheReference, 4) {
   const TestMesh& bunny = bvh_test_meshes().front();
   const double cost = bvh_sah_cost(build_bvh_sah(bunny.bounds, kLeafSize));
   const double limit = reference_sah + 0.5 * (reference_median - reference_sah);
-  std::ostringstream note;
-  note << "SAH cost on the bunny: yours " << cost << ", reference SAH " << reference_sah << ", median split "
-       << reference_median << " (limit " << limit << ", halfway between)";
-  add_note(note.str());
+  const Message note{MessageId::note_bvh_sah_cost,
+                     {{"cost", stream_text(cost)}, {"reference", stream_text(reference_sah)},
+                      {"median", stream_text(reference_median)}, {"limit", stream_text(limit)}}};
+  add_note(note);
   if (cost > limit)
     add_hint(MessageId::bvh_sah_not_better);
-  EXPECT_LE(cost, limit) << note.str();
+  EXPECT_LE(cost, limit) << render(note, Language::English);
 }
 
 }  // namespace

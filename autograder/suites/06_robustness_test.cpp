@@ -102,7 +102,7 @@ void check_sphere_cases(const std::string& kind) {
   if (failures > 0) add_hint(kCancellationHint);
   char worst_text[32];
   std::snprintf(worst_text, sizeof worst_text, "%.2e", worst);
-  add_note(kind + ": largest relative error of t " + worst_text + " over " + std::to_string(checked) + " spheres");
+  add_note({MessageId::note_sphere_error, {{"kind", kind}, {"worst", worst_text}, {"count", std::to_string(checked)}}});
   EXPECT_EQ(failures, 0) << failures << " of " << checked << " " << kind << " spheres wrong (seed " << data.at("seed") << ")";
 }
 
@@ -222,8 +222,8 @@ GRADED_TEST(kStage, Stage06Robustness, NoRayLeaksThroughClosedMeshes, 6) {
   for (const Mesh& mesh : meshes) {
     Ray first_leak;
     const int leaks = count_leaks(mesh, &intersect_ray_triangle_watertight, kRays, 6, &first_leak);
-    add_note("watertight, " + mesh.name + ": " + std::to_string(leaks) + " of " + std::to_string(kRays) +
-             " rays through edges and vertices leaked");
+    add_note({MessageId::note_watertight_leaks,
+              {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kRays)}}});
     if (leaks > 0) {
       add_hint(MessageId::robust_leaks);
       ADD_FAILURE() << mesh.name << ": " << leaks << " of " << kRays
@@ -318,8 +318,7 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
       first_t = hit->t_hit;
     }
   }
-  add_note("shadow acne: " + std::to_string(acne) + " of " + std::to_string(tested) +
-           " rays leaving a large triangle hit it again");
+  add_note({MessageId::note_shadow_acne, {{"acne", std::to_string(acne)}, {"rays", std::to_string(tested)}}});
   if (acne > 0) {
     add_hint(MessageId::robust_shadow_acne);
     ADD_FAILURE() << acne << " of " << tested << " rays leaving a triangle hit it again; the first: " << first << " from the triangle "
@@ -371,8 +370,7 @@ GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
       first_box = box;
     }
   }
-  add_note("box test: " + std::to_string(lost) + " of " + std::to_string(touching) +
-           " boxes touched at an edge reported as missed");
+  add_note({MessageId::note_box_edge, {{"lost", std::to_string(lost)}, {"boxes", std::to_string(touching)}}});
   if (lost > 0) {
     add_hint(MessageId::robust_box_edge);
     ADD_FAILURE() << lost << " of " << touching << " rays aimed exactly at a box edge were reported as missing it; the first: "
@@ -386,10 +384,10 @@ GRADED_TEST(kStage, Stage06Robustness, ForComparisonYourStage03Leaks, 0) {
   for (const Mesh& mesh : {icosphere(3, 1.0f, glm::vec3(0.1f, -0.2f, 0.3f)), grid_cube(8, 1.0f, glm::vec3(0.0f))}) {
     try {
       const int leaks = count_leaks(mesh, &intersect_ray_triangle, kLeakRays, 6, nullptr);
-      add_note("for comparison, your stage 03 intersect_ray_triangle (Moller-Trumbore), " + mesh.name + ": " +
-               std::to_string(leaks) + " of " + std::to_string(kLeakRays) + " rays leaked");
+      add_note({MessageId::note_stage03_leaks,
+                {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kLeakRays)}}});
     } catch (const NotImplemented&) {
-      add_note("stage 03 is not written yet: no comparison with Moller-Trumbore");
+      add_note(MessageId::note_stage03_not_written);
       return;
     }
   }

@@ -72,12 +72,12 @@ void expect_image_matches_reference(const std::string& stage_id, float channel_t
   const ImageDifference difference = compare_images(yours, expected, channel_threshold);
   write_image(side_by_side_difference(yours, expected, 0.25f), comparison_path);
 
-  std::ostringstream note;
-  note << "image " << kImageWidth << "x" << kImageHeight << ": " << difference.pixels_over_threshold
-       << " pixels (" << 100.0 * difference.fraction_over_threshold << "%) differ by more than "
-       << channel_threshold << " (allowed: " << 100.0 * max_fraction << "%), RMS error "
-       << difference.rms_error << "; yours | reference | difference: " << comparison_path;
-  add_note(note.str());
+  add_note({MessageId::note_image,
+            {{"width", std::to_string(kImageWidth)}, {"height", std::to_string(kImageHeight)},
+             {"pixels", stream_text(difference.pixels_over_threshold)},
+             {"percent", stream_text(100.0 * difference.fraction_over_threshold)},
+             {"threshold", stream_text(channel_threshold)}, {"allowed", stream_text(100.0 * max_fraction)},
+             {"rms", stream_text(difference.rms_error)}, {"path", comparison_path}}});
   EXPECT_LE(difference.fraction_over_threshold, max_fraction)
       << "your picture differs from the reference: largest difference " << difference.max_error
       << " at pixel (" << difference.max_x << ", " << difference.max_y << "). Open " << comparison_path;
