@@ -2,8 +2,10 @@
 # (docs/zh/<name>.md), and each names its twin at the top:
 #   - the handouts of stages.json, docs/conventions.md and docs/student-README.md need a Chinese twin;
 #   - every docs/zh/<name>.md needs its English docs/<name>.md;
-#   - the twins have the same "## " sections (the hints cite "docs/zh/<name>.md，第 N 节" for section N)
-#     and the same fenced code blocks (code and formulas are not translated);
+#   - the twins have the same "## " sections (the hints cite "docs/zh/<name>.md，第 N 节" for section N),
+#     the same code blocks, and every `code span` of the English text is in the Chinese one too (code,
+#     formulas and paths are not translated; docs/zh/<name> counts as docs/<name>): so a change to the
+#     English text that adds or changes an identifier, a number in backticks or a path shows;
 #   - every row of stages.json has a "title_zh".
 # Variables: SOURCE (the repository).
 cmake_minimum_required(VERSION 3.19)  # string(JSON)
@@ -48,6 +50,23 @@ function(read_lines path out)
   string(REPLACE "\r" "" text "${text}")
   string(REPLACE "\n" ";" text "${text}")
   set(${out} "${text}" PARENT_SCOPE)
+endfunction()
+
+# The `code spans` of a file outside its fenced blocks, whitespace collapsed, docs/zh/ read as docs/.
+function(read_spans path out)
+  file(READ "${path}" text)
+  string(REPLACE ";" "<semicolon>" text "${text}")
+  string(REPLACE "[" "<open>" text "${text}")
+  string(REPLACE "]" "<close>" text "${text}")
+  string(REGEX REPLACE "```[^`]*```" "" text "${text}")
+  string(REGEX MATCHALL "`[^`]+`" spans "${text}")
+  set(result "")
+  foreach(span IN LISTS spans)
+    string(REGEX REPLACE "[ \t\r\n]+" " " span "${span}")
+    string(REGEX REPLACE "docs/zh/([A-Za-z0-9])" "docs/\\1" span "${span}")
+    list(APPEND result "${span}")
+  endforeach()
+  set(${out} "${result}" PARENT_SCOPE)
 endfunction()
 
 function(read_structure path sections_out code_out firsts_out)
@@ -183,6 +202,27 @@ foreach(english IN LISTS required)
     endif()
     list(APPEND problems "${chinese_path} and ${english} differ in their code blocks (${chinese_blocks} and "
                          "${english_blocks} blocks, ${where}): code and formulas stay as in English, copy the block over")
+  endif()
+  read_spans("${SOURCE}/${english}" english_spans)
+  read_spans("${SOURCE}/${chinese_path}" chinese_spans)
+  set(missing "")
+  foreach(span IN LISTS english_spans)
+    list(FIND chinese_spans "${span}" found)
+    if(found EQUAL -1)
+      list(APPEND missing "${span}")
+    else()
+      list(REMOVE_AT chinese_spans ${found})
+    endif()
+  endforeach()
+  if(missing)
+    list(LENGTH missing missing_count)
+    list(SUBLIST missing 0 5 shown)
+    list(JOIN shown " " shown)
+    string(REPLACE "<semicolon>" "\\;" shown "${shown}")
+    string(REPLACE "<open>" "[" shown "${shown}")
+    string(REPLACE "<close>" "]" shown "${shown}")
+    list(APPEND problems "${chinese_path} lacks ${missing_count} code spans of ${english} (the English text changed, or the "
+                         "translation dropped them), e.g. ${shown}: translate the English text around them into ${chinese_path}")
   endif()
 endforeach()
 
