@@ -44,10 +44,12 @@ bool has_chinese(std::string_view text) {
   return false;
 }
 
-// The text without its placeholders: does it say anything in words?
+// The text without its placeholders: does it say anything in words (two letters or more in a row,
+// not a name of code such as t_hit)? "t = {t}" does not.
 bool has_words(std::string_view text) {
-  const std::string without = std::regex_replace(std::string(text), std::regex("\\{[A-Za-z0-9_]+\\}"), "");
-  return std::any_of(without.begin(), without.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
+  std::string without = std::regex_replace(std::string(text), std::regex("\\{[A-Za-z0-9_]+\\}"), "");
+  without = std::regex_replace(without, std::regex("[A-Za-z0-9]*_[A-Za-z0-9_]*"), "");
+  return std::regex_search(without, std::regex("[A-Za-z]{2}"));
 }
 
 std::multiset<std::string> placeholder_set(std::string_view text) {

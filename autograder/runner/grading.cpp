@@ -61,6 +61,7 @@ std::vector<TestInfo>& test_registry() {
 
 struct CurrentTest {
   std::vector<Message> hints, notes;
+  std::vector<Message> failures;  // add_failure's, in order, until the listener has seen each
 };
 CurrentTest& current() {
   static CurrentTest test;
@@ -121,21 +122,32 @@ class Recorder : public ::testing::EmptyTestEventListener {
   void OnTestStart(const ::testing::TestInfo& info) override {
     current() = CurrentTest{};
     messages_.clear();
+    not_implemented_ = false;
     on_start_(full_name(info));
   }
 
   void OnTestPartResult(const ::testing::TestPartResult& result) override {
     if (!result.failed()) return;
-    std::string message = result.message();
-    if (message.size() > 1500) message = message.substr(0, 1500) + " [...]";
-    messages_.push_back(name_non_finite(message));
+    const std::string message = result.message();
+    not_implemented_ = not_implemented_ || message.find("is not implemented yet") != std::string::npos;
+    // add_failure's text, as GoogleTest recorded it ("Failed\n" + the English): shown in either language.
+    std::vector<Message>& failures = current().failures;
+    if (!failures.empty()) {
+      const std::string english = render(failures.front(), Language::English);
+      if (message.size() >= english.size() && message.compare(message.size() - english.size(), english.size(), english) == 0) {
+        MessageArg prefix = MessageArg::bilingual("prefix", message.substr(0, message.size() - english.size()), "");
+        messages_.push_back(name_non_finite(Message(MessageId::failure, {prefix, {"failure", failures.front()}})));
+        failures.erase(failures.begin());
+        return;
+      }
+    }
+    std::string shown = message;
+    if (shown.size() > 1500) shown = shown.substr(0, 1500) + " [...]";
+    messages_.push_back(verbatim(name_non_finite(shown)));
   }
 
   void OnTestEnd(const ::testing::TestInfo& info) override {
-    bool not_implemented = false;
-    for (const std::string& message : messages_)
-      not_implemented = not_implemented || message.find("is not implemented yet") != std::string::npos;
-    on_end_(TestRecord{full_name(info), info.result()->Passed(), not_implemented, messages_, name_non_finite(current().hints),
+    on_end_(TestRecord{full_name(info), info.result()->Passed(), not_implemented_, messages_, name_non_finite(current().hints),
                        name_non_finite(current().notes)});
   }
 
@@ -145,7 +157,8 @@ class Recorder : public ::testing::EmptyTestEventListener {
   }
   std::function<void(const std::string&)> on_start_;
   std::function<void(const TestRecord&)> on_end_;
-  std::vector<std::string> messages_;
+  std::vector<Message> messages_;
+  bool not_implemented_ = false;
 };
 
 }  // namespace
@@ -213,6 +226,11 @@ void add_hint(const Message& hint) {
 }
 
 void add_note(const Message& note) { current().notes.push_back(note); }
+
+void add_failure(const Message& failure) {
+  current().failures.push_back(failure);
+  ADD_FAILURE() << render(failure, Language::English);
+}
 
 const std::string& output_directory() { return output_directory_storage(); }
 void set_output_directory(const std::string& directory) { output_directory_storage() = directory; }

@@ -61,6 +61,9 @@ const std::vector<TestInfo>& tests();
 // Inside a test: a hint for the student, shown with the failure (deduplicated). A hint is an entry
 // of messages.def: add_hint({MessageId::sphere_hit_behind, {{"t", std::to_string(t)}}}).
 void add_hint(const Message& hint);
+// Inside a test: a failure whose text is an entry of messages.def. GoogleTest records it in English;
+// the judge shows it in this run's language. (A plain GoogleTest failure is shown as it is.)
+void add_failure(const Message& failure);
 // Inside a test: a note shown with the result whether it passes or not (e.g. image metrics), an
 // entry of messages.def like a hint.
 void add_note(const Message& note);
@@ -77,7 +80,7 @@ struct TestRecord {
   std::string test;  // "Suite.Name"
   bool passed = false;
   bool not_implemented = false;  // a failure message is a stub's NotImplemented
-  std::vector<std::string> messages;
+  std::vector<Message> messages;
   std::vector<Message> hints;
   std::vector<Message> notes;
 };

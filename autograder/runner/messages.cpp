@@ -74,7 +74,7 @@ std::string render(const Message& message, Language language) {
       out += text[i++];
       continue;
     }
-    out += language == Language::Chinese && !arg->chinese_text.empty() ? arg->chinese_text : arg->text;
+    out += language == Language::Chinese && arg->chinese_text ? *arg->chinese_text : arg->text;
     for (const Message& part : arg->parts) out += render(part, language);
     i += length;
   }

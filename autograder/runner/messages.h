@@ -43,7 +43,7 @@ struct MessageArg {
   std::string name;           // the placeholder {name}
   std::string text;           // its value ...
   std::vector<Message> parts; // ... followed by these, rendered and joined
-  std::string chinese_text;   // if not empty: the value in Chinese (a stage's title, a handout's path)
+  std::optional<std::string> chinese_text;  // if set: the value in Chinese (a stage's title, a handout's path)
   static MessageArg bilingual(std::string arg_name, std::string english, std::string chinese);
   MessageArg(std::string arg_name, std::string value);
   MessageArg(std::string arg_name, const char* value);

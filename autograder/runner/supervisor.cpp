@@ -91,8 +91,7 @@ StageResult grade_stage(const StageInfo& stage) {
                            t.status = record.passed            ? Status::Passed
                                       : record.not_implemented ? Status::NotAttempted
                                                                : Status::Failed;
-                           t.messages.clear();
-                           for (const std::string& message : record.messages) t.messages.push_back(verbatim(message));
+                           t.messages = record.messages;
                            t.hints = record.hints;
                            t.notes = record.notes;
                          }

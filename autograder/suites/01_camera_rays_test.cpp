@@ -258,9 +258,11 @@ void expect_camera_ray(const Camera& camera, int pixel_x, int pixel_y, const glm
   const glm::vec3 expected = glm::normalize(expected_direction);
   const bool ok = glm::all(glm::lessThanEqual(glm::abs(ray.direction - expected), glm::vec3(kDirectionTolerance)));
   if (!ok) diagnose(camera, ray.direction, expected);
-  if (!ok) ADD_FAILURE() << "pixel (" << pixel_x << ", " << pixel_y << ") of a " << camera << ":\n  expected direction "
-                  << expected << " (each component within " << kDirectionTolerance << ")\n  got               "
-                  << ray.direction;
+  if (!ok)
+    add_failure({MessageId::camera_failure_ray,
+                 {{"x", std::to_string(pixel_x)}, {"y", std::to_string(pixel_y)}, {"camera", stream_text(camera)},
+                  {"expected", stream_text(expected)}, {"tolerance", stream_text(kDirectionTolerance)},
+                  {"got", stream_text(ray.direction)}}});
 }
 
 GRADED_TEST(kStage, Stage01CameraRays, CentrePixelLooksAtLookAt, 2) {
@@ -287,8 +289,10 @@ GRADED_TEST(kStage, Stage01CameraRays, TopRowLooksUpLeftColumnLooksLeft, 2) {
   const Ray top_left = generate_camera_ray(camera, 0, 0);
   if (!(top_left.direction.y > 0.0f && top_left.direction.x < 0.0f))
     diagnose(camera, top_left.direction, glm::vec3(-camera.aspect_ratio(), 1.0f, -1.0f));
-  EXPECT_GT(top_left.direction.y, 0.0f) << "the ray of pixel (0, 0), top left, must point up: got " << top_left.direction;
-  EXPECT_LT(top_left.direction.x, 0.0f) << "the ray of pixel (0, 0), top left, must point left: got " << top_left.direction;
+  if (!(top_left.direction.y > 0.0f))
+    add_failure({MessageId::camera_failure_top_left_up, {{"direction", stream_text(top_left.direction)}}});
+  if (!(top_left.direction.x < 0.0f))
+    add_failure({MessageId::camera_failure_top_left_left, {{"direction", stream_text(top_left.direction)}}});
 }
 
 GRADED_TEST(kStage, Stage01CameraRays, OriginAtCameraAndUnitDirection, 2) {
@@ -298,12 +302,21 @@ GRADED_TEST(kStage, Stage01CameraRays, OriginAtCameraAndUnitDirection, 2) {
   for (int y = 0; y < camera.height; ++y)
     for (int x = 0; x < camera.width; ++x) {
       const Ray ray = generate_camera_ray(camera, x, y);
-      ASSERT_EQ(ray.origin, camera.position) << "pixel (" << x << ", " << y << "): the ray must start at the camera";
-      if (std::fabs(glm::length(ray.direction) - 1.0f) > 1e-4f)
+      const std::vector<MessageArg> pixel = {{"x", std::to_string(x)}, {"y", std::to_string(y)}};
+      if (!(ray.origin == camera.position)) {
+        std::vector<MessageArg> args = pixel;
+        args.insert(args.end(), {{"origin", stream_text(ray.origin)}, {"position", stream_text(camera.position)}});
+        return add_failure({MessageId::camera_failure_origin, args});
+      }
+      if (!(std::fabs(glm::length(ray.direction) - 1.0f) <= 1e-4f)) {
         add_hint(MessageId::camera_not_normalised);
-      ASSERT_NEAR(glm::length(ray.direction), 1.0f, 1e-4f) << "pixel (" << x << ", " << y << "): direction " << ray.direction;
-      ASSERT_EQ(ray.t_min, 0.0f) << "leave t_min at 0";
-      ASSERT_EQ(ray.t_max, kInfinity) << "leave t_max at infinity";
+        std::vector<MessageArg> args = pixel;
+        args.insert(args.end(), {{"direction", stream_text(ray.direction)}, {"length", stream_text(glm::length(ray.direction))}});
+        return add_failure({MessageId::camera_failure_length, args});
+      }
+      if (!(ray.t_min == 0.0f)) return add_failure({MessageId::camera_failure_t_min, {{"t_min", stream_text(ray.t_min)}}});
+      if (!(ray.t_max == kInfinity))
+        return add_failure({MessageId::camera_failure_t_max, {{"t_max", stream_text(ray.t_max)}}});
     }
 }
 
@@ -338,9 +351,10 @@ GRADED_TEST(kStage, Stage01CameraRays, RaysThroughOtherPointsOfThePixel, 2) {
     if (glm::all(glm::lessThanEqual(glm::abs(got - expected), glm::vec3(kDirectionTolerance)))) continue;
     if (same_direction(got, generate_camera_ray(camera, c.pixel_x, c.pixel_y).direction, kDirectionTolerance))
       add_hint(MessageId::camera_position_in_pixel_ignored);
-    ADD_FAILURE() << "point " << c.position_in_pixel << " of pixel (" << c.pixel_x << ", " << c.pixel_y << ") of a "
-                  << camera << ":\n  expected direction " << expected << " (each component within "
-                  << kDirectionTolerance << ")\n  got               " << got;
+    add_failure({MessageId::camera_failure_point_in_pixel,
+                 {{"point", stream_text(c.position_in_pixel)}, {"x", std::to_string(c.pixel_x)},
+                  {"y", std::to_string(c.pixel_y)}, {"camera", stream_text(camera)}, {"expected", stream_text(expected)},
+                  {"tolerance", stream_text(kDirectionTolerance)}, {"got", stream_text(got)}}});
   }
 }
 
@@ -362,12 +376,15 @@ GRADED_TEST(kStage, Stage01CameraRays, MatchesReferenceRays, 3) {
     if (glm::all(glm::lessThanEqual(glm::abs(got - expected), glm::vec3(kDirectionTolerance)))) continue;
     if (++failures <= 3) {
       diagnose(camera, got, expected);
-      ADD_FAILURE() << "case " << c.at("id") << ", pixel (" << x << ", " << y << ") of a " << camera
-                    << ":\n  expected direction " << expected << "\n  got               " << got;
+      add_failure({MessageId::camera_failure_reference,
+                   {{"id", c.at("id").dump()}, {"x", std::to_string(x)}, {"y", std::to_string(y)},
+                    {"camera", stream_text(camera)}, {"expected", stream_text(expected)}, {"got", stream_text(got)}}});
     }
   }
-  EXPECT_EQ(failures, 0) << failures << " of " << data.at("cases").size() << " reference rays differ (seed "
-                         << data.at("seed") << "); the first are shown above";
+  if (failures != 0)
+    add_failure({MessageId::camera_failure_reference_count,
+                 {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())},
+                  {"seed", data.at("seed").dump()}}});
 }
 
 GRADED_TEST(kStage, Stage01CameraRays, DirectionImageMatchesReference, 2) {

@@ -69,11 +69,10 @@ void expect_sphere(const Ray& ray, glm::vec3 center, float radius, std::optional
   const std::optional<float> got = intersect_ray_sphere(ray, center, radius);
   const bool ok = got.has_value() == expected.has_value() && (!got || close(*got, *expected));
   if (!ok) diagnose(ray, center, radius, got, expected);
-  std::ostringstream got_text, expected_text;
-  if (got) got_text << "t = " << *got; else got_text << "no hit";
-  if (expected) expected_text << "t = " << *expected; else expected_text << "no hit";
-  if (!ok) ADD_FAILURE() << "ray " << ray << ", sphere centre " << center << " radius " << radius << ":\n  expected "
-                  << expected_text.str() << "\n  got      " << got_text.str();
+  if (!ok)
+    add_failure({MessageId::sphere_failure,
+                 {{"ray", stream_text(ray)}, {"center", stream_text(center)}, {"radius", stream_text(radius)},
+                  {"expected", hit_text(expected)}, {"got", hit_text(got)}}});
 }
 
 GRADED_TEST(kStage, Stage02Sphere, HitInFront, 2) {
@@ -136,13 +135,15 @@ GRADED_TEST(kStage, Stage02Sphere, MatchesReferenceHits, 3) {
     if (got.has_value() == expected.has_value() && (!got || close(*got, *expected))) continue;
     if (++failures <= 3) {
       diagnose(ray, center, radius, got, expected);
-      ADD_FAILURE() << "case " << c.at("id") << ": ray " << ray << ", sphere " << center << " radius " << radius
-                    << "\n  expected " << (expected ? "t = " + std::to_string(*expected) : "no hit") << "\n  got      "
-                    << (got ? "t = " + std::to_string(*got) : "no hit");
+      add_failure({MessageId::sphere_failure_reference,
+                   {{"id", c.at("id").dump()}, {"ray", stream_text(ray)}, {"center", stream_text(center)},
+                    {"radius", stream_text(radius)}, {"expected", hit_text(expected, true)}, {"got", hit_text(got, true)}}});
     }
   }
-  EXPECT_EQ(failures, 0) << failures << " of " << data.at("cases").size() << " reference cases differ (seed "
-                         << data.at("seed") << ")";
+  if (failures != 0)
+    add_failure({MessageId::failure_reference_cases,
+                 {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())},
+                  {"seed", data.at("seed").dump()}}});
 }
 
 GRADED_TEST(kStage, Stage02Sphere, SpheresImageMatchesReference, 1) {

@@ -55,11 +55,10 @@ void diagnose(const Ray& ray, std::optional<TriangleHit> got, std::optional<Tria
   }
 }
 
-std::string describe(const std::optional<TriangleHit>& hit) {
-  if (!hit) return "no hit";
-  std::ostringstream text;
-  text << *hit;
-  return text.str();
+// The value `name` of a failure text: the hit as TriangleHit prints itself, or "no hit".
+MessageArg describe(const char* name, const std::optional<TriangleHit>& hit) {
+  if (!hit) return {name, Message(MessageId::value_no_hit)};
+  return {name, stream_text(*hit)};
 }
 
 void expect_triangle(const Ray& ray, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, std::optional<TriangleHit> expected) {
@@ -67,8 +66,10 @@ void expect_triangle(const Ray& ray, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, s
   const bool ok = got.has_value() == expected.has_value() && (!got || same_hit(*got, *expected));
   const bool back_face = glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) > 0;
   if (!ok) diagnose(ray, got, expected, back_face);
-  if (!ok) ADD_FAILURE() << "ray " << ray << ", triangle " << p0 << " " << p1 << " " << p2 << ":\n  expected "
-                  << describe(expected) << "\n  got      " << describe(got);
+  if (!ok)
+    add_failure({MessageId::triangle_failure,
+                 {{"ray", stream_text(ray)}, {"p0", stream_text(p0)}, {"p1", stream_text(p1)}, {"p2", stream_text(p2)},
+                  describe("expected", expected), describe("got", got)}});
 }
 
 // A right triangle in the plane z = -2: p0 at the origin's shadow, p1 along +x, p2 along +y.
@@ -132,12 +133,15 @@ GRADED_TEST(kStage, Stage03Triangle, MatchesReferenceHits, 2) {
     if (got.has_value() == expected.has_value() && (!got || same_hit(*got, *expected))) continue;
     if (++failures <= 3) {
       diagnose(ray, got, expected, glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) > 0);
-      ADD_FAILURE() << "case " << c.at("id") << ": ray " << ray << ", triangle " << p0 << " " << p1 << " " << p2
-                    << "\n  expected " << describe(expected) << "\n  got      " << describe(got);
+      add_failure({MessageId::triangle_failure_reference,
+                   {{"id", c.at("id").dump()}, {"ray", stream_text(ray)}, {"p0", stream_text(p0)}, {"p1", stream_text(p1)},
+                    {"p2", stream_text(p2)}, describe("expected", expected), describe("got", got)}});
     }
   }
-  EXPECT_EQ(failures, 0) << failures << " of " << data.at("cases").size() << " reference cases differ (seed "
-                         << data.at("seed") << ")";
+  if (failures != 0)
+    add_failure({MessageId::failure_reference_cases,
+                 {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())},
+                  {"seed", data.at("seed").dump()}}});
 }
 
 GRADED_TEST(kStage, Stage03Triangle, WhittedImageMatchesReference, 1) {

@@ -45,15 +45,19 @@ void diagnose(const Ray& ray, std::optional<float> got, std::optional<float> exp
   }
 }
 
-std::string describe(std::optional<float> t) { return t ? "entry at t = " + std::to_string(*t) : std::string("no hit"); }
+Message describe(std::optional<float> t) {
+  if (!t) return MessageId::value_no_hit;
+  return {MessageId::value_box_entry, {{"t", std::to_string(*t)}}};
+}
 
 void expect_box(const Ray& ray, const Bounds3& box, std::optional<float> expected) {
   const std::optional<float> got = intersect_ray_box(ray, ray_direction_inverse_of(ray), box);
   const bool ok = got.has_value() == expected.has_value() && (!got || close(*got, *expected));
   if (!ok) {
     diagnose(ray, got, expected);
-    ADD_FAILURE() << "ray " << ray << ", box " << box << ":\n  expected " << describe(expected) << "\n  got      "
-                  << describe(got);
+    add_failure({MessageId::box_failure,
+                 {{"ray", stream_text(ray)}, {"box", stream_text(box)}, {"expected", describe(expected)},
+                  {"got", describe(got)}}});
   }
 }
 
@@ -119,12 +123,15 @@ GRADED_TEST(kStage, Stage04Box, MatchesReferenceBoxes, 2) {
     if (got.has_value() == expected.has_value() && (!got || close(*got, *expected))) continue;
     if (++failures <= 3) {
       diagnose(ray, got, expected);
-      ADD_FAILURE() << "case " << c.at("id") << ": ray " << ray << ", box " << box << "\n  expected " << describe(expected)
-                    << "\n  got      " << describe(got);
+      add_failure({MessageId::box_failure_reference,
+                   {{"id", c.at("id").dump()}, {"ray", stream_text(ray)}, {"box", stream_text(box)},
+                    {"expected", describe(expected)}, {"got", describe(got)}}});
     }
   }
-  EXPECT_EQ(failures, 0) << failures << " of " << data.at("cases").size() << " reference cases differ (seed "
-                         << data.at("seed") << ")";
+  if (failures != 0)
+    add_failure({MessageId::failure_reference_cases,
+                 {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())},
+                  {"seed", data.at("seed").dump()}}});
 }
 
 }  // namespace

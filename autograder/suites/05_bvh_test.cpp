@@ -29,8 +29,9 @@ void expect_valid_trees(Builder build, const char* builder_name) {
     if (!violation.empty()) {
       if (!hinted) add_hint({MessageId::bvh_breaks_invariant, {{"violation", violation}}});  // each mesh's rule is below
       hinted = true;
-      ADD_FAILURE() << builder_name << " on " << mesh.name << " (" << mesh.bounds.size() << " triangles, leaves of at most "
-                    << kLeafSize << "): " << violation;
+      add_failure({MessageId::bvh_failure_invariant,
+                   {{"builder", builder_name}, {"mesh", mesh.name}, {"triangles", std::to_string(mesh.bounds.size())},
+                    {"leaf_size", std::to_string(kLeafSize)}, {"violation", violation}}});
     }
   }
 }
@@ -51,7 +52,9 @@ void expect_same_hits_as_brute_force(Builder build, const char* builder_name, bo
     differences += compare_with_brute_force(bvh, mesh, rays, any_hit, what);
     rays_tested += static_cast<int>(rays.size());
   }
-  EXPECT_EQ(differences, 0) << differences << " of " << rays_tested << " rays differ from testing every triangle";
+  if (differences != 0)
+    add_failure({MessageId::bvh_failure_brute_force,
+                 {{"differences", std::to_string(differences)}, {"rays", std::to_string(rays_tested)}}});
 }
 
 GRADED_TEST(kStage, Stage05Bvh, BuildsAValidTree, 4) { expect_valid_trees(build_bvh, "build_bvh"); }
@@ -60,25 +63,31 @@ GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
   // The root of the bunny's tree splits its longest axis into halves of equal size (+-1).
   const TestMesh& bunny = bvh_test_meshes().front();
   const Bvh bvh = build_bvh(bunny.bounds, kLeafSize);
-  ASSERT_GE(bvh.nodes.size(), 3u) << "a tree over " << bunny.bounds.size() << " triangles needs more than a root";
+  const std::string triangles = std::to_string(bunny.bounds.size());
+  if (!(bvh.nodes.size() >= 3u))
+    return add_failure({MessageId::bvh_failure_too_few_nodes,
+                        {{"triangles", triangles}, {"nodes", std::to_string(bvh.nodes.size())}}});
   const BvhNode& root = bvh.nodes[0];
-  ASSERT_FALSE(root.is_leaf()) << "the root of " << bunny.bounds.size() << " triangles must be split";
-  ASSERT_TRUE(children_in_range(bvh, root)) << "the root's children " << root.first_index << " and "
-                                            << std::uint64_t(root.first_index) + 1 << " are not among the "
-                                            << bvh.nodes.size() << " nodes";
+  if (root.is_leaf()) return add_failure({MessageId::bvh_failure_root_leaf, {{"triangles", triangles}}});
+  if (!children_in_range(bvh, root))
+    return add_failure({MessageId::bvh_failure_root_children,
+                        {{"first", std::to_string(root.first_index)}, {"second", std::to_string(std::uint64_t(root.first_index) + 1)},
+                         {"nodes", std::to_string(bvh.nodes.size())}}});
   const std::vector<std::uint32_t> counts = subtree_primitive_counts(bvh);
   const long long left = counts[root.first_index], right = counts[root.first_index + 1];
   if (std::llabs(left - right) > 1)
     add_hint(MessageId::bvh_not_median);
-  EXPECT_LE(std::llabs(left - right), 1) << "the root's children hold " << left << " and " << right << " triangles";
+  if (!(std::llabs(left - right) <= 1))
+    add_failure({MessageId::bvh_failure_not_halves, {{"left", std::to_string(left)}, {"right", std::to_string(right)}}});
   Bounds3 centroids;
   for (const Bounds3& b : bunny.bounds) centroids.extend(b.centroid());
   const int longest_node = root.bounds.longest_axis(), longest_centroids = centroids.longest_axis();
   if (root.split_axis != longest_node && root.split_axis != longest_centroids)
     add_hint(MessageId::bvh_split_axis_not_longest);
-  EXPECT_TRUE(root.split_axis == longest_node || root.split_axis == longest_centroids)
-      << "root split_axis " << int(root.split_axis) << ", but the longest axis of its box " << root.bounds << " is "
-      << longest_node;
+  if (!(root.split_axis == longest_node || root.split_axis == longest_centroids))
+    add_failure({MessageId::bvh_failure_split_axis,
+                 {{"axis", std::to_string(int(root.split_axis))}, {"box", stream_text(root.bounds)},
+                  {"longest", std::to_string(longest_node)}}});
 }
 
 GRADED_TEST(kStage, Stage05Bvh, ClosestHitsMatchBruteForce, 5) {
@@ -138,15 +147,15 @@ GRADED_TEST(kStage, Stage05Bvh, DoesNoMoreWorkThanTheReference, 3) {
     add_hint({MessageId::bvh_t_max_not_lowered,
               {{"rays", std::to_string(yours.rays_beyond_a_hit)}, {"total", std::to_string(rays.size())},
                {"calls", std::to_string(yours.calls_beyond_a_hit)}}});
-    ADD_FAILURE() << "t_max not lowered after a hit: " << yours.calls_beyond_a_hit << " calls of intersector.test on "
-                  << yours.rays_beyond_a_hit << " rays had a t_max larger than a hit already reported on that ray";
+    add_failure({MessageId::bvh_failure_t_max,
+                 {{"calls", stream_text(yours.calls_beyond_a_hit)}, {"rays", stream_text(yours.rays_beyond_a_hit)}}});
   }
   if (yours.leaves_missed_by_ray > 0) {
     explained = true;
     add_hint({MessageId::bvh_tests_missed_leaves,
               {{"missed", std::to_string(yours.leaves_missed_by_ray)}, {"entered", std::to_string(yours.leaves_entered)}}});
-    ADD_FAILURE() << yours.leaves_missed_by_ray << " of the " << yours.leaves_entered
-                  << " leaves whose triangles were tested lie off the ray";
+    add_failure({MessageId::bvh_failure_missed_leaves,
+                 {{"missed", stream_text(yours.leaves_missed_by_ray)}, {"entered", stream_text(yours.leaves_entered)}}});
   }
   const std::uint64_t ordered = yours.near_child_first + yours.far_child_first;
   const double near_fraction = ordered ? double(yours.near_child_first) / double(ordered) : 1.0;
@@ -166,10 +175,11 @@ GRADED_TEST(kStage, Stage05Bvh, DoesNoMoreWorkThanTheReference, 3) {
     add_hint(MessageId::bvh_too_much_work);
   if (yours.primitives_counted != yours.primitives_tested) {
     add_hint(MessageId::bvh_stats_not_counted);
-    ADD_FAILURE() << "stats.primitives_tested says " << per_ray(double(yours.primitives_counted) / rays.size())
-                  << " per ray, but intersector.test was called " << per_ray(yours.tests_per_ray()) << " times per ray";
+    add_failure({MessageId::bvh_failure_stats,
+                 {{"counted", per_ray(double(yours.primitives_counted) / rays.size())},
+                  {"tested", per_ray(yours.tests_per_ray())}}});
   }
-  EXPECT_FALSE(too_much) << "more work than the reference's traversal of the same tree (the figures are below)";
+  if (too_much) add_failure(MessageId::bvh_failure_too_much_work);
 }
 
 GRADED_TEST(kStage, Stage05Bvh, BunnyImageMatchesReference, 2) {
@@ -197,7 +207,7 @@ GRADED_TEST(kBonusStage, Stage05bBvhSah, SahCostNearTheReference, 4) {
   add_note(note);
   if (cost > limit)
     add_hint(MessageId::bvh_sah_not_better);
-  EXPECT_LE(cost, limit) << render(note, Language::English);
+  if (!(cost <= limit)) add_failure(note);
 }
 
 }  // namespace

@@ -92,18 +92,22 @@ void check_sphere_cases(const std::string& kind) {
     }
     if (ok) continue;
     if (++failures <= 3) {
-      std::ostringstream got_text;
-      if (got) got_text << "t = " << *got; else got_text << "no hit";
-      ADD_FAILURE() << "case " << c.at("id") << " (" << kind << "): ray " << ray << ", sphere " << center << " radius "
-                    << radius << "\n  expected " << (expected_hit ? "t = " + std::to_string(expected_t) : "no hit")
-                    << " (exact, relative tolerance " << kSphereRelativeTolerance << ")\n  got      " << got_text.str();
+      const Message expected = expected_hit ? Message(MessageId::value_t, {{"t", std::to_string(expected_t)}})
+                                            : Message(MessageId::value_no_hit);
+      add_failure({MessageId::robust_failure_sphere,
+                   {{"id", c.at("id").dump()}, {"kind", kind}, {"ray", stream_text(ray)}, {"center", stream_text(center)},
+                    {"radius", stream_text(radius)}, {"expected", expected},
+                    {"tolerance", stream_text(kSphereRelativeTolerance)}, {"got", hit_text(got)}}});
     }
   }
   if (failures > 0) add_hint(kCancellationHint);
   char worst_text[32];
   std::snprintf(worst_text, sizeof worst_text, "%.2e", worst);
   add_note({MessageId::note_sphere_error, {{"kind", kind}, {"worst", worst_text}, {"count", std::to_string(checked)}}});
-  EXPECT_EQ(failures, 0) << failures << " of " << checked << " " << kind << " spheres wrong (seed " << data.at("seed") << ")";
+  if (failures != 0)
+    add_failure({MessageId::robust_failure_spheres_wrong,
+                 {{"failures", std::to_string(failures)}, {"count", std::to_string(checked)}, {"kind", kind},
+                  {"seed", data.at("seed").dump()}}});
 }
 
 GRADED_TEST(kStage, Stage06Robustness, SmallSpheresFarAway, 4) { check_sphere_cases("far_tiny"); }
@@ -140,14 +144,17 @@ GRADED_TEST(kStage, Stage06Robustness, WatertightMatchesStage03Answers, 3) {
     else if (got && !expected)
       add_hint(MessageId::robust_false_hits);
     if (++failures <= 3) {
-      std::ostringstream got_text;
-      if (got) got_text << *got; else got_text << "no hit";
-      ADD_FAILURE() << "case " << c.at("id") << ": ray " << ray << ", triangle " << p0 << " " << p1 << " " << p2
-                    << "\n  expected " << (expected ? c.at("hit").dump() : "no hit") << " (t, b1, b2)\n  got      "
-                    << got_text.str();
+      const MessageArg got_text = got ? MessageArg("got", stream_text(*got)) : MessageArg("got", Message(MessageId::value_no_hit));
+      const MessageArg expected_text = expected ? MessageArg("expected", c.at("hit").dump())
+                                                : MessageArg("expected", Message(MessageId::value_no_hit));
+      add_failure({MessageId::robust_failure_stage03_case,
+                   {{"id", c.at("id").dump()}, {"ray", stream_text(ray)}, {"p0", stream_text(p0)}, {"p1", stream_text(p1)},
+                    {"p2", stream_text(p2)}, expected_text, got_text}});
     }
   }
-  EXPECT_EQ(failures, 0) << failures << " of " << data.at("cases").size() << " stage 03 cases differ";
+  if (failures != 0)
+    add_failure({MessageId::robust_failure_stage03_count,
+                 {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())}}});
 }
 
 // A closed mesh: every edge is shared by exactly two triangles.
@@ -226,8 +233,9 @@ GRADED_TEST(kStage, Stage06Robustness, NoRayLeaksThroughClosedMeshes, 6) {
               {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kRays)}}});
     if (leaks > 0) {
       add_hint(MessageId::robust_leaks);
-      ADD_FAILURE() << mesh.name << ": " << leaks << " of " << kRays
-                    << " rays from inside through its edges and vertices hit no triangle; the first: " << first_leak;
+      add_failure({MessageId::robust_failure_leaks,
+                   {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kRays)},
+                    {"ray", stream_text(first_leak)}}});
     }
   }
 }
@@ -258,8 +266,9 @@ GRADED_TEST(kStage, Stage06Robustness, DegenerateAndParallelInputsGiveNoNaN, 2) 
     const bool finite = std::isfinite(got->t_hit) && std::isfinite(got->barycentric_b1) && std::isfinite(got->barycentric_b2);
     if (finite && got->t_hit > input.ray.t_min) continue;  // a finite hit on a degenerate input is acceptable
     add_hint(MessageId::robust_degenerate_nan);
-    ADD_FAILURE() << input.what << ": ray " << input.ray << ", triangle " << input.a << " " << input.b << " " << input.c
-                  << "\n  expected no hit (or a finite one)\n  got      " << *got;
+    add_failure({MessageId::robust_failure_degenerate,
+                 {{"what", input.what}, {"ray", stream_text(input.ray)}, {"p0", stream_text(input.a)},
+                  {"p1", stream_text(input.b)}, {"p2", stream_text(input.c)}, {"got", stream_text(*got)}}});
   }
 }
 
@@ -321,9 +330,10 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
   add_note({MessageId::note_shadow_acne, {{"acne", std::to_string(acne)}, {"rays", std::to_string(tested)}}});
   if (acne > 0) {
     add_hint(MessageId::robust_shadow_acne);
-    ADD_FAILURE() << acne << " of " << tested << " rays leaving a triangle hit it again; the first: " << first << " from the triangle "
-                  << first_corners[0] << " " << first_corners[1] << " " << first_corners[2] << ", at t = " << first_t
-                  << " (expected no hit: the ray starts on it)";
+    add_failure({MessageId::robust_failure_acne,
+                 {{"acne", stream_text(acne)}, {"rays", stream_text(tested)}, {"ray", stream_text(first)},
+                  {"p0", stream_text(first_corners[0])}, {"p1", stream_text(first_corners[1])},
+                  {"p2", stream_text(first_corners[2])}, {"t", stream_text(first_t)}}});
   }
 }
 
@@ -373,8 +383,9 @@ GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
   add_note({MessageId::note_box_edge, {{"lost", std::to_string(lost)}, {"boxes", std::to_string(touching)}}});
   if (lost > 0) {
     add_hint(MessageId::robust_box_edge);
-    ADD_FAILURE() << lost << " of " << touching << " rays aimed exactly at a box edge were reported as missing it; the first: "
-                  << first << ", box " << first_box;
+    add_failure({MessageId::robust_failure_box_edge,
+                 {{"lost", stream_text(lost)}, {"rays", stream_text(touching)}, {"ray", stream_text(first)},
+                  {"box", stream_text(first_box)}}});
   }
 }
 

@@ -404,10 +404,14 @@ int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::ve
     }
     else
       add_hint(MessageId::bvh_false_hit);
-    ADD_FAILURE() << what << " on " << mesh.name << ", ray " << r << ": " << ray << "\n  expected "
-                  << (expected ? "t = " + std::to_string(expected->t_hit) + " (triangle " + std::to_string(expected->primitive) + ")" : std::string("no hit"))
-                  << "\n  got      "
-                  << (got ? "t = " + std::to_string(got->t_hit) + " (triangle " + std::to_string(got->primitive) + ")" : std::string("no hit"));
+    auto hit_of = [](const std::optional<BvhHit>& hit) {
+      if (!hit) return Message(MessageId::value_no_hit);
+      return Message(MessageId::value_t_primitive,
+                     {{"t", std::to_string(hit->t_hit)}, {"primitive", std::to_string(hit->primitive)}});
+    };
+    add_failure({MessageId::bvh_failure_ray,
+                 {{"what", what}, {"mesh", mesh.name}, {"index", std::to_string(r)}, {"ray", stream_text(ray)},
+                  {"expected", hit_of(expected)}, {"got", hit_of(got)}}});
   }
   return differences;
 }

@@ -26,6 +26,11 @@ bool hint_if_not_finite(const std::string& what, std::initializer_list<float> re
   return false;
 }
 
+Message hit_text(std::optional<float> t, bool fixed) {
+  if (!t) return MessageId::value_no_hit;
+  return {MessageId::value_t, {{"t", fixed ? std::to_string(*t) : stream_text(*t)}}};
+}
+
 nlohmann::json to_json(const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 glm::vec3 vec3_from_json(const nlohmann::json& value) {
@@ -78,9 +83,10 @@ void expect_image_matches_reference(const std::string& stage_id, float channel_t
              {"percent", stream_text(100.0 * difference.fraction_over_threshold)},
              {"threshold", stream_text(channel_threshold)}, {"allowed", stream_text(100.0 * max_fraction)},
              {"rms", stream_text(difference.rms_error)}, {"path", comparison_path}}});
-  EXPECT_LE(difference.fraction_over_threshold, max_fraction)
-      << "your picture differs from the reference: largest difference " << difference.max_error
-      << " at pixel (" << difference.max_x << ", " << difference.max_y << "). Open " << comparison_path;
+  if (!(difference.fraction_over_threshold <= max_fraction))
+    add_failure({MessageId::image_failure,
+                 {{"error", stream_text(difference.max_error)}, {"x", stream_text(difference.max_x)},
+                  {"y", stream_text(difference.max_y)}, {"path", comparison_path}}});
 }
 
 }  // namespace raylab::grading

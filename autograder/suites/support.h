@@ -28,6 +28,9 @@ namespace raylab::grading {
 // Failure texts need nothing: the grader prints every non-finite value as NaN or infinity.
 bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice);
 
+// "t = <t>" (the stream's format, or std::to_string's with `fixed`) or "no hit", for failure texts.
+Message hit_text(std::optional<float> t, bool fixed = false);
+
 nlohmann::json to_json(const glm::vec3& v);
 glm::vec3 vec3_from_json(const nlohmann::json& value);
 
