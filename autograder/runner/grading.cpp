@@ -227,9 +227,11 @@ void add_hint(const Message& hint) {
 
 void add_note(const Message& note) { current().notes.push_back(note); }
 
-void add_failure(const Message& failure) {
+void add_failure(const Message& failure) { ADD_FAILURE() << failure_text(failure); }
+
+std::string failure_text(const Message& failure) {
   current().failures.push_back(failure);
-  ADD_FAILURE() << render(failure, Language::English);
+  return render(failure, Language::English);
 }
 
 const std::string& output_directory() { return output_directory_storage(); }

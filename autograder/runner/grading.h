@@ -64,6 +64,9 @@ void add_hint(const Message& hint);
 // Inside a test: a failure whose text is an entry of messages.def. GoogleTest records it in English;
 // the judge shows it in this run's language. (A plain GoogleTest failure is shown as it is.)
 void add_failure(const Message& failure);
+// The same for an assertion's message, which GoogleTest evaluates only when the assertion fails:
+// EXPECT_EQ(failures, 0) << failure_text({MessageId::..., {...}}). Returns the English text.
+std::string failure_text(const Message& failure);
 // Inside a test: a note shown with the result whether it passes or not (e.g. image metrics), an
 // entry of messages.def like a hint.
 void add_note(const Message& note);

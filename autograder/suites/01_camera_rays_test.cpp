@@ -260,9 +260,9 @@ void expect_camera_ray(const Camera& camera, int pixel_x, int pixel_y, const glm
   if (!ok) diagnose(camera, ray.direction, expected);
   if (!ok)
     add_failure({MessageId::camera_failure_ray,
-                 {{"x", std::to_string(pixel_x)}, {"y", std::to_string(pixel_y)}, {"camera", stream_text(camera)},
-                  {"expected", stream_text(expected)}, {"tolerance", stream_text(kDirectionTolerance)},
-                  {"got", stream_text(ray.direction)}}});
+                 {{"x", std::to_string(pixel_x)}, {"y", std::to_string(pixel_y)}, {"camera", gtest_text(camera)},
+                  {"expected", gtest_text(expected)}, {"tolerance", gtest_text(kDirectionTolerance)},
+                  {"got", gtest_text(ray.direction)}}});
 }
 
 GRADED_TEST(kStage, Stage01CameraRays, CentrePixelLooksAtLookAt, 2) {
@@ -289,10 +289,10 @@ GRADED_TEST(kStage, Stage01CameraRays, TopRowLooksUpLeftColumnLooksLeft, 2) {
   const Ray top_left = generate_camera_ray(camera, 0, 0);
   if (!(top_left.direction.y > 0.0f && top_left.direction.x < 0.0f))
     diagnose(camera, top_left.direction, glm::vec3(-camera.aspect_ratio(), 1.0f, -1.0f));
-  if (!(top_left.direction.y > 0.0f))
-    add_failure({MessageId::camera_failure_top_left_up, {{"direction", stream_text(top_left.direction)}}});
-  if (!(top_left.direction.x < 0.0f))
-    add_failure({MessageId::camera_failure_top_left_left, {{"direction", stream_text(top_left.direction)}}});
+  EXPECT_GT(top_left.direction.y, 0.0f)
+      << failure_text({MessageId::camera_failure_top_left_up, {{"direction", gtest_text(top_left.direction)}}});
+  EXPECT_LT(top_left.direction.x, 0.0f)
+      << failure_text({MessageId::camera_failure_top_left_left, {{"direction", gtest_text(top_left.direction)}}});
 }
 
 GRADED_TEST(kStage, Stage01CameraRays, OriginAtCameraAndUnitDirection, 2) {
@@ -302,21 +302,15 @@ GRADED_TEST(kStage, Stage01CameraRays, OriginAtCameraAndUnitDirection, 2) {
   for (int y = 0; y < camera.height; ++y)
     for (int x = 0; x < camera.width; ++x) {
       const Ray ray = generate_camera_ray(camera, x, y);
-      const std::vector<MessageArg> pixel = {{"x", std::to_string(x)}, {"y", std::to_string(y)}};
-      if (!(ray.origin == camera.position)) {
-        std::vector<MessageArg> args = pixel;
-        args.insert(args.end(), {{"origin", stream_text(ray.origin)}, {"position", stream_text(camera.position)}});
-        return add_failure({MessageId::camera_failure_origin, args});
-      }
-      if (!(std::fabs(glm::length(ray.direction) - 1.0f) <= 1e-4f)) {
+      ASSERT_EQ(ray.origin, camera.position)
+          << failure_text({MessageId::camera_failure_origin, {{"x", std::to_string(x)}, {"y", std::to_string(y)}}});
+      if (std::fabs(glm::length(ray.direction) - 1.0f) > 1e-4f)
         add_hint(MessageId::camera_not_normalised);
-        std::vector<MessageArg> args = pixel;
-        args.insert(args.end(), {{"direction", stream_text(ray.direction)}, {"length", stream_text(glm::length(ray.direction))}});
-        return add_failure({MessageId::camera_failure_length, args});
-      }
-      if (!(ray.t_min == 0.0f)) return add_failure({MessageId::camera_failure_t_min, {{"t_min", stream_text(ray.t_min)}}});
-      if (!(ray.t_max == kInfinity))
-        return add_failure({MessageId::camera_failure_t_max, {{"t_max", stream_text(ray.t_max)}}});
+      ASSERT_NEAR(glm::length(ray.direction), 1.0f, 1e-4f)
+          << failure_text({MessageId::camera_failure_length,
+                           {{"x", std::to_string(x)}, {"y", std::to_string(y)}, {"direction", gtest_text(ray.direction)}}});
+      ASSERT_EQ(ray.t_min, 0.0f) << failure_text(MessageId::camera_failure_t_min);
+      ASSERT_EQ(ray.t_max, kInfinity) << failure_text(MessageId::camera_failure_t_max);
     }
 }
 
@@ -352,9 +346,9 @@ GRADED_TEST(kStage, Stage01CameraRays, RaysThroughOtherPointsOfThePixel, 2) {
     if (same_direction(got, generate_camera_ray(camera, c.pixel_x, c.pixel_y).direction, kDirectionTolerance))
       add_hint(MessageId::camera_position_in_pixel_ignored);
     add_failure({MessageId::camera_failure_point_in_pixel,
-                 {{"point", stream_text(c.position_in_pixel)}, {"x", std::to_string(c.pixel_x)},
-                  {"y", std::to_string(c.pixel_y)}, {"camera", stream_text(camera)}, {"expected", stream_text(expected)},
-                  {"tolerance", stream_text(kDirectionTolerance)}, {"got", stream_text(got)}}});
+                 {{"point", gtest_text(c.position_in_pixel)}, {"x", std::to_string(c.pixel_x)},
+                  {"y", std::to_string(c.pixel_y)}, {"camera", gtest_text(camera)}, {"expected", gtest_text(expected)},
+                  {"tolerance", gtest_text(kDirectionTolerance)}, {"got", gtest_text(got)}}});
   }
 }
 
@@ -378,11 +372,11 @@ GRADED_TEST(kStage, Stage01CameraRays, MatchesReferenceRays, 3) {
       diagnose(camera, got, expected);
       add_failure({MessageId::camera_failure_reference,
                    {{"id", c.at("id").dump()}, {"x", std::to_string(x)}, {"y", std::to_string(y)},
-                    {"camera", stream_text(camera)}, {"expected", stream_text(expected)}, {"got", stream_text(got)}}});
+                    {"camera", gtest_text(camera)}, {"expected", gtest_text(expected)}, {"got", gtest_text(got)}}});
     }
   }
-  if (failures != 0)
-    add_failure({MessageId::camera_failure_reference_count,
+  EXPECT_EQ(failures, 0)
+      << failure_text({MessageId::camera_failure_reference_count,
                  {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())},
                   {"seed", data.at("seed").dump()}}});
 }

@@ -71,7 +71,7 @@ void expect_sphere(const Ray& ray, glm::vec3 center, float radius, std::optional
   if (!ok) diagnose(ray, center, radius, got, expected);
   if (!ok)
     add_failure({MessageId::sphere_failure,
-                 {{"ray", stream_text(ray)}, {"center", stream_text(center)}, {"radius", stream_text(radius)},
+                 {{"ray", gtest_text(ray)}, {"center", gtest_text(center)}, {"radius", gtest_text(radius)},
                   {"expected", hit_text(expected)}, {"got", hit_text(got)}}});
 }
 
@@ -136,12 +136,12 @@ GRADED_TEST(kStage, Stage02Sphere, MatchesReferenceHits, 3) {
     if (++failures <= 3) {
       diagnose(ray, center, radius, got, expected);
       add_failure({MessageId::sphere_failure_reference,
-                   {{"id", c.at("id").dump()}, {"ray", stream_text(ray)}, {"center", stream_text(center)},
-                    {"radius", stream_text(radius)}, {"expected", hit_text(expected, true)}, {"got", hit_text(got, true)}}});
+                   {{"id", c.at("id").dump()}, {"ray", gtest_text(ray)}, {"center", gtest_text(center)},
+                    {"radius", gtest_text(radius)}, {"expected", hit_text(expected, true)}, {"got", hit_text(got, true)}}});
     }
   }
-  if (failures != 0)
-    add_failure({MessageId::failure_reference_cases,
+  EXPECT_EQ(failures, 0)
+      << failure_text({MessageId::failure_reference_cases,
                  {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())},
                   {"seed", data.at("seed").dump()}}});
 }

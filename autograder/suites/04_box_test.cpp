@@ -56,7 +56,7 @@ void expect_box(const Ray& ray, const Bounds3& box, std::optional<float> expecte
   if (!ok) {
     diagnose(ray, got, expected);
     add_failure({MessageId::box_failure,
-                 {{"ray", stream_text(ray)}, {"box", stream_text(box)}, {"expected", describe(expected)},
+                 {{"ray", gtest_text(ray)}, {"box", gtest_text(box)}, {"expected", describe(expected)},
                   {"got", describe(got)}}});
   }
 }
@@ -124,12 +124,12 @@ GRADED_TEST(kStage, Stage04Box, MatchesReferenceBoxes, 2) {
     if (++failures <= 3) {
       diagnose(ray, got, expected);
       add_failure({MessageId::box_failure_reference,
-                   {{"id", c.at("id").dump()}, {"ray", stream_text(ray)}, {"box", stream_text(box)},
+                   {{"id", c.at("id").dump()}, {"ray", gtest_text(ray)}, {"box", gtest_text(box)},
                     {"expected", describe(expected)}, {"got", describe(got)}}});
     }
   }
-  if (failures != 0)
-    add_failure({MessageId::failure_reference_cases,
+  EXPECT_EQ(failures, 0)
+      << failure_text({MessageId::failure_reference_cases,
                  {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())},
                   {"seed", data.at("seed").dump()}}});
 }

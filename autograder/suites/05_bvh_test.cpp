@@ -52,8 +52,8 @@ void expect_same_hits_as_brute_force(Builder build, const char* builder_name, bo
     differences += compare_with_brute_force(bvh, mesh, rays, any_hit, what);
     rays_tested += static_cast<int>(rays.size());
   }
-  if (differences != 0)
-    add_failure({MessageId::bvh_failure_brute_force,
+  EXPECT_EQ(differences, 0)
+      << failure_text({MessageId::bvh_failure_brute_force,
                  {{"differences", std::to_string(differences)}, {"rays", std::to_string(rays_tested)}}});
 }
 
@@ -64,29 +64,27 @@ GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
   const TestMesh& bunny = bvh_test_meshes().front();
   const Bvh bvh = build_bvh(bunny.bounds, kLeafSize);
   const std::string triangles = std::to_string(bunny.bounds.size());
-  if (!(bvh.nodes.size() >= 3u))
-    return add_failure({MessageId::bvh_failure_too_few_nodes,
-                        {{"triangles", triangles}, {"nodes", std::to_string(bvh.nodes.size())}}});
+  ASSERT_GE(bvh.nodes.size(), 3u) << failure_text({MessageId::bvh_failure_too_few_nodes, {{"triangles", triangles}}});
   const BvhNode& root = bvh.nodes[0];
-  if (root.is_leaf()) return add_failure({MessageId::bvh_failure_root_leaf, {{"triangles", triangles}}});
-  if (!children_in_range(bvh, root))
-    return add_failure({MessageId::bvh_failure_root_children,
+  ASSERT_FALSE(root.is_leaf()) << failure_text({MessageId::bvh_failure_root_leaf, {{"triangles", triangles}}});
+  ASSERT_TRUE(children_in_range(bvh, root))
+      << failure_text({MessageId::bvh_failure_root_children,
                         {{"first", std::to_string(root.first_index)}, {"second", std::to_string(std::uint64_t(root.first_index) + 1)},
                          {"nodes", std::to_string(bvh.nodes.size())}}});
   const std::vector<std::uint32_t> counts = subtree_primitive_counts(bvh);
   const long long left = counts[root.first_index], right = counts[root.first_index + 1];
   if (std::llabs(left - right) > 1)
     add_hint(MessageId::bvh_not_median);
-  if (!(std::llabs(left - right) <= 1))
-    add_failure({MessageId::bvh_failure_not_halves, {{"left", std::to_string(left)}, {"right", std::to_string(right)}}});
+  EXPECT_LE(std::llabs(left - right), 1)
+      << failure_text({MessageId::bvh_failure_not_halves, {{"left", std::to_string(left)}, {"right", std::to_string(right)}}});
   Bounds3 centroids;
   for (const Bounds3& b : bunny.bounds) centroids.extend(b.centroid());
   const int longest_node = root.bounds.longest_axis(), longest_centroids = centroids.longest_axis();
   if (root.split_axis != longest_node && root.split_axis != longest_centroids)
     add_hint(MessageId::bvh_split_axis_not_longest);
-  if (!(root.split_axis == longest_node || root.split_axis == longest_centroids))
-    add_failure({MessageId::bvh_failure_split_axis,
-                 {{"axis", std::to_string(int(root.split_axis))}, {"box", stream_text(root.bounds)},
+  EXPECT_TRUE(root.split_axis == longest_node || root.split_axis == longest_centroids)
+      << failure_text({MessageId::bvh_failure_split_axis,
+                 {{"axis", std::to_string(int(root.split_axis))}, {"box", gtest_text(root.bounds)},
                   {"longest", std::to_string(longest_node)}}});
 }
 
@@ -148,14 +146,14 @@ GRADED_TEST(kStage, Stage05Bvh, DoesNoMoreWorkThanTheReference, 3) {
               {{"rays", std::to_string(yours.rays_beyond_a_hit)}, {"total", std::to_string(rays.size())},
                {"calls", std::to_string(yours.calls_beyond_a_hit)}}});
     add_failure({MessageId::bvh_failure_t_max,
-                 {{"calls", stream_text(yours.calls_beyond_a_hit)}, {"rays", stream_text(yours.rays_beyond_a_hit)}}});
+                 {{"calls", gtest_text(yours.calls_beyond_a_hit)}, {"rays", gtest_text(yours.rays_beyond_a_hit)}}});
   }
   if (yours.leaves_missed_by_ray > 0) {
     explained = true;
     add_hint({MessageId::bvh_tests_missed_leaves,
               {{"missed", std::to_string(yours.leaves_missed_by_ray)}, {"entered", std::to_string(yours.leaves_entered)}}});
     add_failure({MessageId::bvh_failure_missed_leaves,
-                 {{"missed", stream_text(yours.leaves_missed_by_ray)}, {"entered", stream_text(yours.leaves_entered)}}});
+                 {{"missed", gtest_text(yours.leaves_missed_by_ray)}, {"entered", gtest_text(yours.leaves_entered)}}});
   }
   const std::uint64_t ordered = yours.near_child_first + yours.far_child_first;
   const double near_fraction = ordered ? double(yours.near_child_first) / double(ordered) : 1.0;
@@ -179,7 +177,7 @@ GRADED_TEST(kStage, Stage05Bvh, DoesNoMoreWorkThanTheReference, 3) {
                  {{"counted", per_ray(double(yours.primitives_counted) / rays.size())},
                   {"tested", per_ray(yours.tests_per_ray())}}});
   }
-  if (too_much) add_failure(MessageId::bvh_failure_too_much_work);
+  EXPECT_FALSE(too_much) << failure_text(MessageId::bvh_failure_too_much_work);
 }
 
 GRADED_TEST(kStage, Stage05Bvh, BunnyImageMatchesReference, 2) {
@@ -207,7 +205,7 @@ GRADED_TEST(kBonusStage, Stage05bBvhSah, SahCostNearTheReference, 4) {
   add_note(note);
   if (cost > limit)
     add_hint(MessageId::bvh_sah_not_better);
-  if (!(cost <= limit)) add_failure(note);
+  EXPECT_LE(cost, limit) << failure_text(note);
 }
 
 }  // namespace

@@ -95,17 +95,17 @@ void check_sphere_cases(const std::string& kind) {
       const Message expected = expected_hit ? Message(MessageId::value_t, {{"t", std::to_string(expected_t)}})
                                             : Message(MessageId::value_no_hit);
       add_failure({MessageId::robust_failure_sphere,
-                   {{"id", c.at("id").dump()}, {"kind", kind}, {"ray", stream_text(ray)}, {"center", stream_text(center)},
-                    {"radius", stream_text(radius)}, {"expected", expected},
-                    {"tolerance", stream_text(kSphereRelativeTolerance)}, {"got", hit_text(got)}}});
+                   {{"id", c.at("id").dump()}, {"kind", kind}, {"ray", gtest_text(ray)}, {"center", gtest_text(center)},
+                    {"radius", gtest_text(radius)}, {"expected", expected},
+                    {"tolerance", gtest_text(kSphereRelativeTolerance)}, {"got", hit_text(got)}}});
     }
   }
   if (failures > 0) add_hint(kCancellationHint);
   char worst_text[32];
   std::snprintf(worst_text, sizeof worst_text, "%.2e", worst);
   add_note({MessageId::note_sphere_error, {{"kind", kind}, {"worst", worst_text}, {"count", std::to_string(checked)}}});
-  if (failures != 0)
-    add_failure({MessageId::robust_failure_spheres_wrong,
+  EXPECT_EQ(failures, 0)
+      << failure_text({MessageId::robust_failure_spheres_wrong,
                  {{"failures", std::to_string(failures)}, {"count", std::to_string(checked)}, {"kind", kind},
                   {"seed", data.at("seed").dump()}}});
 }
@@ -148,12 +148,12 @@ GRADED_TEST(kStage, Stage06Robustness, WatertightMatchesStage03Answers, 3) {
       const MessageArg expected_text = expected ? MessageArg("expected", c.at("hit").dump())
                                                 : MessageArg("expected", Message(MessageId::value_no_hit));
       add_failure({MessageId::robust_failure_stage03_case,
-                   {{"id", c.at("id").dump()}, {"ray", stream_text(ray)}, {"p0", stream_text(p0)}, {"p1", stream_text(p1)},
-                    {"p2", stream_text(p2)}, expected_text, got_text}});
+                   {{"id", c.at("id").dump()}, {"ray", gtest_text(ray)}, {"p0", gtest_text(p0)}, {"p1", gtest_text(p1)},
+                    {"p2", gtest_text(p2)}, expected_text, got_text}});
     }
   }
-  if (failures != 0)
-    add_failure({MessageId::robust_failure_stage03_count,
+  EXPECT_EQ(failures, 0)
+      << failure_text({MessageId::robust_failure_stage03_count,
                  {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())}}});
 }
 
@@ -235,7 +235,7 @@ GRADED_TEST(kStage, Stage06Robustness, NoRayLeaksThroughClosedMeshes, 6) {
       add_hint(MessageId::robust_leaks);
       add_failure({MessageId::robust_failure_leaks,
                    {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kRays)},
-                    {"ray", stream_text(first_leak)}}});
+                    {"ray", gtest_text(first_leak)}}});
     }
   }
 }
@@ -267,8 +267,8 @@ GRADED_TEST(kStage, Stage06Robustness, DegenerateAndParallelInputsGiveNoNaN, 2) 
     if (finite && got->t_hit > input.ray.t_min) continue;  // a finite hit on a degenerate input is acceptable
     add_hint(MessageId::robust_degenerate_nan);
     add_failure({MessageId::robust_failure_degenerate,
-                 {{"what", input.what}, {"ray", stream_text(input.ray)}, {"p0", stream_text(input.a)},
-                  {"p1", stream_text(input.b)}, {"p2", stream_text(input.c)}, {"got", stream_text(*got)}}});
+                 {{"what", input.what}, {"ray", gtest_text(input.ray)}, {"p0", gtest_text(input.a)},
+                  {"p1", gtest_text(input.b)}, {"p2", gtest_text(input.c)}, {"got", gtest_text(*got)}}});
   }
 }
 
@@ -331,9 +331,9 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
   if (acne > 0) {
     add_hint(MessageId::robust_shadow_acne);
     add_failure({MessageId::robust_failure_acne,
-                 {{"acne", stream_text(acne)}, {"rays", stream_text(tested)}, {"ray", stream_text(first)},
-                  {"p0", stream_text(first_corners[0])}, {"p1", stream_text(first_corners[1])},
-                  {"p2", stream_text(first_corners[2])}, {"t", stream_text(first_t)}}});
+                 {{"acne", gtest_text(acne)}, {"rays", gtest_text(tested)}, {"ray", gtest_text(first)},
+                  {"p0", gtest_text(first_corners[0])}, {"p1", gtest_text(first_corners[1])},
+                  {"p2", gtest_text(first_corners[2])}, {"t", gtest_text(first_t)}}});
   }
 }
 
@@ -384,8 +384,8 @@ GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
   if (lost > 0) {
     add_hint(MessageId::robust_box_edge);
     add_failure({MessageId::robust_failure_box_edge,
-                 {{"lost", stream_text(lost)}, {"rays", stream_text(touching)}, {"ray", stream_text(first)},
-                  {"box", stream_text(first_box)}}});
+                 {{"lost", gtest_text(lost)}, {"rays", gtest_text(touching)}, {"ray", gtest_text(first)},
+                  {"box", gtest_text(first_box)}}});
   }
 }
 

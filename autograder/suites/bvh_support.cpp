@@ -410,7 +410,7 @@ int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::ve
                      {{"t", std::to_string(hit->t_hit)}, {"primitive", std::to_string(hit->primitive)}});
     };
     add_failure({MessageId::bvh_failure_ray,
-                 {{"what", what}, {"mesh", mesh.name}, {"index", std::to_string(r)}, {"ray", stream_text(ray)},
+                 {{"what", what}, {"mesh", mesh.name}, {"index", std::to_string(r)}, {"ray", gtest_text(ray)},
                   {"expected", hit_of(expected)}, {"got", hit_of(got)}}});
   }
   return differences;

@@ -83,10 +83,10 @@ void expect_image_matches_reference(const std::string& stage_id, float channel_t
              {"percent", stream_text(100.0 * difference.fraction_over_threshold)},
              {"threshold", stream_text(channel_threshold)}, {"allowed", stream_text(100.0 * max_fraction)},
              {"rms", stream_text(difference.rms_error)}, {"path", comparison_path}}});
-  if (!(difference.fraction_over_threshold <= max_fraction))
-    add_failure({MessageId::image_failure,
-                 {{"error", stream_text(difference.max_error)}, {"x", stream_text(difference.max_x)},
-                  {"y", stream_text(difference.max_y)}, {"path", comparison_path}}});
+  EXPECT_LE(difference.fraction_over_threshold, max_fraction)
+      << failure_text({MessageId::image_failure,
+                 {{"error", gtest_text(difference.max_error)}, {"x", gtest_text(difference.max_x)},
+                  {"y", gtest_text(difference.max_y)}, {"path", comparison_path}}});
 }
 
 }  // namespace raylab::grading

@@ -8,6 +8,7 @@
 #include "messages.h"
 #include "stage_calls.h"
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -27,6 +28,13 @@ namespace raylab::grading {
 // returns true, so no later hint reads a NaN as a wrong number ("a hit behind the ray").
 // Failure texts need nothing: the grader prints every non-finite value as NaN or infinity.
 bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice);
+
+// A value as GoogleTest's message stream writes it (floats with all their digits): the format of a
+// value in a failure text, as when it was streamed into ADD_FAILURE() itself.
+template <typename Value>
+std::string gtest_text(const Value& value) {
+  return (::testing::Message() << value).GetString();
+}
 
 // "t = <t>" (the stream's format, or std::to_string's with `fixed`) or "no hit", for failure texts.
 Message hit_text(std::optional<float> t, bool fixed = false);
