@@ -98,8 +98,9 @@ TEST(Messages, EveryStageHasAChineseTitle) {
                                              << "\"title_zh\": \"<its title in Simplified Chinese>\" after \"title\"";
 }
 
-// Every hint is a catalogue entry: the suites never wrap a text of their own in verbatim().
-TEST(Messages, SuitesGiveNoHintOutsideTheCatalogue) {
+// Every hint, note and failure text is a catalogue entry: the suites never wrap a text of their
+// own in verbatim(), nor stream a text into an assertion (ADD_FAILURE() << "...", EXPECT_EQ(...) << "...").
+TEST(Messages, SuitesGiveNoTextOutsideTheCatalogue) {
   const std::filesystem::path suites = std::filesystem::path(RAYLAB_SOURCE_DIR) / "autograder" / "suites";
   int files = 0;
   for (const auto& file : std::filesystem::directory_iterator(suites)) {
@@ -110,6 +111,11 @@ TEST(Messages, SuitesGiveNoHintOutsideTheCatalogue) {
     EXPECT_EQ(text.str().find("verbatim("), std::string::npos)
         << file.path() << " makes a hint of a text: add it to " << kWhere << " with its English and Chinese texts";
     EXPECT_EQ(text.str().find("MessageId::verbatim"), std::string::npos) << file.path();
+    EXPECT_EQ(text.str().find("ADD_FAILURE"), std::string::npos)
+        << file.path() << " has an ADD_FAILURE: write add_failure({MessageId::your_id, {...}}) with an entry of " << kWhere;
+    EXPECT_EQ(text.str().find("<< \""), std::string::npos)
+        << file.path() << " streams a text into a failure (<< \"...\"): give it as failure_text({MessageId::your_id, {...}}) "
+        << "with an entry of " << kWhere << " (English and Chinese)";
   }
   EXPECT_GT(files, 0) << suites;
 }
