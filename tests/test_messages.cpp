@@ -111,7 +111,7 @@ TEST(Messages, SuitesGiveNoTextOutsideTheCatalogue) {
     EXPECT_EQ(text.str().find("verbatim("), std::string::npos)
         << file.path() << " makes a hint of a text: add it to " << kWhere << " with its English and Chinese texts";
     EXPECT_EQ(text.str().find("MessageId::verbatim"), std::string::npos) << file.path();
-    EXPECT_EQ(text.str().find("ADD_FAILURE"), std::string::npos)
+    EXPECT_EQ(text.str().find("ADD_FAILURE() <<"), std::string::npos)
         << file.path() << " has an ADD_FAILURE: write add_failure({MessageId::your_id, {...}}) with an entry of " << kWhere;
     EXPECT_EQ(text.str().find("<< \""), std::string::npos)
         << file.path() << " streams a text into a failure (<< \"...\"): give it as failure_text({MessageId::your_id, {...}}) "
