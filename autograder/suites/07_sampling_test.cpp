@@ -394,24 +394,24 @@ void hint_non_finite(Warp warp, const WarpData& data) {
   const glm::vec3& s = data.samples[i];
   const float bad = !std::isfinite(s.x) ? s.x : !std::isfinite(s.y) ? s.y : s.z;
   hint_if_not_finite(std::string(warp_sample_function(warp)) + " for " + input_text(data.inputs[i]), {bad},
-                     "look for a division by 0, sqrt of a negative number (1 - x^2 rounding below 0: clamp it) or "
-                     "log/acos outside its range (" + std::string(handout_section(warp)) + ")");
+                     untranslated("look for a division by 0, sqrt of a negative number (1 - x^2 rounding below 0: clamp it) or "
+                     "log/acos outside its range (" + std::string(handout_section(warp)) + ")"));
 }
 
 void expect_samples_in_domain(Warp warp) {
   const WarpData& data = data_of(warp);
   hint_non_finite(warp, data);
   if (data.below_surface > 0)
-    add_hint("directions below the surface (z < 0) in " + std::to_string(data.below_surface) + " of " +
+    add_hint(untranslated("directions below the surface (z < 0) in " + std::to_string(data.below_surface) + " of " +
              std::to_string(data.samples.size()) + " samples: a hemisphere direction has z = cos(theta) in [0, 1] (the "
-             "sphere's z = 1 - 2u covers [-1, 1]) (" + handout_section(warp) + ")");
+             "sphere's z = 1 - 2u covers [-1, 1]) (" + handout_section(warp) + ")"));
   else if (data.first_out_of_domain && warp == Warp::UniformTriangle)
-    add_hint("barycentrics outside the triangle: b1 >= 0, b2 >= 0 and b1 + b2 <= 1 must hold (two independent uniform "
-             "numbers as b1 and b2 reach b1 + b2 > 1 half of the time) (" + std::string(handout_section(warp)) + ")");
+    add_hint(untranslated("barycentrics outside the triangle: b1 >= 0, b2 >= 0 and b1 + b2 <= 1 must hold (two independent uniform "
+             "numbers as b1 and b2 reach b1 + b2 > 1 half of the time) (" + std::string(handout_section(warp)) + ")"));
   else if (data.first_out_of_domain && is_direction_warp(warp))
-    add_hint("directions must be unit vectors: x^2 + y^2 + z^2 = 1 (" + std::string(handout_section(warp)) + ")");
+    add_hint(untranslated("directions must be unit vectors: x^2 + y^2 + z^2 = 1 (" + std::string(handout_section(warp)) + ")"));
   else if (data.first_out_of_domain)
-    add_hint("points outside the unit disk: the radius must stay in [0, 1] (" + std::string(handout_section(warp)) + ")");
+    add_hint(untranslated("points outside the unit disk: the radius must stay in [0, 1] (" + std::string(handout_section(warp)) + ")"));
   if (data.first_non_finite)
     ADD_FAILURE() << warp_sample_function(warp) << " returned a value that is not a number for "
                   << input_text(data.inputs[*data.first_non_finite]) << ": " << data.samples[*data.first_non_finite]
@@ -442,15 +442,15 @@ double fraction_below(Warp warp, const WarpData& data, double v_limit) {
 void diagnose_samples(Warp warp, const WarpData& data) {
   hint_non_finite(warp, data);
   if (data.below_surface > 0) {
-    add_hint("directions below the surface (z < 0) in " + std::to_string(data.below_surface) + " of " +
+    add_hint(untranslated("directions below the surface (z < 0) in " + std::to_string(data.below_surface) + " of " +
              std::to_string(data.samples.size()) + " samples: a hemisphere direction has z = cos(theta) in [0, 1] (" +
-             handout_section(warp) + ")");
+             handout_section(warp) + ")"));
     return;
   }
   if (data.first_out_of_domain) {
-    add_hint(std::to_string(data.out_of_domain) + " of " + std::to_string(data.samples.size()) + " samples are " +
+    add_hint(untranslated(std::to_string(data.out_of_domain) + " of " + std::to_string(data.samples.size()) + " samples are " +
              data.out_of_domain_reason.substr(0, data.out_of_domain_reason.find(" (")) + " (see " + test_prefix(warp) +
-             "SamplesInDomain) (" + handout_section(warp) + ")");
+             "SamplesInDomain) (" + handout_section(warp) + ")"));
     return;
   }
   for (const Mistake& mistake : sample_mistakes(warp)) {
@@ -459,7 +459,7 @@ void diagnose_samples(Warp warp, const WarpData& data) {
         static_cast<double>(data.samples.size()), 4);
     // Lenient: a mistake's density that the samples fit at 1e-6 names the mistake.
     if (testkit::chi_square_test(data.histogram.counts(), expected, 1e-6).passed) {
-      add_hint(mistake.hint + " (" + handout_section(warp) + ")");
+      add_hint(untranslated(mistake.hint + " (" + handout_section(warp) + ")"));
       return;
     }
   }
@@ -474,7 +474,7 @@ void diagnose_samples(Warp warp, const WarpData& data) {
            << 100.0 * inner << "% of them lie in the "
            << (warp == Warp::UniformDisk ? "inner half radius" : "corner triangle b1 + b2 < 1/2")
            << ", which has a quarter of the area (25%); is a square root missing? (" << handout_section(warp) << ")";
-      add_hint(hint.str());
+      add_hint(untranslated(hint.str()));
       return;
     }
   }
@@ -489,22 +489,22 @@ void diagnose_samples(Warp warp, const WarpData& data) {
     const double fraction = finite > 0 ? near_pole / finite : 0.0;
     const double intended = warp == Warp::CosineHemisphere ? 0.19 : 0.1;  // P(|z| > 0.9)
     if (fraction > intended + 0.04) {
-      add_hint("samples crowd the pole" + std::string(warp == Warp::UniformSphere ? "s" : "") +
+      add_hint(untranslated("samples crowd the pole" + std::string(warp == Warp::UniformSphere ? "s" : "") +
                " (|z| > 0.9 for " + std::to_string(static_cast<int>(100.0 * fraction + 0.5)) + "% of them, " +
                std::to_string(static_cast<int>(100.0 * intended + 0.5)) + "% expected): is theta uniform? Equal "
                "steps of theta cover less solid angle near the pole; make z = cos(theta) follow the density (" +
-               handout_section(warp) + ")");
+               handout_section(warp) + ")"));
       return;
     }
   }
-  add_hint(std::string("your samples do not follow the intended density: compare your histogram with the expected one "
-                       "in the picture named below (") + handout_section(warp) + ")");
+  add_hint(untranslated(std::string("your samples do not follow the intended density: compare your histogram with the expected one "
+                       "in the picture named below (") + handout_section(warp) + ")"));
 }
 
 void expect_intended_density(Warp warp) {
   const WarpData& data = data_of(warp);
   const std::string picture = write_histogram_picture(warp, data);
-  add_note(std::string(warp_sample_function(warp)) + ": your samples | the intended density: " + picture);
+  add_note(untranslated(std::string(warp_sample_function(warp)) + ": your samples | the intended density: " + picture));
   const testkit::ChiSquareResult result = chi_square_against(data, data.expected);
   if (!result.passed) {
     diagnose_samples(warp, data);
@@ -574,31 +574,31 @@ void hint_pdf(Warp warp, const PdfData& pdf, const PdfComparison& c) {
     const float value = pdf.values[*c.non_finite];
     hint_if_not_finite(std::string(warp_pdf_function(warp)) + " at " +
                            point_text(warp, pdf_argument_at(warp, pdf.points[*c.non_finite].x, pdf.points[*c.non_finite].y)),
-                       {value}, "a density is a finite number >= 0 (" + section + ")");
+                       {value}, untranslated("a density is a finite number >= 0 (" + section + ")"));
   }
-  if (c.negative) add_hint(std::string(warp_pdf_function(warp)) + " returns a negative density; a density is >= 0 (" + section + ")");
+  if (c.negative) add_hint(untranslated(std::string(warp_pdf_function(warp)) + " returns a negative density; a density is >= 0 (" + section + ")"));
   if (c.not_zero_outside) {
     std::ostringstream hint;
     hint << warp_pdf_function(warp) << " is not 0 where the warp never goes (at "
          << point_text(warp, pdf_argument_at(warp, c.not_zero_outside->x, c.not_zero_outside->y))
          << (is_hemisphere(warp) ? ", below the surface" : "") << "): return 0 there (" << section << ")";
-    add_hint(hint.str());
+    add_hint(untranslated(hint.str()));
   }
   if (c.mistake_hint) {
-    add_hint(*c.mistake_hint + " (" + section + ")");
+    add_hint(untranslated(*c.mistake_hint + " (" + section + ")"));
   } else if (c.constant_factor && warp == Warp::UniformTriangle) {
     std::ostringstream hint;
     hint.precision(4);
     hint << "uniform_triangle_pdf of the triangle (0,0,0), (1,0,0), (0,1,0), whose area is 1/2, is " << pdf.unit_triangle_pdf
          << ", not 2 (see UniformTrianglePdfIntegratesToOne) (" << section << ")";
-    add_hint(hint.str());
+    add_hint(untranslated(hint.str()));
   } else if (c.constant_factor) {
     std::ostringstream hint;
     hint.precision(4);
     hint << warp_pdf_function(warp) << " is off by a constant factor " << *c.constant_factor
          << ": it integrates to " << *c.constant_factor << ", not 1 (not normalised: divide by the "
          << (is_direction_warp(warp) ? "solid angle" : "area") << " of the whole domain) (" << section << ")";
-    add_hint(hint.str());
+    add_hint(untranslated(hint.str()));
   }
 }
 
@@ -634,17 +634,17 @@ void expect_pdf_integrates_to_one(Warp warp) {
                       << ": the density times the area is " << integral << ", expected 1 (within 1e-3)";
     }
     if (failures == 0) return;
-    if (hint_if_not_finite("uniform_triangle_pdf", {values[0]}, "the density is 1 / area (" + section + ")")) {
+    if (hint_if_not_finite("uniform_triangle_pdf", {values[0]}, untranslated("the density is 1 / area (" + section + ")"))) {
     } else if (returns_area) {
-      add_hint("uniform_triangle_pdf returns the area; the density is 1 / area (" + section + ")");
+      add_hint(untranslated("uniform_triangle_pdf returns the area; the density is 1 / area (" + section + ")"));
     } else if (constant) {
       std::ostringstream hint;
       hint.precision(4);
       hint << "uniform_triangle_pdf is off by a constant factor " << first_ratio
            << " (not normalised): the density is 1 / area, the area being |cross(p1 - p0, p2 - p0)| / 2 (" << section << ")";
-      add_hint(hint.str());
+      add_hint(untranslated(hint.str()));
     } else {
-      add_hint("uniform_triangle_pdf must be 1 / area of the triangle given (" + section + ")");
+      add_hint(untranslated("uniform_triangle_pdf must be 1 / area of the triangle given (" + section + ")"));
     }
     ADD_FAILURE() << failures << " of " << values.size() << " triangles";
     return;
@@ -665,7 +665,7 @@ void expect_pdf_integrates_to_one(Warp warp) {
     for (std::size_t i = 0; i < outside.size(); ++i)
       if (values[i] != 0.0f) {
         failed = true;
-        add_hint("uniform_disk_pdf must be 0 outside the unit disk (x^2 + y^2 > 1) (" + section + ")");
+        add_hint(untranslated("uniform_disk_pdf must be 0 outside the unit disk (x^2 + y^2 > 1) (" + section + ")"));
         ADD_FAILURE() << "uniform_disk_pdf(" << point_text(warp, outside[i]) << ") = " << values[i]
                       << " outside the disk, expected 0";
       }
@@ -692,10 +692,10 @@ void expect_pdf_matches_samples(Warp warp) {
     const std::vector<float> values = warp_pdfs(warp, arguments);
     for (std::size_t k = 0; k < values.size(); ++k)
       if (!(values[k] > 0.0f) || !std::isfinite(values[k])) {
-        add_hint(std::string(warp_pdf_function(warp)) + " returns " +
+        add_hint(untranslated(std::string(warp_pdf_function(warp)) + " returns " +
                  (std::isnan(values[k]) ? "NaN" : std::isinf(values[k]) ? "infinity" : "0") + " for a " +
                  (is_direction_warp(warp) ? "direction" : "point") + " that " + warp_sample_function(warp) +
-                 " returns: the renderer divides by the pdf, giving NaN or infinity (" + handout_section(warp) + ")");
+                 " returns: the renderer divides by the pdf, giving NaN or infinity (" + handout_section(warp) + ")"));
         ADD_FAILURE() << warp_pdf_function(warp) << "(" << point_text(warp, arguments[k]) << ") = " << values[k]
                       << " for the sample of " << input_text(data.inputs[which[k]]);
         break;
@@ -705,8 +705,8 @@ void expect_pdf_matches_samples(Warp warp) {
   if (result.passed) return;
   const bool samples_right = chi_square_against(data, data.expected).passed;
   if (c.equals_intended && !samples_right) {
-    add_hint(std::string(warp_pdf_function(warp)) + " is right; your samples are not (see " + test_prefix(warp) +
-             "FollowsIntendedDensity)");
+    add_hint(untranslated(std::string(warp_pdf_function(warp)) + " is right; your samples are not (see " + test_prefix(warp) +
+             "FollowsIntendedDensity)"));
   } else {
     hint_pdf(warp, pdf, c);
     if (!c.mistake_hint && !c.constant_factor && !c.not_zero_outside && !c.non_finite && !c.negative) {
@@ -732,7 +732,7 @@ void expect_pdf_matches_samples(Warp warp) {
            << " it gives " << pdf.values[worst * 16] << " where your samples' density is "
            << counts[worst] / (static_cast<double>(data.samples.size()) * measure)
            << (warp == Warp::UniformTriangle ? " (on the unit triangle)" : "") << " (" << handout_section(warp) << ")";
-      add_hint(hint.str());
+      add_hint(untranslated(hint.str()));
     }
   }
   ADD_FAILURE() << warp_sample_function(warp) << "'s samples do not follow " << warp_pdf_function(warp) << " ("
