@@ -1,4 +1,7 @@
 # Warnings, -Werror, sanitizers and -march=native as options applied to raylab's own targets.
+# Every flag is spelled for the compiler that takes it (GCC and Clang, including MinGW-w64 and
+# Apple's; MSVC), and the sanitizers only where a test program links with them: MinGW-w64 has
+# no sanitizer runtimes, so RAYLAB_SANITIZE=ON there warns and builds without them.
 add_library(raylab_options INTERFACE)
 target_compile_options(raylab_options INTERFACE
   $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Wall -Wextra -Wpedantic -Wshadow>
@@ -8,10 +11,15 @@ if(RAYLAB_WERROR)
     $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Werror> $<$<CXX_COMPILER_ID:MSVC>:/WX>)
 endif()
 if(RAYLAB_NATIVE)
-  target_compile_options(raylab_options INTERFACE -march=native)
+  target_compile_options(raylab_options INTERFACE $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-march=native>)
+  if(MSVC)
+    message(WARNING "raylab: RAYLAB_NATIVE has no MSVC spelling here (choose /arch: yourself); ignored")
+  endif()
 endif()
 
-if(RAYLAB_SANITIZE)
+if(RAYLAB_SANITIZE AND MSVC)
+  message(WARNING "raylab: RAYLAB_SANITIZE is written for GCC and Clang; with MSVC use /fsanitize=address yourself. Building without")
+elseif(RAYLAB_SANITIZE)
   # Check that the sanitizer runtimes link before using them: a machine without them
   # (no libasan/libubsan) gets a clear message instead of a broken build.
   include(CheckCXXSourceCompiles)

@@ -11,6 +11,7 @@
 //
 // It speaks English or Simplified Chinese (messages.h): --lang, else LC_ALL / LC_MESSAGES / LANG.
 #include "grading.h"
+#include "stage_process.h"
 #include "supervisor.h"
 
 #include "raylab/error.h"
@@ -93,7 +94,7 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   }
   try {
     if (options.server_path.empty())
-      options.server_path = std::filesystem::canonical("/proc/self/exe").string() + "-stage-server";
+      options.server_path = default_stage_server_path();
     return run_supervisor(options);
   } catch (const std::exception& e) {
     std::cerr << "autograder: grading could not run: " << e.what() << "\n";

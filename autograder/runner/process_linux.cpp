@@ -1,4 +1,4 @@
-// process.h on Linux.
+// stage_process.h on Linux.
 //
 // Confinement of a stage server (set up between fork and exec, so the judge's own files and
 // memory are never touched by stage code):
@@ -13,7 +13,7 @@
 //     no signals to processes outside the sandbox), RLIMIT_NPROC, RLIMIT_AS, RLIMIT_FSIZE (the
 //     output limit; stdout and stderr go to a memfd), no core dumps, parent-death signal, only
 //     descriptors 0-4 open.
-#include "process.h"
+#include "stage_process.h"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -29,6 +29,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -169,6 +170,18 @@ void kill_every_descendant() {
   }
 }
 
+// A signal that ended a stage server, named for a student.
+std::string signal_description(int signal_number) {
+  const char* name = ::strsignal(signal_number);
+  std::string text = "signal " + std::to_string(signal_number);
+  if (name) text += " (" + std::string(name) + ")";
+  if (signal_number == SIGSEGV) text += ": your code read or wrote memory it does not own (an index out of range? a null pointer?)";
+  else if (signal_number == SIGFPE) text += ": an integer division by zero?";
+  else if (signal_number == SIGABRT) text += ": abort(), a failed assert or an uncaught exception";
+  else if (signal_number == SIGKILL || signal_number == SIGXCPU) text += ": killed, probably over the memory or time limit";
+  return text;
+}
+
 [[noreturn]] void child_fail(const char* what) {
   const int saved = errno;
   const char* reason = std::strerror(saved);
@@ -220,6 +233,10 @@ void prepare_judge() {
   box.landlock = landlock_abi();
 }
 
+std::string default_stage_server_path() {
+  return std::filesystem::canonical("/proc/self/exe").string() + "-stage-server";
+}
+
 std::string sandbox_description() {
   const Sandbox& box = sandbox();
   std::string text = box.as_root ? "its own user id (it cannot write the grader's files, nor signal the grader; "
@@ -232,6 +249,16 @@ std::string sandbox_description() {
     text += "; WARNING: no Landlock in this kernel and not root: stage code can write your files";
   return text;
 }
+
+struct StageProcess::Child {
+  pid_t pid = -1;
+  int output_fd = -1;  // the memfd that holds what the server printed
+  long output_limit_bytes = 0;
+};
+
+StageProcess::StageProcess() = default;
+
+bool StageProcess::running() const { return child_ != nullptr; }
 
 StageProcess::~StageProcess() {
   if (running()) {
@@ -302,11 +329,9 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
   }
   ::close(requests[0]);
   ::close(replies[1]);
-  pid_ = pid;
+  child_ = std::make_unique<Child>(Child{pid, output, limits.output_limit_bytes});
   request_fd_ = requests[1];
   reply_fd_ = replies[0];
-  output_fd_ = output;
-  output_limit_bytes_ = limits.output_limit_bytes;
 }
 
 bool StageProcess::wait_for_reply(Clock::time_point deadline) const {
@@ -322,35 +347,36 @@ bool StageProcess::wait_for_reply(Clock::time_point deadline) const {
 
 ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
   ProcessEnd end;
-  if (pid_ <= 0) return end;
+  if (!child_) return end;
+  const pid_t pid = child_->pid;
   ::close(request_fd_);  // a server waiting for requests sees end of file and exits
   int status = 0;
   bool done = false;
   if (!kill_now)
     for (int i = 0; i < 500 && !done; ++i) {
-      done = ::waitpid(pid_, &status, WNOHANG) == pid_;
+      done = ::waitpid(pid, &status, WNOHANG) == pid;
       if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
   if (!done) {
-    ::kill(pid_, SIGKILL);
-    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    ::kill(pid, SIGKILL);
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
   }
   if (WIFSIGNALED(status)) {
-    end.signalled = true;
-    end.signal_number = WTERMSIG(status);
+    end.crashed = true;
+    end.crash = signal_description(WTERMSIG(status));
   } else if (WIFEXITED(status)) {
     end.exit_code = WEXITSTATUS(status);
   }
   kill_every_descendant();
   ::close(reply_fd_);
   // What the stage code printed (the memfd is ours alone now).
-  std::string text(static_cast<std::size_t>(output_limit_bytes_), '\0');
-  const ssize_t got = ::pread(output_fd_, text.data(), text.size(), 0);
+  std::string text(static_cast<std::size_t>(child_->output_limit_bytes), '\0');
+  const ssize_t got = ::pread(child_->output_fd, text.data(), text.size(), 0);
   if (got > 0) output.append(text.data(), static_cast<std::size_t>(got));
-  ::close(output_fd_);
-  pid_ = -1;
-  request_fd_ = reply_fd_ = output_fd_ = -1;
+  ::close(child_->output_fd);
+  child_.reset();
+  request_fd_ = reply_fd_ = -1;
   return end;
 }
 

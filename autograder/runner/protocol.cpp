@@ -1,18 +1,38 @@
 #include "protocol.h"
 
+#if defined(_WIN32)
+#include <fcntl.h>
+#include <io.h>
+#else
 #include <unistd.h>
+#endif
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <system_error>
 
 namespace raylab::grading::protocol {
 namespace {
 
+// The C runtime's read and write (POSIX names on Linux, underscored ones on Windows).
+#if defined(_WIN32)
+long long read_some(int fd, char* data, std::size_t size) {
+  return ::_read(fd, data, static_cast<unsigned>(std::min<std::size_t>(size, 1u << 30)));
+}
+long long write_some(int fd, const char* data, std::size_t size) {
+  return ::_write(fd, data, static_cast<unsigned>(std::min<std::size_t>(size, 1u << 30)));
+}
+#else
+long long read_some(int fd, char* data, std::size_t size) { return ::read(fd, data, size); }
+long long write_some(int fd, const char* data, std::size_t size) { return ::write(fd, data, size); }
+#endif
+
 // Reads exactly `size` bytes; returns how many it got before end of file.
 std::size_t read_fully(int fd, char* data, std::size_t size) {
   std::size_t done = 0;
   while (done < size) {
-    const ssize_t n = ::read(fd, data + done, size - done);
+    const long long n = read_some(fd, data + done, size - done);
     if (n == 0) break;
     if (n < 0) {
       if (errno == EINTR) continue;
@@ -63,7 +83,7 @@ void write_frame(int fd, const std::string& payload) {
   frame += payload;
   std::size_t done = 0;
   while (done < frame.size()) {
-    const ssize_t n = ::write(fd, frame.data() + done, frame.size() - done);
+    const long long n = write_some(fd, frame.data() + done, frame.size() - done);
     if (n < 0) {
       if (errno == EINTR) continue;
       throw std::system_error(errno, std::generic_category(), "write");
@@ -93,6 +113,24 @@ std::vector<std::vector<std::uint32_t>> get_lists(Reader& in) {
     lists[i].assign(values.begin() + static_cast<std::ptrdiff_t>(offsets[i]), values.begin() + static_cast<std::ptrdiff_t>(offsets[i + 1]));
   }
   return lists;
+}
+
+void adopt_channels(int argc, char** argv) {
+#if defined(_WIN32)
+  // The judge (process_windows.cpp) passes the two inherited pipe handles as numbers.
+  if (argc != 3) throw ProtocolError("the stage server is started by the autograder, not by hand");
+  const int modes[2] = {_O_RDONLY | _O_BINARY, _O_WRONLY | _O_BINARY};
+  const int targets[2] = {kRequestFd, kReplyFd};
+  for (int i = 0; i < 2; ++i) {
+    const auto handle = static_cast<std::intptr_t>(std::strtoull(argv[1 + i], nullptr, 10));
+    const int fd = ::_open_osfhandle(handle, modes[i]);
+    if (fd < 0 || (fd != targets[i] && ::_dup2(fd, targets[i]) != 0))
+      throw ProtocolError("cannot open the pipe handles the autograder passed");
+  }
+#else
+  (void)argc;
+  (void)argv;  // the judge put the pipes on descriptors 3 and 4 before exec (process_linux.cpp)
+#endif
 }
 
 }  // namespace raylab::grading::protocol

@@ -35,6 +35,9 @@ namespace raylab::grading::protocol {
 
 // The stage server reads requests from this descriptor and writes replies to the next.
 constexpr int kRequestFd = 3, kReplyFd = 4;
+// The stage server's first call: puts the pipes the judge gave it on kRequestFd and kReplyFd
+// (Linux: already there; Windows: the handles named by its two arguments). Throws ProtocolError.
+void adopt_channels(int argc, char** argv);
 constexpr std::uint32_t kMaxFrameBytes = 512u << 20;
 
 enum Kind : std::uint8_t { kCall = 1, kReturn = 2, kThrow = 3, kCallback = 4 };

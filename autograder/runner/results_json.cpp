@@ -2,16 +2,57 @@
 
 #include <nlohmann/json.hpp>
 
+#if defined(_WIN32)
+#include <fcntl.h>
+#include <io.h>
+#include <share.h>
+#include <sys/stat.h>
+#else
 #include <sys/stat.h>
 #include <unistd.h>
+#endif
 
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <random>
 #include <stdexcept>
+#include <system_error>
 
 namespace raylab::grading {
+namespace {
+
+// Creates a new file in `directory` under a random name (set in `name`), readable by everyone,
+// failing rather than opening anything that exists there already. Returns its descriptor or -1.
+int create_exclusive_file(const std::filesystem::path& directory, std::string& name) {
+#if defined(_WIN32)
+  std::random_device random;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    name = (directory / (".results.json." + std::to_string(random()))).string();
+    int fd = -1;
+    if (::_sopen_s(&fd, name.c_str(), _O_CREAT | _O_EXCL | _O_WRONLY | _O_BINARY, _SH_DENYNO, _S_IREAD | _S_IWRITE) == 0)
+      return fd;
+    if (errno != EEXIST) return -1;
+  }
+  return -1;
+#else
+  name = (directory / ".results.json.XXXXXX").string();
+  const int fd = ::mkstemp(name.data());
+  if (fd >= 0) ::fchmod(fd, 0644);
+  return fd;
+#endif
+}
+
+#if defined(_WIN32)
+long long write_some(int fd, const char* data, std::size_t size) { return ::_write(fd, data, static_cast<unsigned>(size)); }
+int close_file(int fd) { return ::_close(fd); }
+#else
+long long write_some(int fd, const char* data, std::size_t size) { return ::write(fd, data, size); }
+int close_file(int fd) { return ::close(fd); }
+#endif
+
+}  // namespace
 
 void write_results_json(const std::vector<StageResult>& results, const std::string& path) {
   using nlohmann::json;
@@ -38,23 +79,24 @@ void write_results_json(const std::vector<StageResult>& results, const std::stri
   const json results_json = {{"score", earned}, {"max_score", max}, {"tests", tests_json}};
   const std::string text = results_json.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 
-  // A new file with a name no one could know in advance (mkstemp: O_EXCL), renamed over the
-  // target: whatever was at `path` before, a file or a link planted there, is replaced.
+  // A new file with a name no one could know in advance (created exclusively: O_EXCL), renamed
+  // over the target: whatever was at `path` before, a file or a link planted there, is replaced.
   const std::filesystem::path target(path);
   const std::filesystem::path directory = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-  std::string temporary = (directory / ".results.json.XXXXXX").string();
-  const int fd = ::mkstemp(temporary.data());
+  std::string temporary;
+  const int fd = create_exclusive_file(directory, temporary);
   if (fd < 0) throw std::runtime_error("cannot write in " + directory.string() + ": " + std::strerror(errno));
   std::size_t written = 0;
   while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+    const auto n = write_some(fd, text.data() + written, text.size() - written);
     if (n <= 0) break;
     written += static_cast<std::size_t>(n);
   }
-  ::fchmod(fd, 0644);
-  const bool ok = written == text.size() && ::close(fd) == 0;
-  if (!ok || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    ::unlink(temporary.c_str());
+  const bool ok = written == text.size() && close_file(fd) == 0;
+  std::error_code renamed;
+  if (ok) std::filesystem::rename(temporary, target, renamed);  // replaces an existing target, also on Windows
+  if (!ok || renamed) {
+    std::filesystem::remove(temporary, renamed);
     throw std::runtime_error("cannot write " + path);
   }
 }

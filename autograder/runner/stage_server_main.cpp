@@ -1,5 +1,5 @@
 // The stage server: the one program that links stage code (the student's, or a self-test
-// submission's). The judge starts it, sandboxed (process.h), sends it one request at a time on
+// submission's). The judge starts it, sandboxed (stage_process.h), sends it one request at a time on
 // descriptor 3 (protocol.h) and reads each answer on descriptor 4. It decides nothing: it
 // returns what the stage functions return, and the judge grades that.
 #include "protocol.h"
@@ -14,6 +14,7 @@
 #include "raylab/stages/05_bvh.h"
 
 #include <exception>
+#include <new>
 #include <iostream>
 
 namespace {
@@ -146,7 +147,13 @@ void answer(Reader& in, Writer& out, Cache& cache) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  try {
+    adopt_channels(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "stage server: " << e.what() << "\n";
+    return 2;
+  }
   std::string request;
   Cache cache;
   for (;;) {
@@ -169,6 +176,14 @@ int main() {
       out.put_string(e.what());
       out.put_string(e.stage_id());
       out.put_string(e.function());
+    } catch (const std::bad_alloc&) {
+      out = Writer{};
+      out.put(kThrow);
+      out.put(ExceptionKind::Other);
+      out.put_string("ran out of memory (std::bad_alloc): the stage's memory limit was reached "
+                     "(a container that grows without end? memory allocated in every call and never freed?)");
+      out.put_string("");
+      out.put_string("");
     } catch (const std::invalid_argument& e) {
       out = Writer{};
       out.put(kThrow);

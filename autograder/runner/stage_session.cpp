@@ -3,8 +3,6 @@
 #include "raylab/error.h"
 #include "raylab/stage_table.h"
 
-#include <signal.h>
-
 #include <cstring>
 #include <sstream>
 #include <system_error>
@@ -14,17 +12,6 @@ namespace raylab::grading {
 using protocol::Function;
 using protocol::Reader;
 using protocol::Writer;
-
-std::string signal_description(int signal_number) {
-  const char* name = ::strsignal(signal_number);
-  std::string text = "signal " + std::to_string(signal_number);
-  if (name) text += " (" + std::string(name) + ")";
-  if (signal_number == SIGSEGV) text += ": your code read or wrote memory it does not own (an index out of range? a null pointer?)";
-  else if (signal_number == SIGFPE) text += ": an integer division by zero?";
-  else if (signal_number == SIGABRT) text += ": abort(), a failed assert or an uncaught exception";
-  else if (signal_number == SIGKILL || signal_number == SIGXCPU) text += ": killed, probably over the memory or time limit";
-  return text;
-}
 
 StageSession& StageSession::instance() {
   static StageSession session;
@@ -96,7 +83,7 @@ std::string StageSession::call(Function function, const Writer& arguments, const
   };
   auto ended = [&]() {
     const ProcessEnd end = process_.stop(false, output_);
-    if (end.signalled) lose("crashed with " + signal_description(end.signal_number), false);
+    if (end.crashed) lose("crashed with " + end.crash, false);
     lose("exited (status " + std::to_string(end.exit_code) + ")" + during + ": do not call exit() in stage code", false);
   };
   auto garbled = [&](const std::string& what) {

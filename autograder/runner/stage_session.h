@@ -1,4 +1,4 @@
-// The judge's side of one stage: a stage server (process.h) per stretch of calls, the stage's
+// The judge's side of one stage: a stage server (stage_process.h) per stretch of calls, the stage's
 // time budget, and the resume policy.
 //
 // Resume policy: every call of a stage function goes to the current stage server. If that server
@@ -9,7 +9,7 @@
 // remaining tests are lost without running stage code.
 #pragma once
 
-#include "process.h"
+#include "stage_process.h"
 #include "protocol.h"
 
 #include <functional>
@@ -74,7 +74,5 @@ class StageSession {
   std::string test_, test_loss_, abandoned_, problem_, output_;
   protocol::Function function_ = protocol::Function::GenerateCameraRay;
 };
-
-std::string signal_description(int signal_number);
 
 }  // namespace raylab::grading

@@ -1,7 +1,7 @@
 #include "supervisor.h"
 
 #include "grading.h"
-#include "process.h"
+#include "stage_process.h"
 #include "results.h"
 #include "stage_session.h"
 

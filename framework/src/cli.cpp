@@ -12,7 +12,13 @@
 #include <exception>
 #include <optional>
 #include <iostream>
+#if defined(_WIN32)
+#include <io.h>
+#define RAYLAB_ISATTY(stream) (::_isatty(::_fileno(stream)) != 0)
+#else
 #include <unistd.h>
+#define RAYLAB_ISATTY(stream) (::isatty(::fileno(stream)) != 0)
+#endif
 
 namespace raylab {
 namespace {
@@ -52,7 +58,7 @@ int run_render(const RenderOptions& options) {
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.threads = options.threads;
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
-  settings.show_progress = !options.quiet && isatty(fileno(stderr));
+  settings.show_progress = !options.quiet && RAYLAB_ISATTY(stderr);
   RenderStats stats;
   const RenderOutput output = render_with_variance(scene, settings, &stats);
   const Image& image = output.mean;

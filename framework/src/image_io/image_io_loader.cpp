@@ -1,5 +1,7 @@
 // Loads the image I/O module (image_io_module.h). The framework's only platform-specific
-// code: POSIX dlopen here; a Windows port adds LoadLibrary/GetProcAddress in this file alone.
+// code: POSIX dlopen, or LoadLibrary/GetProcAddress on Windows. A build configured with
+// RAYLAB_WITH_OPENIMAGEIO=OFF (the Windows check under Wine, tools/windows-check) has no
+// module: every image call then says so.
 //
 // Where the module is, tried in this order:
 //   1. $RAYLAB_IMAGE_IO_MODULE, if set (a program moved away from its build; tests): only there;
@@ -16,18 +18,45 @@
 #include <vector>
 
 #if defined(_WIN32)
-#error "image_io_loader.cpp: loading the image I/O module on Windows is not written yet (LoadLibraryW, GetProcAddress)"
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#include <windows.h>
 #else
 #include <dlfcn.h>
 #endif
 
-#if !defined(RAYLAB_IMAGE_IO_MODULE_FILE) || !defined(RAYLAB_IMAGE_IO_MODULE_BUILD_PATH)
+#if !defined(RAYLAB_NO_IMAGE_IO) && (!defined(RAYLAB_IMAGE_IO_MODULE_FILE) || !defined(RAYLAB_IMAGE_IO_MODULE_BUILD_PATH))
 #error "RAYLAB_IMAGE_IO_MODULE_FILE and _BUILD_PATH (the module's name and path) must be set by framework/CMakeLists.txt"
 #endif
 
 namespace raylab::image_io {
 namespace {
 
+#if !defined(RAYLAB_NO_IMAGE_IO)
+#if defined(_WIN32)
+// The folder of the program or DLL this function was linked into, with a trailing backslash.
+std::string own_folder() {
+  HMODULE self = nullptr;
+  if (!::GetModuleHandleExA(GET_MODULE_HANDLE_EX_FLAG_FROM_ADDRESS | GET_MODULE_HANDLE_EX_FLAG_UNCHANGED_REFCOUNT,
+                            reinterpret_cast<LPCSTR>(&own_folder), &self))
+    return "";
+  char path[MAX_PATH * 4];
+  const DWORD length = ::GetModuleFileNameA(self, path, sizeof path);
+  if (length == 0 || length >= sizeof path) return "";
+  const std::string text(path, length);
+  const auto slash = text.find_last_of("\\/");
+  return slash == std::string::npos ? "" : text.substr(0, slash + 1);
+}
+void* open_module(const std::string& path, std::string& reason) {
+  HMODULE handle = ::LoadLibraryA(path.c_str());
+  if (handle == nullptr) reason = path + ": LoadLibrary failed (error " + std::to_string(::GetLastError()) + ")";
+  return reinterpret_cast<void*>(handle);
+}
+void* find_symbol(void* module, const char* name) {
+  return reinterpret_cast<void*>(::GetProcAddress(static_cast<HMODULE>(module), name));
+}
+#else
 // The folder of the binary this function was linked into, with a trailing '/'; "" if unknown.
 std::string own_folder() {
   Dl_info info{};
@@ -37,6 +66,16 @@ std::string own_folder() {
   const auto slash = path.find_last_of('/');
   return slash == std::string::npos ? "" : path.substr(0, slash + 1);
 }
+void* open_module(const std::string& path, std::string& reason) {
+  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) {
+    const char* text = dlerror();
+    reason = text != nullptr ? std::string(text) : path + ": not loaded";
+  }
+  return handle;
+}
+void* find_symbol(void* module, const char* name) { return dlsym(module, name); }
+#endif
 
 const ModuleFunctions& load() {
   std::vector<std::string> candidates;
@@ -49,22 +88,28 @@ const ModuleFunctions& load() {
   void* handle = nullptr;
   std::string tried;
   for (const std::string& candidate : candidates) {
-    handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+    std::string reason;
+    handle = open_module(candidate, reason);
     if (handle != nullptr) break;
-    const char* reason = dlerror();
-    tried += "\n  " + (reason != nullptr ? std::string(reason) : candidate + ": not loaded");
+    tried += "\n  " + reason;
   }
   if (handle == nullptr)
     throw std::runtime_error("image I/O: cannot load the OpenImageIO module " +
                              std::string(RAYLAB_IMAGE_IO_MODULE_FILE) + " (built beside the programs; "
                              "rebuild, or set RAYLAB_IMAGE_IO_MODULE to its path):" + tried);
-  const auto entry = reinterpret_cast<EntryPoint>(dlsym(handle, RAYLAB_IMAGE_IO_ENTRY_POINT));
+  const auto entry = reinterpret_cast<EntryPoint>(find_symbol(handle, RAYLAB_IMAGE_IO_ENTRY_POINT));
   const ModuleFunctions* functions = entry != nullptr ? entry() : nullptr;
   if (functions == nullptr || functions->version != kModuleVersion)
     throw std::runtime_error("image I/O: the loaded " + std::string(RAYLAB_IMAGE_IO_MODULE_FILE) +
                              " is not this build's image module (stale file? rebuild)");
   return *functions;  // the module stays loaded for the process's life
 }
+#else
+const ModuleFunctions& load() {
+  throw std::runtime_error("image I/O: this build has no OpenImageIO (configured with RAYLAB_WITH_OPENIMAGEIO=OFF), "
+                           "so it cannot read, write or compare images");
+}
+#endif
 
 }  // namespace
 

@@ -1,0 +1,299 @@
+// stage_process.h on Windows (MinGW-w64 and MSVC).
+//
+// Confinement of a stage server: a job object, created per server and assigned before the
+// server runs its first instruction (created suspended), holds the server and everything it
+// starts (a process in a job cannot leave it):
+//   - memory: JOB_OBJECT_LIMIT_JOB_MEMORY, the memory committed by all its processes together;
+//   - processes: JOB_OBJECT_LIMIT_ACTIVE_PROCESS (a fork bomb stops at the limit);
+//   - killed with its stage: TerminateJobObject ends every process in the job at once, and
+//     JOB_OBJECT_LIMIT_KILL_ON_JOB_CLOSE ends them if the judge itself dies (parent death);
+//   - crashes: JOB_OBJECT_LIMIT_DIE_ON_UNHANDLED_EXCEPTION and the inherited error mode end a
+//     crashing process at once with its exception code (no Windows Error Reporting dialog),
+//     which stop() names (access violation, stack overflow, ...);
+//   - output: stdout and stderr go into a pipe that a thread of the judge drains, keeping the
+//     first output_limit_bytes (the stage code can never block on a full pipe);
+//   - only the three pipe ends are inherited (PROC_THREAD_ATTRIBUTE_HANDLE_LIST).
+// What Linux adds and Windows does not have here: a separate user id and Landlock. Stage code
+// runs with the student's own rights and could write their files (docs/instructors.md).
+#include "stage_process.h"
+
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#include <windows.h>
+
+#include <fcntl.h>
+#include <io.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace raylab::grading {
+namespace {
+
+constexpr UINT kKilledExitCode = 0xDEAD;  // what TerminateJobObject leaves as the exit code
+
+std::string last_error(const char* what) {
+  const DWORD code = ::GetLastError();
+  char text[512] = {0};
+  ::FormatMessageA(FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS, nullptr, code, 0, text, sizeof text, nullptr);
+  std::string message = std::string(what) + " failed (error " + std::to_string(code) + ")";
+  if (text[0] != '\0') message += ": " + std::string(text);
+  while (!message.empty() && (message.back() == '\n' || message.back() == '\r' || message.back() == ' ')) message.pop_back();
+  return message;
+}
+
+// An exception code that ended a process, named for a student.
+std::string exception_description(DWORD code) {
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "0x%08lX", static_cast<unsigned long>(code));
+  std::string text = std::string("exception ") + hex;
+  switch (code) {
+    case 0xC0000005: return text + " (access violation): your code read or wrote memory it does not own (an index out of range? a null pointer?)";
+    case 0xC00000FD: return text + " (stack overflow): a recursion that never ends, or a very large local array?";
+    case 0xC0000094: return text + " (integer division by zero)";
+    case 0xC000008C: return text + " (array bounds exceeded)";
+    case 0xC000001D: return text + " (illegal instruction)";
+    case 0xC0000017: case 0xC000012D: return text + " (out of memory): probably over the memory limit";
+    case 0xC0000374: return text + " (heap corruption): a write past the end of an array, or a double delete?";
+    case 0xC0000409: return text + " (stack buffer overrun or fast fail): a write past a local array, or abort()?";
+    case 0xC0000420: return text + " (assertion failure)";
+    default: return text;
+  }
+}
+
+// A pipe of which the child gets one end (inheritable) and the judge keeps the other (not).
+struct Pipe {
+  HANDLE read = nullptr, write = nullptr;
+};
+Pipe make_pipe() {
+  SECURITY_ATTRIBUTES attributes{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
+  Pipe pipe;
+  if (!::CreatePipe(&pipe.read, &pipe.write, &attributes, 0)) throw std::runtime_error(last_error("CreatePipe"));
+  return pipe;
+}
+void keep_private(HANDLE handle) { ::SetHandleInformation(handle, HANDLE_FLAG_INHERIT, 0); }
+void close_handle(HANDLE& handle) {
+  if (handle != nullptr && handle != INVALID_HANDLE_VALUE) ::CloseHandle(handle);
+  handle = nullptr;
+}
+
+// Quotes one command-line argument the way CommandLineToArgvW and the C runtimes parse it.
+std::string quoted(const std::string& argument) {
+  std::string text = "\"";
+  std::size_t backslashes = 0;
+  for (const char c : argument) {
+    if (c == '\\') {
+      ++backslashes;
+      continue;
+    }
+    text.append(c == '"' ? 2 * backslashes + 1 : backslashes, '\\');
+    backslashes = 0;
+    text += c;
+  }
+  text.append(2 * backslashes, '\\');
+  return text + "\"";
+}
+
+}  // namespace
+
+struct StageProcess::Child {
+  HANDLE process = nullptr, job = nullptr;
+  std::thread output_reader;  // drains the output pipe into `output`
+  std::mutex mutex;
+  std::string output;
+};
+
+void prepare_judge() {
+  // Inherited by every stage server: no dialog box for a crash or a missing drive; the process
+  // just ends with its exception code.
+  ::SetErrorMode(SEM_FAILCRITICALERRORS | SEM_NOGPFAULTERRORBOX | SEM_NOOPENFILEERRORBOX);
+}
+
+std::string default_stage_server_path() {
+  char path[MAX_PATH * 4];
+  const DWORD length = ::GetModuleFileNameA(nullptr, path, sizeof path);
+  if (length == 0 || length >= sizeof path) throw std::runtime_error(last_error("GetModuleFileName"));
+  std::string program(path, length);
+  const std::size_t dot = program.size() >= 4 ? program.size() - 4 : 0;
+  if (_stricmp(program.c_str() + dot, ".exe") == 0) program.erase(dot);
+  return program + "-stage-server.exe";
+}
+
+std::string sandbox_description() {
+  return "a Windows job object (memory and process limits; everything it starts is killed with its stage); "
+         "WARNING: Windows has no file-system confinement here: stage code runs with your rights and can write your files";
+}
+
+StageProcess::StageProcess() = default;
+
+bool StageProcess::running() const { return child_ != nullptr; }
+
+StageProcess::~StageProcess() {
+  if (running()) {
+    std::string ignored;
+    stop(true, ignored);
+  }
+}
+
+void StageProcess::start(const std::string& program, const SandboxLimits& limits) {
+  auto child = std::make_unique<Child>();
+  Pipe requests = make_pipe(), replies = make_pipe(), output = make_pipe();
+  keep_private(requests.write);
+  keep_private(replies.read);
+  keep_private(output.read);
+  SECURITY_ATTRIBUTES inheritable{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
+  HANDLE null_input = ::CreateFileA("NUL", GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE, &inheritable, OPEN_EXISTING, 0, nullptr);
+  auto close_all = [&]() {
+    for (HANDLE* handle : {&requests.read, &requests.write, &replies.read, &replies.write, &output.read, &output.write, &null_input})
+      close_handle(*handle);
+  };
+  auto fail = [&](const char* what) {
+    const std::string message = last_error(what);
+    close_all();
+    close_handle(child->process);
+    close_handle(child->job);
+    throw std::runtime_error(message);
+  };
+  if (null_input == INVALID_HANDLE_VALUE) fail("opening NUL");
+
+  child->job = ::CreateJobObjectA(nullptr, nullptr);
+  if (child->job == nullptr) fail("CreateJobObject");
+  JOBOBJECT_EXTENDED_LIMIT_INFORMATION job_limits{};
+  job_limits.BasicLimitInformation.LimitFlags = JOB_OBJECT_LIMIT_KILL_ON_JOB_CLOSE | JOB_OBJECT_LIMIT_DIE_ON_UNHANDLED_EXCEPTION;
+  if (limits.max_processes > 0) {
+    job_limits.BasicLimitInformation.LimitFlags |= JOB_OBJECT_LIMIT_ACTIVE_PROCESS;
+    job_limits.BasicLimitInformation.ActiveProcessLimit = static_cast<DWORD>(limits.max_processes);
+  }
+  if (limits.memory_limit_mb > 0) {
+    job_limits.BasicLimitInformation.LimitFlags |= JOB_OBJECT_LIMIT_JOB_MEMORY;
+    job_limits.JobMemoryLimit = static_cast<SIZE_T>(limits.memory_limit_mb) * 1024 * 1024;
+  }
+  if (!::SetInformationJobObject(child->job, JobObjectExtendedLimitInformation, &job_limits, sizeof job_limits))
+    fail("SetInformationJobObject");
+
+  // Only the child's three pipe ends and NUL are inherited, whatever else the judge has open.
+  HANDLE inherited[] = {requests.read, replies.write, output.write, null_input};
+  SIZE_T attribute_size = 0;
+  ::InitializeProcThreadAttributeList(nullptr, 1, 0, &attribute_size);
+  std::vector<char> attribute_storage(attribute_size);
+  auto* attributes = reinterpret_cast<LPPROC_THREAD_ATTRIBUTE_LIST>(attribute_storage.data());
+  if (!::InitializeProcThreadAttributeList(attributes, 1, 0, &attribute_size)) fail("InitializeProcThreadAttributeList");
+  if (!::UpdateProcThreadAttribute(attributes, 0, PROC_THREAD_ATTRIBUTE_HANDLE_LIST, inherited, sizeof inherited, nullptr, nullptr))
+    fail("UpdateProcThreadAttribute");
+
+  STARTUPINFOEXA startup{};
+  startup.StartupInfo.cb = sizeof startup;
+  startup.StartupInfo.dwFlags = STARTF_USESTDHANDLES;
+  startup.StartupInfo.hStdInput = null_input;
+  startup.StartupInfo.hStdOutput = output.write;
+  startup.StartupInfo.hStdError = output.write;
+  startup.lpAttributeList = attributes;
+  // The server's arguments: the handle values of its request and reply pipes (protocol.cpp).
+  std::string command = quoted(program) + " " + std::to_string(reinterpret_cast<std::uintptr_t>(requests.read)) + " " +
+                        std::to_string(reinterpret_cast<std::uintptr_t>(replies.write));
+  PROCESS_INFORMATION info{};
+  const BOOL created = ::CreateProcessA(program.c_str(), command.data(), nullptr, nullptr, TRUE,
+                                        CREATE_SUSPENDED | CREATE_NO_WINDOW | EXTENDED_STARTUPINFO_PRESENT, nullptr,
+                                        nullptr, &startup.StartupInfo, &info);
+  ::DeleteProcThreadAttributeList(attributes);
+  if (!created) fail(("starting " + program).c_str());
+  child->process = info.hProcess;
+  if (!::AssignProcessToJobObject(child->job, info.hProcess)) {
+    ::TerminateProcess(info.hProcess, kKilledExitCode);
+    ::CloseHandle(info.hThread);
+    fail("AssignProcessToJobObject");
+  }
+  ::ResumeThread(info.hThread);
+  ::CloseHandle(info.hThread);
+  // The child's ends are the child's now; the judge's copies go, so that the pipes end when it does.
+  close_handle(requests.read);
+  close_handle(replies.write);
+  close_handle(output.write);
+  close_handle(null_input);
+
+  // Drains the output pipe (the stage code never blocks on it), keeping the first bytes.
+  const auto limit = static_cast<std::size_t>(limits.output_limit_bytes);
+  child->output_reader = std::thread([output_read = output.read, limit, raw = child.get()]() {
+    char buffer[65536];
+    DWORD got = 0;
+    while (::ReadFile(output_read, buffer, sizeof buffer, &got, nullptr) && got > 0) {
+      const std::lock_guard<std::mutex> lock(raw->mutex);
+      if (raw->output.size() < limit) raw->output.append(buffer, std::min<std::size_t>(got, limit - raw->output.size()));
+    }
+    ::CloseHandle(output_read);
+  });
+
+  request_fd_ = ::_open_osfhandle(reinterpret_cast<std::intptr_t>(requests.write), _O_WRONLY | _O_BINARY);
+  reply_fd_ = ::_open_osfhandle(reinterpret_cast<std::intptr_t>(replies.read), _O_RDONLY | _O_BINARY);
+  child_ = std::move(child);
+  if (request_fd_ < 0 || reply_fd_ < 0) {
+    std::string ignored;
+    stop(true, ignored);
+    throw std::runtime_error("_open_osfhandle failed for the stage server's pipes");
+  }
+}
+
+bool StageProcess::wait_for_reply(Clock::time_point deadline) const {
+  // Anonymous pipes cannot be waited on: look whether the reply has bytes, for the first two
+  // milliseconds between yields (most answers and every callback of intersect_bvh come that
+  // fast, and Sleep(1) may last a 15.6 ms timer tick), then once per Sleep(1).
+  const auto pipe = reinterpret_cast<HANDLE>(::_get_osfhandle(reply_fd_));
+  const auto spin_until = Clock::now() + std::chrono::milliseconds(2);
+  for (;;) {
+    DWORD available = 0;
+    if (!::PeekNamedPipe(pipe, nullptr, 0, nullptr, &available, nullptr)) return true;  // closed: the read says so
+    if (available > 0) return true;
+    const auto now = Clock::now();
+    if (now >= deadline) return false;
+    if (now < spin_until) std::this_thread::yield();
+    else ::Sleep(1);
+  }
+}
+
+ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
+  ProcessEnd end;
+  if (!child_) return end;
+  if (request_fd_ >= 0) ::_close(request_fd_);  // a server waiting for requests sees end of file and exits
+  if (!kill_now) ::WaitForSingleObject(child_->process, 500);
+  ::TerminateJobObject(child_->job, kKilledExitCode);  // the server, if still there, and all it started
+  ::WaitForSingleObject(child_->process, INFINITE);
+  // TerminateJobObject is asynchronous for the other processes: wait until the job is empty.
+  for (int i = 0; i < 10000; ++i) {
+    JOBOBJECT_BASIC_ACCOUNTING_INFORMATION accounting{};
+    if (!::QueryInformationJobObject(child_->job, JobObjectBasicAccountingInformation, &accounting, sizeof accounting, nullptr) ||
+        accounting.ActiveProcesses == 0)
+      break;
+    ::Sleep(1);
+  }
+  DWORD code = 0;
+  ::GetExitCodeProcess(child_->process, &code);
+  if (code == kKilledExitCode) {
+    end.crashed = true;
+    end.crash = "being killed: probably over the memory or time limit";
+  } else if (code == 3) {  // what abort() leaves with the MinGW and MSVC runtimes
+    end.crashed = true;
+    end.crash = "abort() (exit status 3): a failed assert or std::terminate";
+  } else if (code >= 0xC0000000u) {
+    end.crashed = true;
+    end.crash = exception_description(code);
+  } else {
+    end.exit_code = static_cast<int>(code);
+  }
+  if (reply_fd_ >= 0) ::_close(reply_fd_);
+  if (child_->output_reader.joinable()) child_->output_reader.join();  // every writer is gone: end of file
+  output += child_->output;
+  close_handle(child_->process);
+  close_handle(child_->job);
+  child_.reset();
+  request_fd_ = reply_fd_ = -1;
+  return end;
+}
+
+}  // namespace raylab::grading

@@ -1,0 +1,75 @@
+// Process control for the judge: starting a sandboxed stage server, waiting for its answers
+// with a deadline, and making sure that it and everything it started are gone. The only
+// platform-specific part of the autograder (named stage_process.h, not process.h, which
+// MinGW's pthread.h includes): one file per platform implements this header,
+// process_linux.cpp (fork, rlimits, Landlock, a private uid) and process_windows.cpp (a job
+// object); the judge, the stage server and the protocol are the same on both.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+namespace raylab::grading {
+
+using Clock = std::chrono::steady_clock;
+
+struct SandboxLimits {
+  long memory_limit_mb = 4096;        // Linux: address space of the stage server; Windows: memory
+                                      // committed by all its processes together (0: none)
+  long output_limit_bytes = 1 << 20;  // stdout + stderr the stage code may write
+  int max_processes = 32;             // processes the stage code may have at once
+};
+
+// How a stage server ended.
+struct ProcessEnd {
+  bool crashed = false;  // killed by a signal (Linux) or ended by an exception (Windows)
+  std::string crash;     // then: what it was, named for a student ("signal 11 (Segmentation
+                         // fault): your code read or wrote memory it does not own ...")
+  int exit_code = 0;     // else: its exit status
+};
+
+// Once, before the first stage server: on Linux makes the judge the reaper of every orphan its
+// stage servers leave behind and ignores SIGPIPE; on Windows turns off the crash dialogs. Picks
+// the sandbox (see sandbox_description).
+void prepare_judge();
+
+// This program's own path with "-stage-server" added (before ".exe" on Windows): where
+// raylab_add_autograder builds a judge's stage server.
+std::string default_stage_server_path();
+
+// What confines stage code on this machine, in one sentence, for the report.
+std::string sandbox_description();
+
+class StageProcess {
+ public:
+  StageProcess();
+  StageProcess(const StageProcess&) = delete;
+  StageProcess& operator=(const StageProcess&) = delete;
+  ~StageProcess();
+
+  // Starts `program` sandboxed, with the request and reply pipes (protocol.h: the server's
+  // descriptors 3 and 4), stdin empty, stdout and stderr into a private, size-limited buffer.
+  // Throws on failure.
+  void start(const std::string& program, const SandboxLimits& limits);
+  bool running() const;
+
+  // The judge's ends of the pipes, as C runtime file descriptors (protocol.h reads and writes them).
+  int request_fd() const { return request_fd_; }
+  int reply_fd() const { return reply_fd_; }
+
+  // Waits until the reply pipe has data or is closed (true), or the deadline passes (false).
+  bool wait_for_reply(Clock::time_point deadline) const;
+
+  // Ends the stage server (killing it first when `kill_now`, else giving it a moment to finish
+  // exiting), then kills every process it started, detached or not. Returns how the server
+  // itself ended; appends what it printed to `output` (at most the output limit).
+  ProcessEnd stop(bool kill_now, std::string& output);
+
+ private:
+  struct Child;  // the platform's handles on the running server (its process_*.cpp)
+  std::unique_ptr<Child> child_;
+  int request_fd_ = -1, reply_fd_ = -1;
+};
+
+}  // namespace raylab::grading
