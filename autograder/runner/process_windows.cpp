@@ -25,6 +25,7 @@
 #include <fcntl.h>
 #include <io.h>
 
+#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -108,6 +109,14 @@ struct StageProcess::Child {
   std::thread output_reader;  // drains the output pipe into `output`
   std::mutex mutex;
   std::string output;
+  // Anonymous pipes cannot be waited on with a time-out, and polling them loads Wine's server.
+  // So a thread copies the server's replies into a pipe of the judge's own (whose read end is
+  // reply_fd) and counts what it delivered: wait_for_reply waits for that count to change.
+  std::thread reply_pump;
+  HANDLE reply_local_write = nullptr;
+  std::condition_variable delivered_changed;
+  std::uint64_t delivered = 0;  // chunks copied, under `mutex`
+  bool reply_ended = false;     // the server's reply pipe reached its end, under `mutex`
 };
 
 void prepare_judge() {
@@ -230,8 +239,33 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
     ::CloseHandle(output_read);
   });
 
+  // The replies, copied into the judge's own pipe (see Child::reply_pump).
+  SECURITY_ATTRIBUTES private_pipe{sizeof(SECURITY_ATTRIBUTES), nullptr, FALSE};
+  HANDLE local_read = nullptr;
+  if (!::CreatePipe(&local_read, &child->reply_local_write, &private_pipe, 1 << 20)) local_read = nullptr;
+  if (local_read != nullptr)
+    child->reply_pump = std::thread([server_replies = replies.read, raw = child.get()]() {
+      std::vector<char> buffer(1 << 16);
+      DWORD got = 0;
+      while (::ReadFile(server_replies, buffer.data(), static_cast<DWORD>(buffer.size()), &got, nullptr) && got > 0) {
+        DWORD done = 0, wrote = 0;
+        for (; done < got; done += wrote)
+          if (!::WriteFile(raw->reply_local_write, buffer.data() + done, got - done, &wrote, nullptr)) break;
+        if (done < got) break;  // the judge closed its end: it wants no more replies
+        const std::lock_guard<std::mutex> lock(raw->mutex);
+        ++raw->delivered;
+        raw->delivered_changed.notify_all();
+      }
+      ::CloseHandle(server_replies);
+      ::CloseHandle(raw->reply_local_write);  // the judge's reads see the end of file
+      const std::lock_guard<std::mutex> lock(raw->mutex);
+      raw->reply_ended = true;
+      raw->delivered_changed.notify_all();
+    });
+  else
+    close_handle(replies.read);
   request_fd_ = ::_open_osfhandle(reinterpret_cast<std::intptr_t>(requests.write), _O_WRONLY | _O_BINARY);
-  reply_fd_ = ::_open_osfhandle(reinterpret_cast<std::intptr_t>(replies.read), _O_RDONLY | _O_BINARY);
+  reply_fd_ = local_read != nullptr ? ::_open_osfhandle(reinterpret_cast<std::intptr_t>(local_read), _O_RDONLY | _O_BINARY) : -1;
   child_ = std::move(child);
   if (request_fd_ < 0 || reply_fd_ < 0) {
     std::string ignored;
@@ -241,20 +275,17 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
 }
 
 bool StageProcess::wait_for_reply(Clock::time_point deadline) const {
-  // Anonymous pipes cannot be waited on: look whether the reply has bytes, for the first two
-  // milliseconds between yields (most answers and every callback of intersect_bvh come that
-  // fast, and Sleep(1) may last a 15.6 ms timer tick), then once per Sleep(1).
+  std::unique_lock<std::mutex> lock(child_->mutex);
+  const std::uint64_t before = child_->delivered;
+  if (child_->reply_ended) return true;  // the read reports the end (or what is left)
+  lock.unlock();
+  // Bytes delivered earlier and not read yet (one look; the pump tells of anything new).
+  DWORD available = 0;
   const auto pipe = reinterpret_cast<HANDLE>(::_get_osfhandle(reply_fd_));
-  const auto spin_until = Clock::now() + std::chrono::milliseconds(2);
-  for (;;) {
-    DWORD available = 0;
-    if (!::PeekNamedPipe(pipe, nullptr, 0, nullptr, &available, nullptr)) return true;  // closed: the read says so
-    if (available > 0) return true;
-    const auto now = Clock::now();
-    if (now >= deadline) return false;
-    if (now < spin_until) std::this_thread::yield();
-    else ::Sleep(1);
-  }
+  if (!::PeekNamedPipe(pipe, nullptr, 0, nullptr, &available, nullptr) || available > 0) return true;
+  lock.lock();
+  return child_->delivered_changed.wait_until(lock, deadline,
+                                              [&]() { return child_->delivered != before || child_->reply_ended; });
 }
 
 ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
@@ -286,7 +317,8 @@ ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
   } else {
     end.exit_code = static_cast<int>(code);
   }
-  if (reply_fd_ >= 0) ::_close(reply_fd_);
+  if (reply_fd_ >= 0) ::_close(reply_fd_);  // a pump blocked on a full pipe of ours stops
+  if (child_->reply_pump.joinable()) child_->reply_pump.join();      // the server's end is gone: end of file
   if (child_->output_reader.joinable()) child_->output_reader.join();  // every writer is gone: end of file
   output += child_->output;
   close_handle(child_->process);
