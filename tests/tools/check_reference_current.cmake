@@ -1,27 +1,11 @@
-# The checked-in reference data must be exactly what the solutions produce now: regenerate
-# into WORK and compare file by file. Variables: REGENERATE, REFERENCE, WORK.
+# The checked-in reference data must be what the solutions produce now: regenerate into WORK
+# and compare with autograder-regenerate --check (numbers to a few float ulps, images pixel by
+# pixel: C libraries differ in their last bits). Variables: REGENERATE, REFERENCE, WORK.
 cmake_minimum_required(VERSION 3.19)
 file(REMOVE_RECURSE "${WORK}")
-execute_process(COMMAND "${REGENERATE}" --output "${WORK}" RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE errors)
+execute_process(COMMAND "${REGENERATE}" --output "${WORK}" --check "${REFERENCE}"
+                RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE errors)
 if(NOT status EQUAL 0)
-  message(FATAL_ERROR "autograder-regenerate failed: ${errors}")
+  message(FATAL_ERROR "${errors}")
 endif()
-file(GLOB generated RELATIVE "${WORK}" "${WORK}/*")
-file(GLOB checked_in RELATIVE "${REFERENCE}" "${REFERENCE}/*")
-list(SORT generated)
-list(SORT checked_in)
-if(NOT generated STREQUAL checked_in)
-  message(FATAL_ERROR "autograder/reference/ holds [${checked_in}] but regenerating gives [${generated}]")
-endif()
-set(stale "")
-foreach(file IN LISTS generated)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK}/${file}" "${REFERENCE}/${file}" RESULT_VARIABLE differs)
-  if(differs)
-    list(APPEND stale "${file}")
-  endif()
-endforeach()
-if(stale)
-  message(FATAL_ERROR "autograder/reference/ is out of date (${stale}): run `cmake --build build --target regenerate` "
-                      "and commit the result (docs/instructors.md)")
-endif()
-message(STATUS "reference data is current (${generated})")
+message(STATUS "${output}")

@@ -63,8 +63,13 @@ std::string write(const Image& image, const std::string& path, bool linear_float
     // png, ppm: 8-bit sRGB
     oiio::ImageBuf srgb = oiio::ImageBufAlgo::colorconvert(linear, "linear", "sRGB");
     srgb = oiio::ImageBufAlgo::clamp(srgb, 0.0f, 1.0f);
-    if (!srgb.has_error() && srgb.write(path, oiio::TypeDesc::UINT8)) return "";
-    return failure(srgb.geterror());
+    // Quantise in memory and hand the writer 8-bit data: OpenImageIO 2.5's PNM writer flips
+    // the rows of float data it is given (its PFM convention) even when it writes an 8-bit PPM.
+    oiio::ImageBuf srgb8;
+    if (!srgb.has_error() && srgb8.copy(srgb, oiio::TypeDesc::UINT8) &&
+        srgb8.write(path, oiio::TypeDesc::UINT8))
+      return "";
+    return failure(srgb.has_error() ? srgb.geterror() : srgb8.geterror());
   });
 }
 
