@@ -23,7 +23,9 @@
 #include "raylab/scene_loader.h"
 #include "raylab/stages/01_camera_rays.h"
 #include "raylab/stages/03_triangle.h"
+#include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
+#include "raylab/testkit/random_values.h"
 
 #include <benchmark/benchmark.h>
 
@@ -56,16 +58,6 @@ constexpr std::size_t kRandomRayCount = kPrimaryWidth * kPrimaryHeight;
 constexpr std::size_t kBruteForceStride = 16;      // brute force traces every 16th ray
 
 // ---- Deterministic inputs ---------------------------------------------------------------
-
-std::uint64_t splitmix64(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-float unit_float(std::uint64_t& state) {  // [0, 1), 24 random bits: the same everywhere
-  return static_cast<float>(splitmix64(state) >> 40) * (1.0f / 16777216.0f);
-}
 
 struct TestMesh {
   std::string name;
@@ -110,18 +102,11 @@ RaySet random_rays(const Bounds3& bounds, std::uint64_t seed) {
   RaySet set{"random", {}};
   set.rays.reserve(kRandomRayCount);
   const glm::vec3 center = bounds.centroid(), half = 0.75f * bounds.extent();
-  std::uint64_t state = seed;
+  Pcg32 random(seed);  // the kit's one generator: the same rays on every machine
   while (set.rays.size() < kRandomRayCount) {
     Ray ray;
-    ray.origin = center + half * glm::vec3(2.0f * unit_float(state) - 1.0f, 2.0f * unit_float(state) - 1.0f,
-                                           2.0f * unit_float(state) - 1.0f);
-    // Uniform direction: rejection from the cube, then normalise.
-    glm::vec3 d;
-    do {
-      d = glm::vec3(2.0f * unit_float(state) - 1.0f, 2.0f * unit_float(state) - 1.0f,
-                    2.0f * unit_float(state) - 1.0f);
-    } while (glm::dot(d, d) > 1.0f || glm::dot(d, d) < 1e-4f);
-    ray.direction = glm::normalize(d);
+    ray.origin = center + half * testkit::random_vec3(random, -1.0f, 1.0f);
+    ray.direction = testkit::random_unit_vector(random);
     set.rays.push_back(ray);
   }
   return set;

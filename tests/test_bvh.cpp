@@ -3,6 +3,7 @@
 // the node array's cache-line layout that raylab/stages/05_bvh.h promises.
 #include "raylab/mesh_generator.h"
 #include "raylab/stages/03_triangle.h"
+#include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
 
 #include <gtest/gtest.h>

@@ -64,7 +64,7 @@
 //   Receives and returns what build_bvh does (the same tree rules, leaves of at most
 //   max_leaf_size), but splits each node where the surface area heuristic (SAH) predicts the
 //   least work, by binning the centroids, and makes a leaf where splitting would not pay. Its
-//   tree must be valid and its bvh_sah_cost (05_bvh.h) close to the reference's.
+//   tree must be valid and its bvh_sah_cost (raylab/bvh_tools.h) close to the reference's.
 //
 // READ docs/05_bvh.md, section 5 (the cost, binning, the special cases).
 //

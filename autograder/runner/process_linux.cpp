@@ -4,9 +4,12 @@
 // memory are never touched by stage code):
 //   - as root: its own uid and gid (1000000000 + the judge's pid, no other process has them), so
 //     it cannot write any file of the grader, the repository or the reference data, cannot
-//     signal the judge, and everything it starts, detached or not, is killed at once with
-//     kill(-1) by a helper that takes the same uid (atomic against fork: a fork bomb cannot
-//     outrun it);
+//     signal the judge, RLIMIT_NPROC holds (the kernel never applies it to uid 0), and
+//     everything it starts, detached or not, is killed at once with kill(-1) by a helper that
+//     takes the same uid (atomic against fork: a fork bomb cannot outrun it). When that uid
+//     could not enter the programs' folder or the scenes (a checkout under /root or a 0700
+//     home), it keeps one capability, CAP_DAC_READ_SEARCH (read and search any folder; no
+//     writes, no signals, no other privilege), as an ambient capability across the exec;
 //   - not root: the same user, so the judge is a child subreaper and kills every descendant it
 //     finds in /proc until none is left (a setsid() grandchild still has the judge as ancestor);
 //   - both: Landlock where the kernel has it (no file may be created or written anywhere, no TCP,
@@ -18,6 +21,7 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <grp.h>
+#include <linux/capability.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/mman.h>
@@ -74,8 +78,22 @@ int landlock_abi() {
 struct Sandbox {
   bool as_root = false;
   uid_t uid = 0;  // the sandbox's own uid and gid, when as_root
+  bool keeps_read_search = false;  // as_root, and the uid alone cannot reach the programs
   int landlock = 0;
 };
+
+// In the child, after setuid: keep CAP_DAC_READ_SEARCH alone, in the permitted, effective,
+// inheritable and ambient sets, so that it survives the exec (PR_SET_KEEPCAPS was set before
+// the setuid). Only system calls: this runs between fork and exec.
+bool keep_only_read_search() {
+  __user_cap_header_struct header{_LINUX_CAPABILITY_VERSION_3, 0};
+  __user_cap_data_struct data[2] = {};
+  const unsigned bit = 1u << (CAP_DAC_READ_SEARCH % 32);
+  data[CAP_DAC_READ_SEARCH / 32].effective = data[CAP_DAC_READ_SEARCH / 32].permitted = bit;
+  data[CAP_DAC_READ_SEARCH / 32].inheritable = bit;
+  if (::syscall(SYS_capset, &header, data) != 0) return false;
+  return ::prctl(PR_CAP_AMBIENT, PR_CAP_AMBIENT_RAISE, CAP_DAC_READ_SEARCH, 0, 0) == 0;
+}
 Sandbox& sandbox() {
   static Sandbox value;
   return value;
@@ -198,7 +216,8 @@ std::string signal_description(int signal_number) {
 // Whether a process with the sandbox's uid can read and enter every folder the stage server
 // needs: the programs' folder (the server and the image module) and the source tree (scenes,
 // meshes). A checkout under a folder only root may enter (/root, a 0700 home) cannot be, and
-// then the server keeps the judge's uid: Landlock and the process limits still hold.
+// then the server keeps CAP_DAC_READ_SEARCH (keep_only_read_search). It must never keep
+// uid 0: root is exempt from RLIMIT_NPROC, and a fork bomb would take the whole machine.
 static bool sandbox_uid_can_reach(uid_t uid) {
   std::vector<std::string> folders;
   char self[4096];
@@ -229,7 +248,8 @@ void prepare_judge() {
   ::signal(SIGPIPE, SIG_IGN);
   Sandbox& box = sandbox();
   box.uid = static_cast<uid_t>(1000000000u + static_cast<unsigned>(::getpid()));
-  box.as_root = ::geteuid() == 0 && sandbox_uid_can_reach(box.uid);
+  box.as_root = ::geteuid() == 0;
+  box.keeps_read_search = box.as_root && !sandbox_uid_can_reach(box.uid);
   box.landlock = landlock_abi();
 }
 
@@ -242,6 +262,8 @@ std::string sandbox_description() {
   std::string text = box.as_root ? "its own user id (it cannot write the grader's files, nor signal the grader; "
                                    "everything it starts is killed with its stage)"
                                  : "your user id (processes it starts are killed with its stage)";
+  if (box.keeps_read_search)
+    text += ", which may read every folder (CAP_DAC_READ_SEARCH: the programs are where that user id alone cannot enter)";
   if (box.landlock > 0)
     text += ", Landlock ABI " + std::to_string(box.landlock) + " (no file writes" +
             std::string(box.landlock >= 4 ? ", no TCP" : "") + std::string(box.landlock >= 6 ? ", no signals out" : "") + ")";
@@ -303,7 +325,9 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
     ::setrlimit(RLIMIT_FSIZE, &file_size);
     ::signal(SIGXFSZ, SIG_IGN);  // over the output limit: writes fail, the program goes on
     if (box.as_root) {
+      if (box.keeps_read_search && ::prctl(PR_SET_KEEPCAPS, 1, 0, 0, 0) != 0) child_fail("keepcaps");
       if (::setgroups(0, nullptr) != 0 || ::setgid(box.uid) != 0 || ::setuid(box.uid) != 0) child_fail("setuid");
+      if (box.keeps_read_search && !keep_only_read_search()) child_fail("capset");
     }
     const struct rlimit processes{static_cast<rlim_t>(nproc), static_cast<rlim_t>(nproc)};
     ::setrlimit(RLIMIT_NPROC, &processes);

@@ -4,6 +4,7 @@
 #include "bvh_support.h"
 #include "support.h"
 
+#include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
 
 namespace raylab::grading {

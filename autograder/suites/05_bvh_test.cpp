@@ -2,6 +2,7 @@
 #include "bvh_support.h"
 #include "grading.h"
 
+#include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
 
 #include <cmath>

@@ -3,6 +3,7 @@
 
 #include "support.h"
 
+#include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
 
 #include <array>

@@ -1,6 +1,7 @@
 // The framework's side of stages 04_box and 05_bvh: printing, and measuring and checking a
 // built tree (SAH cost, depth, invariants) for the renderer, bench/ and the autograder.
 #include "raylab/bounds.h"
+#include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
 
 #include <algorithm>

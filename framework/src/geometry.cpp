@@ -1,5 +1,6 @@
 #include "raylab/geometry.h"
 
+#include "raylab/bvh_tools.h"
 #include "raylab/error.h"
 #include "raylab/stages/02_sphere.h"
 #include "raylab/stages/03_triangle.h"

@@ -1,4 +1,7 @@
 #include "raylab/mesh_generator.h"
+
+#include "raylab/random.h"
+
 #include <string>
 #include <vector>
 #include <utility>
@@ -11,26 +14,16 @@
 namespace raylab {
 namespace {
 
-// A small integer hash (deterministic everywhere) turned into a float in [0, 1).
-float hash_unit(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return static_cast<float>(x >> 8) * (1.0f / 16777216.0f);
-}
-
 // Height over the unit direction: a few sinusoidal waves of rising frequency.
 float displacement(const glm::vec3& direction, std::uint32_t seed) {
   constexpr int kWaves = 6;
   float height = 0.0f;
   float amplitude = 0.06f, frequency = 3.0f;
   for (int w = 0; w < kWaves; ++w) {
-    const std::uint32_t key = seed * 97u + static_cast<std::uint32_t>(w) * 13u;
-    const glm::vec3 axis = glm::normalize(glm::vec3(hash_unit(key) - 0.5f, hash_unit(key + 1) - 0.5f,
-                                                    hash_unit(key + 2) - 0.5f) + glm::vec3(1e-3f));
-    const float phase = 6.2831853f * hash_unit(key + 3);
+    Pcg32 random(mix_bits(seed), static_cast<std::uint64_t>(w));  // each wave its own stream
+    const float axis_x = random.next_float(), axis_y = random.next_float(), axis_z = random.next_float();
+    const glm::vec3 axis = glm::normalize(glm::vec3(axis_x - 0.5f, axis_y - 0.5f, axis_z - 0.5f) + glm::vec3(1e-3f));
+    const float phase = 6.2831853f * random.next_float();
     height += amplitude * std::sin(frequency * glm::dot(direction, axis) * 3.0f + phase);
     amplitude *= 0.6f;
     frequency *= 2.1f;

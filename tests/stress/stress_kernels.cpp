@@ -52,32 +52,6 @@ std::string describe(const ErrorStats& stats) {
   return text;
 }
 
-// ---- Random numbers ---------------------------------------------------------------------
-
-std::uint64_t Random::next() {  // splitmix64
-  std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-float Random::uniform(float low, float high) {
-  return low + (high - low) * static_cast<float>(next() >> 40) * (1.0f / 16777216.0f);
-}
-double Random::uniform_double(double low, double high) {
-  return low + (high - low) * static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0);
-}
-float Random::log_uniform(float low, float high) {
-  return static_cast<float>(std::exp(uniform_double(std::log(double(low)), std::log(double(high)))));
-}
-glm::vec3 Random::unit_vector() {
-  const double z = uniform_double(-1.0, 1.0), phi = uniform_double(0.0, 2.0 * 3.14159265358979323846);
-  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return glm::vec3(static_cast<float>(r * std::cos(phi)), static_cast<float>(r * std::sin(phi)), static_cast<float>(z));
-}
-int Random::integer(int low, int high) {
-  return low + static_cast<int>(next() % static_cast<std::uint64_t>(high - low + 1));
-}
-
 // ---- Ray-sphere -------------------------------------------------------------------------
 
 std::optional<float> sphere_textbook(const Ray& ray, const glm::vec3& center, float radius) {
@@ -101,7 +75,7 @@ const std::vector<std::string>& sphere_case_sets() {
 }
 
 std::vector<SphereCase> sphere_cases(const std::string& set, int count, std::uint64_t seed) {
-  Random random(seed * 7919 + std::hash<std::string>{}(set) % 1000003);
+  Pcg32 random(seed, testkit::stream_of("sphere " + set));
   std::vector<SphereCase> cases;
   cases.reserve(static_cast<std::size_t>(count));
   while (static_cast<int>(cases.size()) < count) {
@@ -109,41 +83,41 @@ std::vector<SphereCase> sphere_cases(const std::string& set, int count, std::uin
     c.ray.t_min = 0.0f;
     c.ray.t_max = kInfinity;
     if (set == "ordinary") {
-      c.center = random.uniform(-10, 10) * random.unit_vector();
+      c.center = random.uniform(-10, 10) * random_unit_vector(random);
       c.radius = random.uniform(0.1f, 5.0f);
       c.ray.origin = glm::vec3(random.uniform(-20, 20), random.uniform(-20, 20), random.uniform(-20, 20));
-      const glm::vec3 target = c.center + random.uniform(0, 1.2f) * c.radius * random.unit_vector();
+      const glm::vec3 target = c.center + random.uniform(0, 1.2f) * c.radius * random_unit_vector(random);
       c.ray.direction = (target - c.ray.origin) * random.uniform(0.2f, 5.0f);
     } else if (set == "far_tiny") {
-      const float distance = random.log_uniform(1e2f, 1e5f);
-      c.center = distance * random.unit_vector();
-      c.radius = distance * random.log_uniform(1e-4f, 1e-2f);
+      const float distance = random_log_uniform(random, 1e2f, 1e5f);
+      c.center = distance * random_unit_vector(random);
+      c.radius = distance * random_log_uniform(random, 1e-4f, 1e-2f);
       c.ray.origin = glm::vec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
-      const glm::vec3 target = c.center + random.uniform(0, 1.1f) * c.radius * random.unit_vector();
+      const glm::vec3 target = c.center + random.uniform(0, 1.1f) * c.radius * random_unit_vector(random);
       c.ray.direction = glm::normalize(target - c.ray.origin) * random.uniform(0.5f, 2.0f);
     } else if (set == "huge_near") {
-      c.radius = random.log_uniform(1e3f, 1e6f);
-      c.center = random.uniform(0, 10) * random.unit_vector();
-      const glm::vec3 up = random.unit_vector();
-      const float height = c.radius * random.log_uniform(1e-4f, 1e-1f);
+      c.radius = random_log_uniform(random, 1e3f, 1e6f);
+      c.center = random.uniform(0, 10) * random_unit_vector(random);
+      const glm::vec3 up = random_unit_vector(random);
+      const float height = c.radius * random_log_uniform(random, 1e-4f, 1e-1f);
       c.ray.origin = c.center + (c.radius + height) * up;
-      c.ray.direction = glm::normalize(-up + random.uniform(0, 0.3f) * random.unit_vector());
+      c.ray.direction = glm::normalize(-up + random.uniform(0, 0.3f) * random_unit_vector(random));
     } else if (set == "grazing") {
-      c.center = random.uniform(-10, 10) * random.unit_vector();
+      c.center = random.uniform(-10, 10) * random_unit_vector(random);
       c.radius = random.uniform(0.1f, 5.0f);
-      const glm::vec3 away = random.unit_vector();
+      const glm::vec3 away = random_unit_vector(random);
       c.ray.origin = c.center + random.uniform(2, 20) * c.radius * away;
-      glm::vec3 side = glm::cross(away, random.unit_vector());
+      glm::vec3 side = glm::cross(away, random_unit_vector(random));
       if (glm::length(side) < 1e-3f) continue;
       side = glm::normalize(side);
-      const float impact = c.radius * (1.0f - random.log_uniform(1e-6f, 1e-1f));
+      const float impact = c.radius * (1.0f - random_log_uniform(random, 1e-6f, 1e-1f));
       c.ray.direction = glm::normalize(c.center + impact * side - c.ray.origin);
     } else if (set == "on_surface") {
-      c.center = random.uniform(-10, 10) * random.unit_vector();
+      c.center = random.uniform(-10, 10) * random_unit_vector(random);
       c.radius = random.uniform(0.1f, 5.0f);
-      const glm::vec3 normal = random.unit_vector();
+      const glm::vec3 normal = random_unit_vector(random);
       c.ray.origin = c.center + c.radius * normal;  // rounded: a hair in or out
-      glm::vec3 direction = random.unit_vector();
+      glm::vec3 direction = random_unit_vector(random);
       if ((cases.size() % 2 == 0) != (glm::dot(direction, normal) < 0.0f)) direction = -direction;
       c.ray.direction = direction;
       c.ray.t_min = 1e-4f * c.radius;  // the usual epsilon: leaving rays must miss, entering ones find the far side
@@ -229,7 +203,7 @@ const std::vector<std::string>& triangle_case_sets() {
 }
 
 std::vector<TriangleCase> triangle_cases(const std::string& set, int count, std::uint64_t seed) {
-  Random random(seed * 104729 + std::hash<std::string>{}(set) % 1000003);
+  Pcg32 random(seed, testkit::stream_of("triangle " + set));
   std::vector<TriangleCase> cases;
   cases.reserve(static_cast<std::size_t>(count));
   auto random_point = [&](float half) {
@@ -242,15 +216,15 @@ std::vector<TriangleCase> triangle_cases(const std::string& set, int count, std:
     c.p0 = random_point(1), c.p1 = random_point(1), c.p2 = random_point(1);
     float b1 = random.uniform(-0.2f, 1.2f), b2 = random.uniform(-0.2f, 1.2f);
     if (set == "slivers") {
-      const glm::vec3 length = random.uniform(1, 3) * random.unit_vector();
-      glm::vec3 side = glm::cross(length, random.unit_vector());
+      const glm::vec3 length = random.uniform(1, 3) * random_unit_vector(random);
+      glm::vec3 side = glm::cross(length, random_unit_vector(random));
       if (glm::length(side) < 1e-3f) continue;
-      side = glm::normalize(side) * glm::length(length) * random.log_uniform(1e-6f, 1e-3f);
+      side = glm::normalize(side) * glm::length(length) * random_log_uniform(random, 1e-6f, 1e-3f);
       c.p1 = c.p0 + length;
       c.p2 = c.p0 + 0.5f * length + side;
     }
     if (set == "degenerate") {
-      if (random.integer(0, 1) == 0) c.p2 = c.p0;                                   // a repeated corner
+      if (random_integer(random, 0, 1) == 0) c.p2 = c.p0;                                   // a repeated corner
       else c.p2 = c.p0 + random.uniform(-2, 2) * (c.p1 - c.p0);                     // three on a line
       b1 = random.uniform(0, 1), b2 = random.uniform(0, 1 - b1);
     }
@@ -259,10 +233,10 @@ std::vector<TriangleCase> triangle_cases(const std::string& set, int count, std:
     const glm::vec3 target = (1.0f - b1 - b2) * c.p0 + b1 * c.p1 + b2 * c.p2;
     if (set == "near_parallel") {
       const glm::vec3 n = glm::normalize(normal);
-      glm::vec3 in_plane = glm::cross(n, random.unit_vector());
+      glm::vec3 in_plane = glm::cross(n, random_unit_vector(random));
       if (glm::length(in_plane) < 1e-3f) continue;
       in_plane = glm::normalize(in_plane);
-      const double angle = random.log_uniform(1e-6f, 1e-2f);
+      const double angle = random_log_uniform(random, 1e-6f, 1e-2f);
       c.ray.direction = glm::vec3(glm::dvec3(in_plane) * std::cos(angle) + glm::dvec3(n) * std::sin(angle));
       c.ray.origin = target - random.uniform(0.5f, 4.0f) * c.ray.direction;
     } else {
@@ -270,7 +244,7 @@ std::vector<TriangleCase> triangle_cases(const std::string& set, int count, std:
       c.ray.direction = (target - c.ray.origin) * random.uniform(0.2f, 3.0f);
     }
     if (set == "large_coords") {
-      const glm::vec3 shift = random.log_uniform(1e4f, 1e6f) * random.unit_vector();
+      const glm::vec3 shift = random_log_uniform(random, 1e4f, 1e6f) * random_unit_vector(random);
       c.p0 += shift, c.p1 += shift, c.p2 += shift, c.ray.origin += shift;
     }
     if (!is_finite(c.ray.direction) || glm::length(c.ray.direction) == 0.0f) continue;
@@ -341,16 +315,16 @@ LeakCount count_leaks(const ClosedMesh& mesh, TriangleKernel kernel, std::uint64
     return kernel(ray, corner(t, 0), corner(t, 1), corner(t, 2)).has_value();
   };
 
-  Random random(seed);
+  Pcg32 random(seed);
   LeakCount count;
   for (std::uint64_t r = 0; r < rays; ++r) {
-    const auto triangle = static_cast<std::uint32_t>(random.next() % mesh.triangle_count());
-    const int k = random.integer(0, 2);
+    const auto triangle = static_cast<std::uint32_t>(random.next_bounded(static_cast<std::uint32_t>(mesh.triangle_count())));
+    const int k = random_integer(random, 0, 2);
     const std::uint32_t a = mesh.indices[3 * triangle + k], b = mesh.indices[3 * triangle + (k + 1) % 3];
     glm::vec3 target = mesh.positions[a];
     if (r % 2 == 0) target = glm::mix(mesh.positions[a], mesh.positions[b], random.uniform(0.0f, 1.0f));
     Ray ray;
-    ray.origin = mesh.inside + random.uniform(0.0f, 0.9f) * mesh.inside_radius * random.unit_vector();
+    ray.origin = mesh.inside + random.uniform(0.0f, 0.9f) * mesh.inside_radius * random_unit_vector(random);
     ray.direction = target - ray.origin;
     ++count.rays;
     bool hit = false;

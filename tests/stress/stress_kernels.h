@@ -12,6 +12,7 @@
 #include "raylab/bounds.h"
 #include "raylab/ray.h"
 #include "raylab/stages/03_triangle.h"
+#include "raylab/testkit/random_values.h"
 
 #include <cstdint>
 #include <optional>
@@ -39,21 +40,12 @@ struct ErrorStats {
 // "max 1.2e-07  p99.9 8.9e-08  median 2.1e-08  wrong 0/100000" for the report.
 std::string describe(const ErrorStats& stats);
 
-// ---- Deterministic random numbers (the same on every machine) ---------------------------
-
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next();
-  float uniform(float low, float high);         // 24 random bits
-  double uniform_double(double low, double high);
-  float log_uniform(float low, float high);     // log spread: low, high > 0
-  glm::vec3 unit_vector();                      // uniform on the sphere
-  int integer(int low, int high);               // inclusive
-
- private:
-  std::uint64_t state_;
-};
+// ---- Deterministic random numbers: the kit's one generator -----------------------------
+// Pcg32 (raylab/random.h) with raylab/testkit/random_values.h's random_unit_vector,
+// random_log_uniform, random_integer; each case set draws from its own stream.
+using testkit::random_integer;
+using testkit::random_log_uniform;
+using testkit::random_unit_vector;
 
 // ---- Ray-sphere -------------------------------------------------------------------------
 

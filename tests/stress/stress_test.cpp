@@ -272,19 +272,19 @@ BoxProbe probe_boxes(const ClosedMesh& mesh, std::uint64_t rays, std::uint64_t s
     return hit->t_hit;
   };
 
-  Random random(seed);
+  Pcg32 random(seed);
   BoxProbe probe;
   glm::vec3 low = boxes[0].min, high = boxes[0].max;
   for (const Bounds3& b : boxes) low = glm::min(low, b.min), high = glm::max(high, b.max);
   const glm::vec3 size = high - low;
   for (std::uint64_t r = 0; r < rays; ++r) {
-    const auto t = static_cast<std::size_t>(random.next() % triangles);
-    const int k = random.integer(0, 2);
+    const auto t = static_cast<std::size_t>(random.next_bounded(static_cast<std::uint32_t>(triangles)));
+    const int k = random_integer(random, 0, 2);
     const glm::vec3 target = glm::mix(corner(t, k), corner(t, (k + 1) % 3), random.uniform(0, 1));
     Ray ray;
     // From anywhere around the mesh, often in or near the plane of a flat mesh.
     ray.origin = low + glm::vec3(random.uniform(-1, 2), random.uniform(-1, 2), random.uniform(-1, 2)) * glm::max(size, glm::vec3(1.0f));
-    if (random.integer(0, 3) == 0) ray.origin.y = target.y + random.uniform(-1e-3f, 1e-3f);  // grazing a flat mesh
+    if (random_integer(random, 0, 3) == 0) ray.origin.y = target.y + random.uniform(-1e-3f, 1e-3f);  // grazing a flat mesh
     ray.direction = target - ray.origin;
     if (glm::length(ray.direction) == 0.0f) continue;
     // The closest hit by brute force, and every triangle hit: its box must pass.
@@ -619,7 +619,7 @@ TEST(StressOffsets, ThinOccluderAboveTheSurfaceKeepsItsShadow) {
                                   "thin_plate", ".");
   const SceneGeometry geometry(scene, Acceleration::BruteForce);
   const glm::vec3 light = scene.lights[0].position;
-  Random random(5);
+  Pcg32 random(5);
   const int points = scaled(2000);
   int lit[3] = {0, 0, 0};
   const float epsilons[3] = {1e-4f, 1e-3f, 0.0f};

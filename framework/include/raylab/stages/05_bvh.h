@@ -3,19 +3,16 @@
 // comment is the full contract); handout: docs/05_bvh.md.
 //
 // The node layout and the containers below are the framework's: the builders fill them, the
-// traversal reads them, the renderer, the autograder and bench/ inspect them.
+// traversal reads them, the renderer, the autograder and bench/ inspect them (with the tools
+// of raylab/bvh_tools.h: SAH cost, depth, the invariant check, printing a node).
 #pragma once
 
 #include "raylab/bounds.h"
+#include "raylab/bvh_node_allocator.h"
 #include "raylab/ray.h"
 
-#include <cstddef>
 #include <cstdint>
-#include <limits>
-#include <new>
 #include <optional>
-#include <ostream>
-#include <string>
 #include <vector>
 
 namespace raylab {
@@ -44,37 +41,6 @@ constexpr int kBvhMaxLeafSize = 65535;
 // kBvhMaxDepth node indices is always enough.
 constexpr int kBvhMaxDepth = 64;
 
-// The allocator of Bvh::nodes (nothing to do with the assignment: use Bvh::nodes like any
-// std::vector). It places nodes[0] in the second half of a 64-byte cache line. A builder that
-// appends the root first and then both children of a node at once (as the contract says) puts
-// every sibling pair at an odd index, so each pair then fills exactly one cache line, and a
-// traversal that reads both children of a node loads one line, not two.
-template <typename T>
-struct BvhNodeAllocator {
-  using value_type = T;
-  static constexpr std::size_t kCacheLine = 64;
-  static constexpr std::size_t kRootOffset = 32;  // nodes[1] starts a cache line
-
-  BvhNodeAllocator() noexcept = default;
-  template <typename U>
-  BvhNodeAllocator(const BvhNodeAllocator<U>&) noexcept {}
-
-  T* allocate(std::size_t count) {
-    if (count > (std::numeric_limits<std::size_t>::max() - kCacheLine) / sizeof(T))
-      throw std::bad_array_new_length();
-    auto* line = static_cast<unsigned char*>(
-        ::operator new(count * sizeof(T) + kCacheLine, std::align_val_t{kCacheLine}));
-    return reinterpret_cast<T*>(line + kRootOffset);
-  }
-  void deallocate(T* nodes, std::size_t) noexcept {
-    ::operator delete(reinterpret_cast<unsigned char*>(nodes) - kRootOffset, std::align_val_t{kCacheLine});
-  }
-  template <typename U>
-  bool operator==(const BvhNodeAllocator<U>&) const noexcept { return true; }
-  template <typename U>
-  bool operator!=(const BvhNodeAllocator<U>&) const noexcept { return false; }
-};
-
 // A built tree. The primitives themselves stay with the caller, who knows only their boxes'
 // order: primitive i is the one whose box was primitive_bounds[i].
 struct Bvh {
@@ -89,7 +55,7 @@ Bvh build_bvh(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size);
 
 // Stage 5b (bonus): the same, choosing each split with the binned surface area heuristic;
 // leaves have at most max_leaf_size primitives and are made earlier when splitting costs more
-// (traversal step cost 1, primitive test cost 1: see bvh_sah_cost).
+// (traversal step cost 1, primitive test cost 1: see bvh_sah_cost in raylab/bvh_tools.h).
 Bvh build_bvh_sah(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size);
 
 // ---- Traversal --------------------------------------------------------------------------
@@ -133,25 +99,5 @@ struct BvhHit {
 std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray,
                                     const PrimitiveIntersector& intersector, bool any_hit,
                                     BvhTraversalStats& stats);
-
-// ---- Framework helpers (framework/src/bvh.cpp; not part of the assignment) --------------
-
-// The surface area heuristic cost of a tree: the expected work of a random ray that hits the
-// root, sum over nodes of area(node) / area(root) * (traversal_cost for an inner node, or
-// primitive_cost * primitive_count for a leaf). Lower is better; 0 for an empty tree.
-float bvh_sah_cost(const Bvh& bvh, float traversal_cost = 1.0f, float primitive_cost = 1.0f);
-
-// The depth of the deepest leaf (root = 0); -1 for an empty tree.
-int bvh_depth(const Bvh& bvh);
-
-// Checks what every correct builder guarantees, and returns the first broken rule in words
-// ("" when all hold): primitive_order is a permutation of 0 .. n - 1; every node is reached
-// exactly once from the root; children follow their parent in the array; an inner node's box
-// holds its children's boxes and a leaf's box holds its primitives' boxes; leaves are not
-// empty and hold at most max_leaf_size primitives; the depth is below kBvhMaxDepth.
-std::string bvh_invariant_violation(const Bvh& bvh, const std::vector<Bounds3>& primitive_bounds,
-                                    int max_leaf_size);
-
-std::ostream& operator<<(std::ostream& out, const BvhNode& node);
 
 }  // namespace raylab

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <string_view>
 
@@ -33,6 +34,26 @@ inline int random_integer(Pcg32& random, int low, int high) {
 inline glm::vec3 random_vec3(Pcg32& random, float low, float high) {
   const float x = random.uniform(low, high), y = random.uniform(low, high), z = random.uniform(low, high);
   return {x, y, z};
+}
+
+// Uniform over [low, high) in double precision: 53 random bits from two draws.
+inline double random_double(Pcg32& random, double low, double high) {
+  const std::uint64_t high_bits = random.next_uint32() >> 5u, low_bits = random.next_uint32() >> 6u;  // 27 + 26
+  const double unit = static_cast<double>((high_bits << 26u) | low_bits) * (1.0 / 9007199254740992.0);
+  return low + (high - low) * unit;
+}
+
+// Spread evenly over the logarithm: as many values in [1e-6, 1e-5) as in [1e-2, 1e-1)
+// (0 < low < high). For magnitudes that span decades (tiny spheres, huge distances).
+inline float random_log_uniform(Pcg32& random, float low, float high) {
+  return static_cast<float>(std::exp(random_double(random, std::log(double(low)), std::log(double(high)))));
+}
+
+// A direction uniform on the unit sphere (z uniform in [-1, 1], an angle uniform around z).
+inline glm::vec3 random_unit_vector(Pcg32& random) {
+  const double z = random_double(random, -1.0, 1.0), phi = random_double(random, 0.0, 6.283185307179586);
+  const double r = std::sqrt(std::fmax(0.0, 1.0 - z * z));
+  return {static_cast<float>(r * std::cos(phi)), static_cast<float>(r * std::sin(phi)), static_cast<float>(z)};
 }
 
 // true with probability `probability`.
