@@ -223,16 +223,16 @@ void box_rows(int rays, std::vector<Row>& rows) {
     // Boxes of triangles hit by the watertight test, rays through shared edges.
     std::uint64_t boxes_tested = 0, rejected = 0;
     for (const ClosedMesh& mesh : meshes) {
-      Random random(33);
+      Pcg32 random(33);
       auto corner = [&](std::size_t t, int j) { return mesh.positions[mesh.indices[3 * t + j]]; };
       for (int r = 0; r < rays / 4; ++r) {
-        const std::size_t t = random.next() % mesh.triangle_count();
-        const int j = random.integer(0, 2);
+        const std::size_t t = random.next_bounded(static_cast<std::uint32_t>(mesh.triangle_count()));
+        const int j = random_integer(random, 0, 2);
         const glm::vec3 target = glm::clamp(glm::mix(corner(t, j), corner(t, (j + 1) % 3), random.uniform(0, 1)),
                                             glm::min(corner(t, j), corner(t, (j + 1) % 3)),
                                             glm::max(corner(t, j), corner(t, (j + 1) % 3)));
         Ray ray;
-        ray.origin = mesh.inside + random.uniform(0.0f, 0.9f) * mesh.inside_radius * random.unit_vector();
+        ray.origin = mesh.inside + random.uniform(0.0f, 0.9f) * mesh.inside_radius * random_unit_vector(random);
         ray.direction = target - ray.origin;
         const Bounds3 bounds = bounds_union(bounds_union(Bounds3(corner(t, 0), corner(t, 0)), corner(t, 1)), corner(t, 2));
         ++boxes_tested;
