@@ -35,6 +35,10 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   app.add_option("--stage", stage_names,
                  "Grade only this stage: its id or short form (05b_bvh_sah, 05b or 5b); repeat for several");
   app.add_option("--json", options.json_path, "Also write a Gradescope-style results.json here");
+  app.add_option("--reference", options.reference_directory,
+                 "Folder of reference data (default: the checked-in autograder/reference/; a course's "
+                 "own cases: autograder-regenerate --seed N --output DIR)")
+      ->check(CLI::ExistingDirectory);
   app.add_option("--output", options.output_directory, "Folder for the yours | reference | difference images")
       ->capture_default_str();
   app.add_option("--timeout", options.timeout_seconds, "Seconds a stage's code may run, all its calls together")

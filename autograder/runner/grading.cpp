@@ -72,6 +72,10 @@ std::string& output_directory_storage() {
   static std::string directory = "grading-output";
   return directory;
 }
+std::string& reference_directory_storage() {
+  static std::string directory = RAYLAB_REFERENCE_DIR;
+  return directory;
+}
 std::set<int>& incomplete_dependencies() {
   static std::set<int> stages;
   return stages;
@@ -237,9 +241,8 @@ std::string failure_text(const Message& failure) {
 const std::string& output_directory() { return output_directory_storage(); }
 void set_output_directory(const std::string& directory) { output_directory_storage() = directory; }
 
-std::string reference_path(const std::string& name) {
-  return std::string(RAYLAB_REFERENCE_DIR) + "/" + name;
-}
+std::string reference_path(const std::string& name) { return reference_directory_storage() + "/" + name; }
+void set_reference_directory(const std::string& directory) { reference_directory_storage() = directory; }
 
 void install_recorder(std::function<void(const std::string&)> on_test_start,
                       std::function<void(const TestRecord&)> on_test_end) {

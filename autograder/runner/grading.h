@@ -75,8 +75,11 @@ void add_note(const Message& note);
 const std::string& output_directory();
 void set_output_directory(const std::string& directory);
 
-// autograder/reference/<name>: the checked-in reference data.
+// <reference directory>/<name>: the reference data, by default the checked-in
+// autograder/reference/; a course grading with its own private seed sets the folder it
+// regenerated (autograder --reference DIR, after autograder-regenerate --seed N --output DIR).
 std::string reference_path(const std::string& name);
+void set_reference_directory(const std::string& directory);
 
 // What one test found, as the judge's GoogleTest listener saw it.
 struct TestRecord {

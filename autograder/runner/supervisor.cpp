@@ -125,6 +125,7 @@ int run_supervisor(const SupervisorOptions& options) {
   }
   std::filesystem::create_directories(options.output_directory);
   set_output_directory(options.output_directory);
+  if (!options.reference_directory.empty()) set_reference_directory(options.reference_directory);
 
   prepare_judge();
   SessionOptions session_options;

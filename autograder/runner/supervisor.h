@@ -15,6 +15,7 @@ struct SupervisorOptions {
   std::vector<int> stages;         // empty: every stage
   std::string json_path;           // Gradescope results.json, if set
   std::string output_directory;    // side-by-side images
+  std::string reference_directory; // reference data ("": the checked-in autograder/reference/)
   double timeout_seconds = 60.0;   // wall clock per stage, all its calls together
   double run_timeout_seconds = 900.0;  // wall clock for the whole run
   long memory_limit_mb = 4096;     // address space of a stage server (0: no limit)
