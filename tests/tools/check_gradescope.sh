@@ -32,9 +32,16 @@ grade() {
   sed -n 's/^  "score": \([0-9]*\).*/\1/p' "$root/results/results.json" | head -1
 }
 max_score() { sed -n 's/^  "max_score": \([0-9]*\).*/\1/p' "$1" | head -1; }
-submit_solutions_except() {  # FILE_TO_LEAVE_OUT
+submit_solutions_except() {  # FILE_TO_LEAVE_OUT; files as the bare name, headers in their folder
   rm -rf "$root/submission"; mkdir -p "$root/submission"
-  for f in $stage_files; do [ "$f" = "${1:-}" ] || cp "$source_dir/solutions/$f" "$root/submission/$(basename "$f")"; done
+  for f in $stage_files; do
+    [ "$f" = "${1:-}" ] && continue
+    cp "$source_dir/solutions/$f" "$root/submission/$(basename "$f")"
+    for header in "$source_dir/solutions/$(dirname "$f")"/*.h; do
+      [ -f "$header" ] || continue
+      mkdir -p "$root/submission/$(dirname "$f")"; cp "$header" "$root/submission/$(dirname "$f")/"
+    done
+  done
 }
 
 submit_solutions_except ""
