@@ -9,6 +9,11 @@
 // "raylab: stage 05_bvh not implemented yet: testing every primitive (slow)": a student who has not reached stage 5 can still render.
 // When the render will take more than 10 s, the same line says how long at least (timed on a
 // sample of the student's own tests) and suggests a smaller --width/--height.
+//
+// In framework/src/: geometry_build.cpp (the triangle array, the trees, the stub probe),
+// geometry_bvh_adapters.cpp (the primitive tests a traversal calls, and the check of what it
+// returned), geometry_brute_force.cpp (every object in turn, and the slow-render estimate),
+// geometry.cpp (the public queries, and the hit details shading needs).
 #pragma once
 
 #include "raylab/ray.h"
@@ -97,7 +102,9 @@ class SceneGeometry {
 
   void build_bvhs();
   std::string brute_force_estimate(const Ray& sample) const;  // ": ... will take at least N s ..." or ""
-  std::optional<float> intersect_objects(const Ray& ray, Query& query) const;
+  std::optional<float> intersect_objects(const Ray& ray, Query& query) const;  // one of these two:
+  std::optional<float> intersect_objects_through_bvh(const Ray& ray, Query& query) const;
+  std::optional<float> intersect_every_object(const Ray& ray, Query& query) const;
   bool occluded_by_any_object(const Ray& ray, Query& query) const;
   std::optional<float> intersect_object(std::uint32_t object, const Ray& ray, Query& query) const;
   std::optional<float> intersect_mesh(const MeshPart& mesh, const Ray& ray, Query& query) const;

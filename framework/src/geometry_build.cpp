@@ -1,0 +1,122 @@
+// SceneGeometry, part 1 of 4: building. The scene's triangles in one array (per mesh, in
+// its BVH's leaf order), the per-mesh and top-level trees from the student's build_bvh, each
+// checked before use, and a probe that finds out at once whether stages 04 and 05 are stubs.
+// (geometry_bvh_adapters.cpp: queries through the trees; geometry_brute_force.cpp: without
+// them; geometry.cpp: the public queries and the hit details.)
+#include "raylab/geometry.h"
+
+#include "raylab/bvh_tools.h"
+#include "raylab/error.h"
+#include "raylab/stages/04_box.h"
+#include "raylab/stages/05_bvh.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace raylab {
+
+namespace {
+
+// A student's build_bvh may return a tree that would send the traversal out of its arrays:
+// stop with the broken rule in words rather than crash (or render garbage) later.
+void check_tree(const Bvh& bvh, const std::vector<Bounds3>& boxes, const std::string& what) {
+  const std::string problem = bvh_invariant_violation(bvh, boxes, SceneGeometry::kBvhLeafSize);
+  if (!problem.empty())
+    throw std::logic_error("stage 05_bvh: build_bvh over " + std::to_string(boxes.size()) + " boxes (" +
+                           what + ") returned a broken tree: " + problem +
+                           " (the autograder's stage 5 tests say more)");
+}
+
+Bounds3 triangle_bounds(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+  Bounds3 box;
+  box.extend(p0);
+  box.extend(p1);
+  box.extend(p2);
+  return box;
+}
+
+}  // namespace
+
+SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, TriangleTest triangle_test)
+    : scene_(scene), spheres_(scene.spheres),
+      intersect_triangle_(triangle_test == TriangleTest::Watertight ? intersect_ray_triangle_watertight
+                                                                     : intersect_ray_triangle) {
+  for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
+    const TriangleMesh& mesh = scene.meshes[m];
+    MeshPart part;
+    part.first_triangle = static_cast<std::uint32_t>(triangles_.size());
+    for (std::uint32_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+      const Triangle triangle{mesh.positions[mesh.indices[i]], mesh.positions[mesh.indices[i + 1]],
+                              mesh.positions[mesh.indices[i + 2]], m, i};
+      part.bounds.extend(triangle_bounds(triangle.p0, triangle.p1, triangle.p2));
+      triangles_.push_back(triangle);
+    }
+    part.triangle_count = static_cast<std::uint32_t>(triangles_.size()) - part.first_triangle;
+    meshes_.push_back(std::move(part));
+  }
+  if (acceleration == Acceleration::BvhAlways) brute_force_limit_ = 0;
+  if (acceleration != Acceleration::BruteForce) build_bvhs();
+}
+
+void SceneGeometry::build_bvhs() {
+  try {
+    for (MeshPart& mesh : meshes_) {
+      if (mesh.triangle_count <= brute_force_limit_) continue;
+      Triangle* first = triangles_.data() + mesh.first_triangle;
+      std::vector<Bounds3> boxes;
+      boxes.reserve(mesh.triangle_count);
+      for (std::uint32_t i = 0; i < mesh.triangle_count; ++i)
+        boxes.push_back(triangle_bounds(first[i].p0, first[i].p1, first[i].p2));
+      mesh.bvh = build_bvh(boxes, kBvhLeafSize);
+      check_tree(mesh.bvh, boxes, scene_.meshes[first->mesh].name);
+      // Store the triangles in leaf order, so that a leaf's triangles are adjacent in memory;
+      // the BVH's primitive_order then becomes the identity.
+      std::vector<Triangle> reordered;
+      reordered.reserve(mesh.triangle_count);
+      for (std::uint32_t i = 0; i < mesh.triangle_count; ++i) {
+        reordered.push_back(first[mesh.bvh.primitive_order[i]]);
+        mesh.bvh.primitive_order[i] = i;
+      }
+      std::copy(reordered.begin(), reordered.end(), first);
+    }
+    const std::size_t object_count = spheres_.size() + meshes_.size();
+    if (object_count > brute_force_limit_) {
+      std::vector<Bounds3> boxes;
+      boxes.reserve(object_count);
+      for (const Sphere& sphere : spheres_)
+        boxes.emplace_back(sphere.center - glm::vec3(sphere.radius), sphere.center + glm::vec3(sphere.radius));
+      for (const MeshPart& mesh : meshes_) boxes.push_back(mesh.bounds);
+      objects_bvh_ = build_bvh(boxes, kBvhLeafSize);
+      check_tree(objects_bvh_, boxes, "the scene's objects");
+    }
+    // A traversal needs the box test (stage 04_box) and intersect_bvh: find out now, with one
+    // query, whether they are still stubs, rather than in the middle of the render.
+    // The probe's intersector hits nothing, so that only stages 04 and 05 run here.
+    const Bvh* probe_bvh = !objects_bvh_.nodes.empty() ? &objects_bvh_ : nullptr;
+    for (const MeshPart& mesh : meshes_)
+      if (!probe_bvh && !mesh.bvh.nodes.empty()) probe_bvh = &mesh.bvh;
+    if (probe_bvh) {
+      Ray probe;
+      probe.origin = probe_bvh->nodes[0].bounds.centroid();  // inside the root's box
+      probe.direction = glm::vec3(0.0f, 0.0f, 1.0f);
+      (void)intersect_ray_box(probe, ray_direction_inverse_of(probe), probe_bvh->nodes[0].bounds);
+      const PrimitiveIntersector hits_nothing{
+          [](void*, const Ray&, std::uint32_t) -> std::optional<float> { return std::nullopt; }, nullptr};
+      BvhTraversalStats stats;
+      (void)intersect_bvh(*probe_bvh, probe, hits_nothing, /*any_hit=*/false, stats);
+    }
+  } catch (const NotImplemented& error) {
+    for (MeshPart& mesh : meshes_) mesh.bvh = Bvh();
+    objects_bvh_ = Bvh();
+    fallback_stage_ = error.stage_id();
+  }
+}
+
+std::size_t SceneGeometry::bvh_count() const {
+  std::size_t count = objects_bvh_.nodes.empty() ? 0 : 1;
+  for (const MeshPart& mesh : meshes_) count += mesh.bvh.nodes.empty() ? 0 : 1;
+  return count;
+}
+
+}  // namespace raylab

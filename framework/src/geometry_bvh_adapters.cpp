@@ -1,0 +1,122 @@
+// SceneGeometry, part 2 of 4: the queries through the trees. The primitive tests that the
+// student's intersect_bvh calls (PrimitiveIntersector adapters over a mesh's triangles and
+// over the scene's objects), and the check of what a traversal returned against what the
+// tests recorded, so that the framework shades the primitive the traversal returned.
+#include "geometry_query.h"
+
+#include "raylab/stages/02_sphere.h"
+#include "raylab/stages/05_bvh.h"
+
+namespace raylab {
+
+bool SceneGeometry::record_is_of_object(const HitRecord& record, std::uint32_t object, float t_hit) const {
+  if (record.t_hit != t_hit) return false;
+  if (object < spheres_.size()) return record.kind == Kind::Sphere && record.index == object;
+  if (object - spheres_.size() >= meshes_.size()) return false;
+  const MeshPart& mesh = meshes_[object - spheres_.size()];
+  return record.kind == Kind::Triangle && record.index >= mesh.first_triangle &&
+         record.index - mesh.first_triangle < mesh.triangle_count;
+}
+
+// ---- The primitive tests ----------------------------------------------------------------
+// A traversal may call the tests in any order and with any t_max (a correct closest-hit
+// traversal passes the closest hit so far, but one that visits both children with the
+// original t_max also finds the right answer). So a test records a hit's details only when
+// it is closer than the query's record so far, and after a traversal the record is checked
+// against the primitive it returned: the framework shades what the traversal returned.
+
+std::optional<float> SceneGeometry::test_triangle(void* context, const Ray& ray, std::uint32_t triangle) {
+  Query& query = *static_cast<Query*>(context);
+  const Triangle& tri = query.mesh_triangles[triangle];
+  const std::optional<TriangleHit> hit = query.geometry->intersect_triangle_(ray, tri.p0, tri.p1, tri.p2);
+  if (!hit) return std::nullopt;
+  if (hit->t_hit < query.record->t_hit) {
+    query.record->kind = Kind::Triangle;
+    query.record->index = query.mesh_first_triangle + triangle;
+    query.record->t_hit = hit->t_hit;
+    query.record->triangle_hit = *hit;
+  }
+  return hit->t_hit;
+}
+
+std::optional<float> SceneGeometry::test_object(void* context, const Ray& ray, std::uint32_t object) {
+  Query& query = *static_cast<Query*>(context);
+  return query.geometry->intersect_object(object, ray, query);
+}
+
+std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const Ray& ray, Query& query) const {
+  query.mesh_triangles = triangles_.data() + mesh.first_triangle;
+  query.mesh_first_triangle = mesh.first_triangle;
+  if (!mesh.bvh.nodes.empty()) {
+    BvhTraversalStats stats;
+    const PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
+    if (query.any_hit) {
+      const std::optional<BvhHit> hit = intersect_bvh(mesh.bvh, ray, intersector, true, stats);
+      return hit ? std::optional<float>(hit->t_hit) : std::nullopt;
+    }
+    // This mesh's own closest hit is recorded apart from the query's (which may hold a closer
+    // hit on another object, when the traversal over the objects did not lower t_max).
+    HitRecord* const query_record = query.record;
+    HitRecord mesh_record;
+    query.record = &mesh_record;
+    const std::optional<BvhHit> hit = intersect_bvh(mesh.bvh, ray, intersector, false, stats);
+    query.record = query_record;
+    if (!hit || hit->primitive >= mesh.triangle_count) return std::nullopt;
+    const std::uint32_t returned = mesh.first_triangle + hit->primitive;
+    if (mesh_record.kind != Kind::Triangle || mesh_record.index != returned || mesh_record.t_hit != hit->t_hit) {
+      // The traversal returned another triangle than the closest one reported to the test
+      // (a tie, or a traversal that is wrong): shade the one it returned.
+      const Triangle& tri = triangles_[returned];
+      const std::optional<TriangleHit> details = intersect_triangle_(ray, tri.p0, tri.p1, tri.p2);
+      if (!details) return std::nullopt;
+      mesh_record.kind = Kind::Triangle;
+      mesh_record.index = returned;
+      mesh_record.triangle_hit = *details;
+    }
+    mesh_record.t_hit = hit->t_hit;
+    if (hit->t_hit < query_record->t_hit) *query_record = mesh_record;
+    return hit->t_hit;
+  }
+  Ray search = ray;
+  std::optional<float> closest;
+  for (std::uint32_t i = 0; i < mesh.triangle_count; ++i) {
+    if (const std::optional<float> t = test_triangle(&query, search, i)) {
+      search.t_max = *t;
+      closest = t;
+      if (query.any_hit) break;
+    }
+  }
+  return closest;
+}
+
+std::optional<float> SceneGeometry::intersect_object(std::uint32_t object, const Ray& ray, Query& query) const {
+  if (object < spheres_.size()) {
+    const Sphere& sphere = spheres_[object];
+    const std::optional<float> t = intersect_ray_sphere(ray, sphere.center, sphere.radius);
+    if (t && *t < query.record->t_hit) {
+      query.record->kind = Kind::Sphere;
+      query.record->index = object;
+      query.record->t_hit = *t;
+    }
+    return t;
+  }
+  return intersect_mesh(meshes_[object - spheres_.size()], ray, query);
+}
+
+std::optional<float> SceneGeometry::intersect_objects_through_bvh(const Ray& ray, Query& query) const {
+  BvhTraversalStats stats;
+  const PrimitiveIntersector intersector{&SceneGeometry::test_object, &query};
+  const std::optional<BvhHit> hit = intersect_bvh(objects_bvh_, ray, intersector, query.any_hit, stats);
+  if (!hit || query.any_hit) return hit ? std::optional<float>(hit->t_hit) : std::nullopt;
+  if (!record_is_of_object(*query.record, hit->primitive, hit->t_hit)) {
+    // Not the object whose hit the tests recorded as the closest: shade the returned one.
+    HitRecord returned;
+    Query again{this, &returned, /*any_hit=*/false};
+    if (hit->primitive >= spheres_.size() + meshes_.size() || !intersect_object(hit->primitive, ray, again))
+      return std::nullopt;
+    *query.record = returned;
+  }
+  return hit->t_hit;
+}
+
+}  // namespace raylab

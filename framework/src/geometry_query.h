@@ -1,0 +1,27 @@
+// What the files of SceneGeometry share (framework/src/geometry*.cpp), private to them.
+#pragma once
+
+#include "raylab/geometry.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace raylab {
+
+// What the primitive tests of one query share (the `void* context` of PrimitiveIntersector).
+struct SceneGeometry::Query {
+  const SceneGeometry* geometry;
+  HitRecord* record;
+  bool any_hit;
+  const Triangle* mesh_triangles = nullptr;  // the mesh being traversed: its first triangle
+  std::uint32_t mesh_first_triangle = 0;     // ... and that triangle's index in triangles_
+};
+
+// Through the top-level BVH (geometry_bvh_adapters.cpp), or without one, every object in turn
+// (geometry_brute_force.cpp). Inline, so that the public queries call either directly.
+inline std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& query) const {
+  if (!objects_bvh_.nodes.empty()) return intersect_objects_through_bvh(ray, query);
+  return intersect_every_object(ray, query);
+}
+
+}  // namespace raylab
