@@ -1,67 +1,19 @@
 // Grader self-test submission (stage 07_sampling): the disk's radius drawn uniformly (r = u, a square
 // root missing): the points crowd the centre. Only the disk's density tests may fail; the cosine
-// hemisphere here does not use the disk.
-#include "raylab/stages/07_sampling.h"
-
-#include "raylab/math.h"
-
-#include <algorithm>
-#include <cmath>
+// hemisphere here (the reference's) lifts the reference's disk, not this one.
+// The reference file is included with this function renamed, so only it differs.
+#define sample_uniform_disk honest_sample_uniform_disk
+#include "../../solutions/07_sampling/sampling.cpp"
+#undef sample_uniform_disk
 
 namespace raylab {
 
-glm::vec3 sample_uniform_hemisphere(glm::vec2 uniform_random) {
-  // z = cos(theta) is uniform in [0, 1] (Archimedes: equal heights, equal areas).
-  const float z = 1.0f - uniform_random.x;  // in (0, 1]
-  const float radius = std::sqrt(std::max(0.0f, 1.0f - z * z));
-  const float phi = 2.0f * kPi * uniform_random.y;
-  return glm::vec3(radius * std::cos(phi), radius * std::sin(phi), z);
-}
-
-float uniform_hemisphere_pdf(const glm::vec3& direction) { return direction.z >= 0.0f ? 1.0f / (2.0f * kPi) : 0.0f; }
-
-glm::vec3 sample_cosine_hemisphere(glm::vec2 uniform_random) {
-  // z^2 uniform (the marginal density of z is 2z).
-  const float z = std::sqrt(uniform_random.x);
-  const float radius = std::sqrt(std::max(0.0f, 1.0f - z * z));
-  const float phi = 2.0f * kPi * uniform_random.y;
-  return glm::vec3(radius * std::cos(phi), radius * std::sin(phi), z);
-}
-
-float cosine_hemisphere_pdf(const glm::vec3& direction) { return direction.z > 0.0f ? direction.z / kPi : 0.0f; }
-
-glm::vec3 sample_uniform_sphere(glm::vec2 uniform_random) {
-  const float z = 1.0f - 2.0f * uniform_random.x;  // in (-1, 1]
-  const float radius = std::sqrt(std::max(0.0f, 1.0f - z * z));
-  const float phi = 2.0f * kPi * uniform_random.y;
-  return glm::vec3(radius * std::cos(phi), radius * std::sin(phi), z);
-}
-
-float uniform_sphere_pdf(const glm::vec3& direction) {
-  (void)direction;  // the same for every direction
-  return 1.0f / (4.0f * kPi);
-}
+glm::vec2 sample_uniform_disk(glm::vec2 uniform_random);
 
 glm::vec2 sample_uniform_disk(glm::vec2 uniform_random) {
-  // Shirley and Chiu's concentric map: squares around the centre go to rings, so strata of
-  // the unit square stay compact on the disk.
   const float radius = uniform_random.x;  // the mistake: sqrt(uniform_random.x)
   const float phi = 2.0f * kPi * uniform_random.y;
   return radius * glm::vec2(std::cos(phi), std::sin(phi));
-}
-
-float uniform_disk_pdf(glm::vec2 point) { return glm::dot(point, point) <= 1.0f ? 1.0f / kPi : 0.0f; }
-
-Barycentrics sample_uniform_triangle(glm::vec2 uniform_random) {
-  // The square-root warp (pbrt-v4, section A.5.5): sqrt(u.x) is the distance from p0 towards
-  // the opposite edge (area grows with its square), u.y the position along that edge.
-  const float root = std::sqrt(uniform_random.x);
-  return Barycentrics{root * (1.0f - uniform_random.y), root * uniform_random.y};
-}
-
-float uniform_triangle_pdf(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
-  const float twice_area = glm::length(glm::cross(p1 - p0, p2 - p0));
-  return twice_area > 0.0f ? 2.0f / twice_area : 0.0f;
 }
 
 }  // namespace raylab

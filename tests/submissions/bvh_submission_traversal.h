@@ -1,0 +1,78 @@
+// The traversal that several stage-05 self-test submissions share: the course's stack
+// traversal (the near child entered first, the far one pushed, t_max lowered after each hit,
+// one loop for closest and any hit), with each submission's mistake as a flag. Without flags
+// it is correct; each flag is one mistake a student makes, and its self-test checks the
+// grader's verdict and hint for it (tests/submissions/CMakeLists.txt).
+#pragma once
+
+#include "raylab/stages/04_box.h"
+#include "raylab/stages/05_bvh.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace raylab::submission {
+
+struct TraversalMistakes {
+  bool far_child_first = false;             // enters the far child and pushes the near one
+  bool leaf_position_as_primitive = false;  // tests primitive i (the leaf position), not primitive_order[i]
+  bool t_max_not_lowered = false;           // keeps the closest hit by comparison; search.t_max stays
+};
+
+inline std::optional<BvhHit> traverse_bvh(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
+                                          bool any_hit, BvhTraversalStats& stats, TraversalMistakes mistakes) {
+  if (bvh.nodes.empty()) return std::nullopt;
+  const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
+  // 1 / -0 = -infinity < 0: a -0 component counts as negative, consistently with the box test.
+  const bool direction_negative[3] = {ray_direction_inverse.x < 0.0f,
+                                      ray_direction_inverse.y < 0.0f,
+                                      ray_direction_inverse.z < 0.0f};
+  const BvhNode* nodes = bvh.nodes.data();
+  const std::uint32_t* primitive_order = bvh.primitive_order.data();
+
+  Ray search = ray;
+  std::optional<BvhHit> closest;
+  std::uint32_t stack[kBvhMaxDepth];
+  int stack_size = 0;
+  std::uint32_t node_index = 0;
+  std::uint64_t nodes_visited = 0, primitives_tested = 0;  // locals: kept in registers
+
+  for (;;) {
+    const BvhNode& node = nodes[node_index];
+    ++nodes_visited;
+    if (intersect_ray_box(search, ray_direction_inverse, node.bounds)) {
+      if (!node.is_leaf()) {
+        // The second child is the nearer one when the ray runs towards -split_axis.
+        const bool enter_second = direction_negative[node.split_axis] != mistakes.far_child_first;
+        stack[stack_size++] = node.first_index + (enter_second ? 0u : 1u);  // visited later
+        node_index = node.first_index + (enter_second ? 1u : 0u);
+        continue;
+      }
+      const std::uint32_t leaf_end = node.first_index + node.primitive_count;
+      for (std::uint32_t i = node.first_index; i < leaf_end; ++i) {
+        const std::uint32_t primitive = mistakes.leaf_position_as_primitive ? i : primitive_order[i];
+        ++primitives_tested;
+        if (const std::optional<float> t = intersector.test(intersector.context, search, primitive)) {
+          if (mistakes.t_max_not_lowered) {
+            if (!closest || *t < closest->t_hit) closest = BvhHit{*t, primitive};
+          } else {
+            search.t_max = *t;
+            closest = BvhHit{*t, primitive};
+          }
+          if (any_hit) {
+            stack_size = 0;  // done: fall through to the exit below
+            break;
+          }
+        }
+      }
+      if (any_hit && closest) break;
+    }
+    if (stack_size == 0) break;
+    node_index = stack[--stack_size];
+  }
+  stats.nodes_visited += nodes_visited;
+  stats.primitives_tested += primitives_tested;
+  return closest;
+}
+
+}  // namespace raylab::submission
