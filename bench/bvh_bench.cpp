@@ -26,6 +26,7 @@
 #include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
 #include "raylab/testkit/random_values.h"
+#include "raylab/testkit/triangles.h"
 
 #include <benchmark/benchmark.h>
 
@@ -171,15 +172,12 @@ void trace_brute_force(const TestMesh& mesh, const std::vector<Ray>& rays, bool 
   TriangleContext context{mesh.corners.data(), {}};
   const auto count = static_cast<std::uint32_t>(mesh.triangle_count());
   for (std::size_t i = 0; i < rays.size(); i += kBruteForceStride) {
-    Ray search = rays[i];
-    float t_best = kInfinity;
-    for (std::uint32_t triangle = 0; triangle < count; ++triangle) {
-      ++stats.primitives_tested;
-      if (const std::optional<float> t = test_triangle(&context, search, triangle)) {
-        search.t_max = t_best = *t;
-        if (any_hit) break;
-      }
-    }
+    const std::optional<BvhHit> best =
+        testkit::brute_force_hit(count, rays[i], any_hit, [&](const Ray& search, std::uint32_t triangle) {
+          ++stats.primitives_tested;
+          return test_triangle(&context, search, triangle);
+        });
+    const float t_best = best ? best->t_hit : kInfinity;
     if (t_out) t_out[i] = t_best;
     benchmark::DoNotOptimize(t_best);
   }

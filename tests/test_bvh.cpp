@@ -5,6 +5,7 @@
 #include "raylab/stages/03_triangle.h"
 #include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
+#include "raylab/testkit/triangles.h"
 
 #include <gtest/gtest.h>
 
@@ -37,27 +38,6 @@ const Mesh& large_mesh() {
   return mesh;
 }
 
-struct MeshContext {
-  const Mesh* mesh;
-};
-
-std::optional<float> test_triangle(void* context, const Ray& ray, std::uint32_t triangle) {
-  const Mesh& mesh = *static_cast<MeshContext*>(context)->mesh;
-  const auto hit = intersect_ray_triangle(ray, mesh.corner(triangle, 0), mesh.corner(triangle, 1), mesh.corner(triangle, 2));
-  if (!hit) return std::nullopt;
-  return hit->t_hit;
-}
-
-std::optional<float> brute_force(const Mesh& mesh, Ray ray) {
-  std::optional<float> closest;
-  for (std::uint32_t t = 0; t < mesh.boxes.size(); ++t)
-    if (const auto hit = intersect_ray_triangle(ray, mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2))) {
-      ray.t_max = hit->t_hit;
-      closest = hit->t_hit;
-    }
-  return closest;
-}
-
 void expect_sound_tree(const Bvh& bvh, const char* builder) {
   const Mesh& mesh = large_mesh();
   EXPECT_EQ(bvh_invariant_violation(bvh, mesh.boxes, kLeafSize), "") << builder;
@@ -67,8 +47,8 @@ void expect_sound_tree(const Bvh& bvh, const char* builder) {
   EXPECT_EQ(bvh.nodes.size(), 2 * leaves - 1) << builder;
 
   // Closest hits of rays from outside towards the sphere, and random ones from inside.
-  MeshContext context{&mesh};
-  const PrimitiveIntersector intersector{&test_triangle, &context};
+  const testkit::IndexedTriangles triangles{&mesh.triangles.positions, &mesh.triangles.indices, &intersect_ray_triangle};
+  const PrimitiveIntersector intersector = testkit::intersector_over(triangles);
   std::mt19937 random(5);
   std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
   int differences = 0;
@@ -80,12 +60,13 @@ void expect_sound_tree(const Bvh& bvh, const char* builder) {
     ray.direction = glm::normalize(r % 2 ? glm::vec3(uniform(random), uniform(random), uniform(random)) : target - ray.origin);
     BvhTraversalStats stats;
     const std::optional<BvhHit> got = intersect_bvh(bvh, ray, intersector, false, stats);
-    const std::optional<float> expected = brute_force(mesh, ray);
-    const bool same = got.has_value() == expected.has_value() && (!got || got->t_hit == *expected);
+    const std::optional<BvhHit> expected =
+        testkit::brute_force_hit(intersector, static_cast<std::uint32_t>(mesh.boxes.size()), ray);
+    const bool same = got.has_value() == expected.has_value() && (!got || got->t_hit == expected->t_hit);
     if (!same) ++differences;
     EXPECT_TRUE(same) << builder << ", ray " << r << ": " << ray << ": BVH "
                       << (got ? std::to_string(got->t_hit) : "no hit") << ", brute force "
-                      << (expected ? std::to_string(*expected) : "no hit");
+                      << (expected ? std::to_string(expected->t_hit) : "no hit");
     if (differences > 3) return;
   }
 }

@@ -6,6 +6,7 @@
 // distance 1, so with fov 90 it spans y in [-1, 1] and x in [-aspect, aspect].
 #include "raylab/camera.h"
 #include "raylab/stages/01_camera_rays.h"
+#include "raylab/testkit/cameras.h"
 
 #include "test_helpers.h"
 
@@ -23,13 +24,7 @@ using testing::vec3_near;
 constexpr float kTolerance = 1e-6f;
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-Camera make_camera(int width, int height, float fov_y_degrees) {
-  Camera camera;
-  camera.width = width;
-  camera.height = height;
-  camera.fov_y_degrees = fov_y_degrees;
-  return camera;
-}
+using testkit::make_camera;
 
 TEST(CameraRays, CentreRayOfOddImagePointsAtLookAt) {
   // An odd width and height put a pixel centre exactly on the optical axis. The camera is

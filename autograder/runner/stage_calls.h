@@ -7,6 +7,7 @@
 
 #include "raylab/image.h"
 #include "raylab/stages/03_triangle.h"
+#include "raylab/testkit/triangles.h"
 #include "raylab/testkit/warps.h"
 
 #include <optional>
@@ -15,8 +16,7 @@
 
 namespace raylab::grading {
 
-using TriangleFunction = std::optional<TriangleHit> (*)(const Ray&, const glm::vec3&, const glm::vec3&,
-                                                        const glm::vec3&);
+using testkit::TriangleFunction;  // intersect_ray_triangle or intersect_ray_triangle_watertight
 
 // For each ray i, the triangles (indices into `triangles`) among candidates[i] that
 // function(ray, p0, p1, p2) reports a hit for; every triangle is a candidate when `candidates` is

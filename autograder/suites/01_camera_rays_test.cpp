@@ -3,6 +3,7 @@
 #include "support.h"
 
 #include "raylab/stages/01_camera_rays.h"
+#include "raylab/testkit/cameras.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,13 +20,7 @@ const bool kRegistered = register_stage(kStage, [] { (void)generate_camera_ray(C
 
 constexpr float kDirectionTolerance = 1e-4f;
 
-Camera make_camera(int width, int height, float fov_y_degrees) {
-  Camera camera;
-  camera.width = width;
-  camera.height = height;
-  camera.fov_y_degrees = fov_y_degrees;
-  return camera;
-}
+using testkit::make_camera;
 
 bool same_direction(const glm::vec3& a, const glm::vec3& b, float tolerance) {
   const float la = glm::length(a), lb = glm::length(b);

@@ -22,6 +22,7 @@
 #include "raylab/stages/03_triangle.h"
 #include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/04_box.h"
+#include "raylab/testkit/leaks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -157,78 +158,44 @@ GRADED_TEST(kStage, Stage06Robustness, WatertightMatchesStage03Answers, 3) {
                  {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())}}});
 }
 
-// A closed mesh: every edge is shared by exactly two triangles.
-struct Mesh {
-  std::string name;
-  std::vector<glm::vec3> positions;
-  std::vector<std::uint32_t> indices;
-  glm::vec3 center{0.0f};
-  float inner_radius = 0.0f;  // a ball around center inside the mesh
-};
-
-Mesh closed(TriangleMesh generated, const std::string& description, glm::vec3 center, float inner_radius) {
-  return Mesh{description + " of " + std::to_string(generated.triangle_count()) + " triangles",
-              std::move(generated.positions), std::move(generated.indices), center, inner_radius};
+// The closed meshes of the leak tests (raylab/testkit/leaks.h), named for the report.
+testkit::ClosedMesh named(testkit::ClosedMesh mesh, const std::string& description) {
+  mesh.name = description + " of " + std::to_string(mesh.triangle_count()) + " triangles";
+  return mesh;
 }
 
-Mesh icosphere(int levels, float radius, glm::vec3 center) {
-  return closed(make_icosphere(levels, radius, center), "a sphere", center, 0.5f * radius);
+testkit::ClosedMesh icosphere(int levels, float radius, glm::vec3 center) {
+  return named(testkit::closed_icosphere(levels, radius, center), "a sphere");
 }
 
-Mesh grid_cube(int n, float half, glm::vec3 center) {
-  return closed(make_grid_cube(n, half, center), "a cube", center, 0.5f * half);
+testkit::ClosedMesh grid_cube(int n, float half, glm::vec3 center) {
+  return named(testkit::closed_grid_cube(n, half, center), "a cube");
 }
 
-using TriangleTest = std::optional<TriangleHit> (*)(const Ray&, const glm::vec3&, const glm::vec3&, const glm::vec3&);
-
-// Rays from inside the mesh aimed at points on its edges (half) and exactly at its vertices
-// (half): each must hit some triangle. Returns the rays that hit none; the first is kept.
-// The stage calls go in two batches (stage_calls.h): every ray against the triangles around
-// the two vertices of its edge, then each ray that none of those hits against every triangle.
-int count_leaks(const Mesh& mesh, TriangleTest test, int rays, std::uint32_t seed, Ray* first_leak) {
-  std::vector<std::vector<std::uint32_t>> around(mesh.positions.size());
+// testkit::count_leaks with your triangle test, called in the stage server in batches
+// (stage_calls.h): every ray against the triangles around the two vertices of its edge, then
+// each ray that none of those hits against every triangle.
+testkit::LeakCount count_leaks(const testkit::ClosedMesh& mesh, TriangleFunction test, int rays, std::uint32_t seed) {
   std::vector<protocol::Triangle> triangles;
-  for (std::size_t t = 0; t * 3 + 2 < mesh.indices.size(); ++t) {
+  for (std::size_t t = 0; t * 3 + 2 < mesh.indices.size(); ++t)
     triangles.push_back({mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
                          mesh.positions[mesh.indices[3 * t + 2]]});
-    for (int k = 0; k < 3; ++k) around[mesh.indices[3 * t + k]].push_back(static_cast<std::uint32_t>(t));
-  }
   Pcg32 random(seed, testkit::stream_of("leak rays"));
-  std::vector<Ray> all_rays;
-  std::vector<std::vector<std::uint32_t>> near;  // per ray: the triangles around its edge's vertices
-  for (int r = 0; r < rays; ++r) {
-    const auto t = static_cast<std::uint32_t>(testkit::random_integer(random, 0, static_cast<int>(triangles.size()) - 1));
-    const int k = testkit::random_integer(random, 0, 2);
-    const std::uint32_t a = mesh.indices[3 * t + k], b = mesh.indices[3 * t + (k + 1) % 3];
-    const glm::vec3 target = r % 2 == 0 ? glm::mix(mesh.positions[a], mesh.positions[b], random.uniform(0, 1)) : mesh.positions[a];
-    glm::vec3 offset = testkit::random_vec3(random, -1, 1);
-    if (glm::length(offset) > 1.0f) offset /= glm::length(offset) * 1.01f;
-    Ray ray = make_ray(mesh.center + 0.9f * mesh.inner_radius * offset, glm::vec3(0.0f));
-    ray.direction = target - ray.origin;
-    all_rays.push_back(ray);
-    near.push_back(around[a]);
-    near.back().insert(near.back().end(), around[b].begin(), around[b].end());
-  }
-  const auto near_hits = triangles_hit(test, triangles, all_rays, near);
-  std::vector<Ray> missed;
-  for (int r = 0; r < rays; ++r)
-    if (near_hits[r].empty()) missed.push_back(all_rays[r]);
-  if (missed.empty()) return 0;
-  const auto all_hits = triangles_hit(test, triangles, missed, {});
-  int leaks = 0;
-  for (std::size_t m = 0; m < missed.size(); ++m)
-    if (all_hits[m].empty() && ++leaks == 1 && first_leak) *first_leak = missed[m];
-  return leaks;
+  return testkit::count_leaks(mesh, static_cast<std::uint64_t>(rays), random,
+                              [&](const std::vector<Ray>& batch, const std::vector<std::vector<std::uint32_t>>& candidates) {
+                                return triangles_hit(test, triangles, batch, candidates);
+                              });
 }
 
 constexpr int kLeakRays = 100000;
 
 GRADED_TEST(kStage, Stage06Robustness, NoRayLeaksThroughClosedMeshes, 6) {
   constexpr int kRays = kLeakRays;
-  const Mesh meshes[] = {icosphere(3, 1.0f, glm::vec3(0.1f, -0.2f, 0.3f)), grid_cube(8, 1.0f, glm::vec3(0.0f))};
-  for (const Mesh& mesh : meshes) {
-    Ray first_leak;
-    const int leaks = count_leaks(mesh, &intersect_ray_triangle_watertight, kRays, 6, &first_leak);
+  const testkit::ClosedMesh meshes[] = {icosphere(3, 1.0f, glm::vec3(0.1f, -0.2f, 0.3f)), grid_cube(8, 1.0f, glm::vec3(0.0f))};
+  for (const testkit::ClosedMesh& mesh : meshes) {
+    const testkit::LeakCount count = count_leaks(mesh, &intersect_ray_triangle_watertight, kRays, 6);
+    const std::uint64_t leaks = count.leaks;
+    const Ray first_leak = count.first_leak.value_or(Ray());
     add_note({MessageId::note_watertight_leaks,
               {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kRays)}}});
     if (leaks > 0) {
@@ -392,9 +359,9 @@ GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
 // For information only (0 points), and last, so that a stage 03 that crashes or hangs costs
 // nothing here: how many of the same rays your stage 03 intersect_ray_triangle lets through.
 GRADED_TEST(kStage, Stage06Robustness, ForComparisonYourStage03Leaks, 0) {
-  for (const Mesh& mesh : {icosphere(3, 1.0f, glm::vec3(0.1f, -0.2f, 0.3f)), grid_cube(8, 1.0f, glm::vec3(0.0f))}) {
+  for (const testkit::ClosedMesh& mesh : {icosphere(3, 1.0f, glm::vec3(0.1f, -0.2f, 0.3f)), grid_cube(8, 1.0f, glm::vec3(0.0f))}) {
     try {
-      const int leaks = count_leaks(mesh, &intersect_ray_triangle, kLeakRays, 6, nullptr);
+      const std::uint64_t leaks = count_leaks(mesh, &intersect_ray_triangle, kLeakRays, 6).leaks;
       add_note({MessageId::note_stage03_leaks,
                 {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kLeakRays)}}});
     } catch (const NotImplemented&) {

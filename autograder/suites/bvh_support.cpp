@@ -4,6 +4,7 @@
 
 #include "raylab/scene_loader.h"
 #include "raylab/stages/04_box.h"
+#include "raylab/testkit/triangles.h"
 
 #include <gtest/gtest.h>
 
@@ -82,14 +83,7 @@ PrimitiveIntersector intersector_for(const TestMesh& mesh) {
 }
 
 std::optional<BvhHit> brute_force_closest(const TestMesh& mesh, const Ray& ray) {
-  Ray search = ray;
-  std::optional<BvhHit> best;
-  for (std::uint32_t i = 0; i < mesh.triangles.size(); ++i)
-    if (const auto t = test_triangle(mesh, search, i)) {
-      search.t_max = *t;
-      best = BvhHit{*t, i};
-    }
-  return best;
+  return testkit::brute_force_hit(intersector_for(mesh), static_cast<std::uint32_t>(mesh.triangles.size()), ray);
 }
 
 std::vector<Ray> rays_at(const TestMesh& mesh, int count, std::uint32_t seed, bool axis_aligned) {

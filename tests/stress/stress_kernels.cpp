@@ -255,26 +255,12 @@ std::vector<TriangleCase> triangle_cases(const std::string& set, int count, std:
 
 // ---- Closed meshes ----------------------------------------------------------------------
 
-namespace {
-
-ClosedMesh closed(TriangleMesh mesh, const glm::vec3& inside, float inside_radius) {
-  ClosedMesh closed_mesh;
-  closed_mesh.name = std::move(mesh.name);
-  closed_mesh.positions = std::move(mesh.positions);
-  closed_mesh.indices = std::move(mesh.indices);
-  closed_mesh.inside = inside;
-  closed_mesh.inside_radius = inside_radius;
-  return closed_mesh;
-}
-
-}  // namespace
-
 ClosedMesh make_icosphere(int levels, float radius, const glm::vec3& center) {
-  return closed(raylab::make_icosphere(levels, radius, center), center, 0.5f * radius);
+  return testkit::closed_icosphere(levels, radius, center);
 }
 
 ClosedMesh make_grid_cube(int n, float half_size, const glm::vec3& center) {
-  ClosedMesh mesh = closed(raylab::make_grid_cube(n, half_size, center), center, 0.5f * half_size);
+  ClosedMesh mesh = testkit::closed_grid_cube(n, half_size, center);
   if (glm::length(center) > 1e3f) mesh.name += "_far";
   return mesh;
 }
@@ -306,34 +292,8 @@ std::vector<ClosedMesh> leak_test_meshes() {
 }
 
 LeakCount count_leaks(const ClosedMesh& mesh, TriangleKernel kernel, std::uint64_t rays, std::uint64_t seed) {
-  // Which triangles touch each vertex (the candidates for a ray aimed at it or at its edges).
-  std::vector<std::vector<std::uint32_t>> around_vertex(mesh.positions.size());
-  for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t)
-    for (int k = 0; k < 3; ++k) around_vertex[mesh.indices[3 * t + k]].push_back(t);
-  auto corner = [&](std::uint32_t t, int k) { return mesh.positions[mesh.indices[3 * t + k]]; };
-  auto hits = [&](const Ray& ray, std::uint32_t t) {
-    return kernel(ray, corner(t, 0), corner(t, 1), corner(t, 2)).has_value();
-  };
-
   Pcg32 random(seed);
-  LeakCount count;
-  for (std::uint64_t r = 0; r < rays; ++r) {
-    const auto triangle = static_cast<std::uint32_t>(random.next_bounded(static_cast<std::uint32_t>(mesh.triangle_count())));
-    const int k = random_integer(random, 0, 2);
-    const std::uint32_t a = mesh.indices[3 * triangle + k], b = mesh.indices[3 * triangle + (k + 1) % 3];
-    glm::vec3 target = mesh.positions[a];
-    if (r % 2 == 0) target = glm::mix(mesh.positions[a], mesh.positions[b], random.uniform(0.0f, 1.0f));
-    Ray ray;
-    ray.origin = mesh.inside + random.uniform(0.0f, 0.9f) * mesh.inside_radius * random_unit_vector(random);
-    ray.direction = target - ray.origin;
-    ++count.rays;
-    bool hit = false;
-    for (std::uint32_t t : around_vertex[a]) hit = hit || hits(ray, t);
-    for (std::uint32_t t : around_vertex[b]) hit = hit || hits(ray, t);
-    for (std::uint32_t t = 0; !hit && t < mesh.triangle_count(); ++t) hit = hits(ray, t);
-    if (!hit) ++count.leaks;
-  }
-  return count;
+  return testkit::count_leaks(mesh, rays, random, testkit::triangles_hit_by(mesh, kernel));
 }
 
 // ---- Ray-box ----------------------------------------------------------------------------

@@ -1,8 +1,8 @@
 // The stress suite's tools, shared with bench/kernels_bench.cpp: baseline kernels that the
 // reference stages are compared with (the textbook sphere quadratic, Cramer's rule, a plain
 // slab test, fixed-epsilon ray offsets), high-precision references (long double; the sphere's
-// is the test kit's, raylab/testkit/oracles.h), closed test
-// meshes, adversarial input sets, and error statistics.
+// is the test kit's, raylab/testkit/oracles.h), closed test meshes and the leak count (the
+// test kit's, raylab/testkit/leaks.h), adversarial input sets, and error statistics.
 //
 // The baselines are (partly) valid stage solutions, so they live only here and in bench/,
 // which the student release leaves out (tools/make-release), never in framework/ or
@@ -12,6 +12,7 @@
 #include "raylab/bounds.h"
 #include "raylab/ray.h"
 #include "raylab/stages/03_triangle.h"
+#include "raylab/testkit/leaks.h"
 #include "raylab/testkit/random_values.h"
 
 #include <cstdint>
@@ -88,8 +89,7 @@ struct TriangleReference {
 TriangleReference triangle_reference(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1,
                                      const glm::vec3& p2, long double margin = 1e-4L);
 
-using TriangleKernel = std::optional<TriangleHit> (*)(const Ray&, const glm::vec3&, const glm::vec3&,
-                                                      const glm::vec3&);
+using TriangleKernel = testkit::TriangleFunction;
 struct NamedTriangleKernel {
   const char* name;
   TriangleKernel kernel;
@@ -112,15 +112,11 @@ std::vector<TriangleCase> triangle_cases(const std::string& set, int count, std:
 const std::vector<std::string>& triangle_case_sets();
 
 // ---- Closed meshes and leaks ------------------------------------------------------------
+// The closed meshes and the leak count are the test kit's (raylab/testkit/leaks.h), shared
+// with the autograder's stage 06_robustness.
 
-struct ClosedMesh {
-  std::string name;
-  std::vector<glm::vec3> positions;
-  std::vector<std::uint32_t> indices;  // 3 per triangle, outward winding, every edge shared twice
-  glm::vec3 inside{0.0f};              // a point well inside
-  float inside_radius = 0.0f;          // a ball around `inside` that is inside too
-  std::size_t triangle_count() const { return indices.size() / 3; }
-};
+using testkit::ClosedMesh;
+using testkit::LeakCount;
 
 // An icosahedron subdivided `levels` times, on a sphere (20 * 4^levels triangles).
 ClosedMesh make_icosphere(int levels, float radius, const glm::vec3& center);
@@ -132,14 +128,7 @@ ClosedMesh make_sliver_bipyramid(int segments, float radius, float height, const
 // sliver bipyramid.
 std::vector<ClosedMesh> leak_test_meshes();
 
-// Rays from inside the mesh aimed at its shared edges and vertices: a ray that hits none of
-// the mesh's triangles leaked. Half aim at a point on an edge (a float lerp of its ends),
-// half exactly at a vertex. Each test ray tries the triangles around the target first and
-// only when none is hit every triangle, so that the count is exact.
-struct LeakCount {
-  std::uint64_t rays = 0, leaks = 0;
-  double per_million() const { return rays ? 1e6 * double(leaks) / double(rays) : 0.0; }
-};
+// testkit::count_leaks with `kernel` in this process, `rays` rays from Pcg32(seed).
 LeakCount count_leaks(const ClosedMesh& mesh, TriangleKernel kernel, std::uint64_t rays,
                       std::uint64_t seed);
 

@@ -23,6 +23,7 @@
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
 #include "raylab/testkit/oracles.h"
+#include "raylab/testkit/triangles.h"
 
 #include <gtest/gtest.h>
 
@@ -259,18 +260,8 @@ BoxProbe probe_boxes(const ClosedMesh& mesh, std::uint64_t rays, std::uint64_t s
     for (int k = 0; k < 3; ++k) boxes[t].extend(corner(t, k));
   const Bvh bvh = build_bvh(boxes, 2);
 
-  struct Context {
-    const ClosedMesh* mesh;
-  } context{&mesh};
-  PrimitiveIntersector intersector;
-  intersector.context = &context;
-  intersector.test = [](void* raw, const Ray& ray, std::uint32_t t) -> std::optional<float> {
-    const ClosedMesh& m = *static_cast<Context*>(raw)->mesh;
-    const auto hit = intersect_ray_triangle_watertight(ray, m.positions[m.indices[3 * t]], m.positions[m.indices[3 * t + 1]],
-                                                       m.positions[m.indices[3 * t + 2]]);
-    if (!hit) return std::nullopt;
-    return hit->t_hit;
-  };
+  const testkit::IndexedTriangles watertight{&mesh.positions, &mesh.indices, &intersect_ray_triangle_watertight};
+  const PrimitiveIntersector intersector = testkit::intersector_over(watertight);
 
   Pcg32 random(seed);
   BoxProbe probe;
