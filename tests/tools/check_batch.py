@@ -6,7 +6,8 @@
   hostile      hostile_forges_results.cpp as its camera: forges results.json, overwrites the reference
                data, prints a fake score table                    exactly what "broken" scores
 and per student only the stage files are compiled and one stage server linked (the framework and
-the judge are built once), and the gradebook (CSV and JSON) says all of it.
+the judge are built once), a symbolic link in a submission is not followed, and the gradebook
+(CSV and JSON) says all of it.
 Usage: check_batch.py SOURCE_DIR BUILD_DIR WORK_DIR"""
 import csv
 import json
@@ -56,6 +57,9 @@ broken_camera = read(os.path.join(source, "tests/submissions/camera_y_not_flippe
 hand_in("correct")
 with open(os.path.join(submissions, "correct", "notes.txt"), "w") as f:
     f.write("a file the grader ignores\n")
+# A link to a file of the machine's, named like a header: never read.
+os.makedirs(os.path.join(submissions, "correct", "01_camera_rays"), exist_ok=True)
+os.symlink("/etc/hostname", os.path.join(submissions, "correct", "01_camera_rays", "secret.h"))
 hand_in("broken", {camera: (broken_camera, {})})
 hand_in("no_compile", {"04_box/box.cpp": ("this is not C++\n", {})})
 # The hostile camera includes its honest twin and hostile.h beside it: handed in as headers.
@@ -94,22 +98,23 @@ if not (broken.get("status") == "graded" and broken["stages"]["01_camera_rays"] 
     problems.append(f"the broken camera scored {broken.get('stages')} ({broken.get('status')}); expected to lose stage 01 only")
 if hostile_row.get("status") != "graded" or hostile_row.get("stages") != broken.get("stages"):
     problems.append(f"the hostile camera scored {hostile_row.get('stages')}, its honest twin {broken.get('stages')}")
-results = os.path.join(out, "hostile", "results.json")
+results = os.path.join(out, "students", "hostile", "results.json")
 if os.path.islink(results) or '"forged"' in read(results) or json.loads(read(results))["score"] != hostile_row.get("score"):
     problems.append("the hostile student's results.json is not the judge's")
 if no_compile.get("status") != "build failed" or no_compile.get("score") != 0 or no_compile.get("max_score") != full:
     problems.append(f"the code that does not compile: {no_compile}")
-if "error" not in read(os.path.join(out, "no_compile", "build.log")):
+if "error" not in read(os.path.join(out, "students", "no_compile", "build.log")):
     problems.append("no_compile's build.log does not show the compiler's errors")
-if "ignored notes.txt" not in read(os.path.join(out, "correct", "build.log")):
-    problems.append("correct's build.log does not say notes.txt was ignored")
+correct_log = read(os.path.join(out, "students", "correct", "build.log"))
+if "ignored notes.txt" not in correct_log or "ignored 01_camera_rays/secret.h (a symbolic link" not in correct_log:
+    problems.append("correct's build.log does not say notes.txt and the link secret.h were ignored")
 # Per student: one compile per stage file and one link, nothing of the framework.
 for name in ("correct", "broken", "hostile"):
-    commands = [line for line in read(os.path.join(out, name, "build.log")).splitlines() if line.startswith("$ ")]
+    commands = [line for line in read(os.path.join(out, "students", name, "build.log")).splitlines() if line.startswith("$ ")]
     if len(commands) != len(files) + 1 or any("framework/src" in c for c in commands):
         problems.append(f"{name}: {len(commands)} build commands, expected {len(files)} stage files and 1 link")
     for report in ("results.json", "grader.log", "output"):
-        if not os.path.exists(os.path.join(out, name, report)):
+        if not os.path.exists(os.path.join(out, "students", name, report)):
             problems.append(f"{name}: no {report}")
 if not book["run"]["submissions_per_minute"] > 0:
     problems.append("the gradebook does not give the throughput")
