@@ -2,6 +2,7 @@
 // grades the stage functions of the stage code its stage server links.
 //
 //   autograder [--stage ID]... [--json results.json] [--output DIR] [--timeout S] [--lang en|zh] [--list]
+//   autograder --list-files     the stage files of the stage table, one per line (for scripts)
 //
 // A stage is named by its id in stages.json or its short form: 05b_bvh_sah, 05b or 5b.
 //
@@ -19,6 +20,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -31,6 +33,8 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   options.description_zh = description_zh;
   std::string language_name;
   bool list = false;
+  bool list_files = false;
+  std::vector<std::string> visibility_rules;
   std::vector<std::string> stage_names;
   app.add_option("--stage", stage_names,
                  "Grade only this stage: its id or short form (05b_bvh_sah, 05b or 5b); repeat for several");
@@ -54,6 +58,12 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   app.add_option("--stage-server", options.server_path, "The stage server to grade (default: this program's name + -stage-server)");
   app.add_flag("--verbose", options.verbose, "Also show notes (image metrics) of passed tests");
   app.add_flag("--list", list, "List the stages and their tests, then exit");
+  app.add_flag("--list-files", list_files,
+               "Print the stage files of stages.json (paths under assignments/), one per line, then exit");
+  app.add_option("--visibility", visibility_rules,
+                 "Gradescope visibility in results.json: LEVEL for every test, or STAGE=LEVEL, or 'STAGE: Test*'=LEVEL "
+                 "(* matches anything; the last rule naming a test decides); LEVEL is visible, hidden, after_due_date "
+                 "or after_published");
   app.add_option("--lang", language_name,
                  "Language of the table, the failures and the hints: en or zh (default: from LC_ALL, LC_MESSAGES or "
                  "LANG; zh_CN... is Chinese)")
@@ -67,6 +77,25 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
     return 1;
   }
   if (!language_name.empty()) set_language(*parse_language(language_name));
+  if (list_files) {
+    std::vector<std::string_view> printed;
+    for (const raylab::StageDescription& stage : raylab::stage_table())
+      for (std::string_view file : stage.files)
+        if (std::find(printed.begin(), printed.end(), file) == printed.end()) {
+          printed.push_back(file);
+          std::cout << file << "\n";
+        }
+    return 0;
+  }
+  for (const std::string& text : visibility_rules) {
+    std::string error;
+    const std::optional<VisibilityRule> rule = parse_visibility_rule(text, error);
+    if (!rule) {
+      std::cerr << "autograder: " << error << "\n";
+      return 1;
+    }
+    options.visibility.push_back(*rule);
+  }
   const std::vector<std::string> problems = registration_problems();
   if (!problems.empty()) {
     std::cerr << "autograder: the suites and stages.json disagree (the grader's bug, not yours):\n";

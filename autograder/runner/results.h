@@ -16,6 +16,7 @@ struct TestResult {
   std::vector<Message> messages;  // what went wrong (an assertion's text is verbatim(), English)
   std::vector<Message> hints;
   std::vector<Message> notes;
+  double seconds = 0;  // wall clock from the test's start to its end, in the judge
   int earned() const { return status == Status::Passed ? info.points : 0; }
 };
 
@@ -37,9 +38,12 @@ std::string test_output(const TestResult& test, Language language);
 // In this run's language (messages.h); `description` names what is graded, in either language.
 void print_results(const std::vector<StageResult>& results, const Message& description, bool verbose);
 
+struct GradescopeOptions;  // gradescope.h
+
 // results_json.cpp: Gradescope's results.json (English; each test's hints also as ids with their
-// English and Chinese texts), written to a fresh temporary file beside `path`
-// and renamed over it, so nothing another process wrote there first survives.
-void write_results_json(const std::vector<StageResult>& results, const std::string& path);
+// English and Chinese texts; Markdown output, visibility, times and a leaderboard: gradescope.h),
+// written to a fresh temporary file beside `path` and renamed over it, so nothing another
+// process wrote there first survives.
+void write_results_json(const std::vector<StageResult>& results, const std::string& path, const GradescopeOptions& options);
 
 }  // namespace raylab::grading

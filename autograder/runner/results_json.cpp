@@ -1,5 +1,7 @@
 #include "results.h"
 
+#include "gradescope.h"
+
 #include <nlohmann/json.hpp>
 
 #if defined(_WIN32)
@@ -54,7 +56,7 @@ int close_file(int fd) { return ::close(fd); }
 
 }  // namespace
 
-void write_results_json(const std::vector<StageResult>& results, const std::string& path) {
+void write_results_json(const std::vector<StageResult>& results, const std::string& path, const GradescopeOptions& options) {
   using nlohmann::json;
   json tests_json = json::array();
   int earned = 0, max = 0;
@@ -69,14 +71,20 @@ void write_results_json(const std::vector<StageResult>& results, const std::stri
       tests_json.push_back({{"name", stage.stage->id + ": " + t.info.name},
                             {"score", t.earned()},
                             {"max_score", t.info.points},
-                            {"output", test_output(t, Language::English)},
-                            {"output_zh", test_output(t, Language::Chinese)},
+                            {"output", test_markdown(t, Language::English)},
+                            {"output_zh", test_markdown(t, Language::Chinese)},
+                            {"output_format", "md"},
                             {"hints", hints},
-                            {"visibility", "visible"}});
+                            {"execution_time", t.seconds},
+                            {"visibility", test_visibility(stage, t, options.visibility)}});
       earned += t.earned();
       max += t.info.points;
     }
-  const json results_json = {{"score", earned}, {"max_score", max}, {"tests", tests_json}};
+  const json results_json = {{"score", earned},
+                             {"max_score", max},
+                             {"execution_time", options.run_seconds},
+                             {"tests", tests_json},
+                             {"leaderboard", leaderboard(results)}};
   const std::string text = results_json.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 
   // A new file with a name no one could know in advance (created exclusively: O_EXCL), renamed

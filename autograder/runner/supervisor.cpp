@@ -1,5 +1,6 @@
 #include "supervisor.h"
 
+#include "gradescope.h"
 #include "grading.h"
 #include "stage_process.h"
 #include "results.h"
@@ -74,13 +75,18 @@ StageResult grade_stage(const StageInfo& stage) {
     (void)listeners;
     static StageResult* recording = nullptr;
     static bool installed = false;
+    static Clock::time_point test_started;
     recording = &result;
     if (!installed) {
       installed = true;
-      install_recorder([](const std::string& test) { StageSession::instance().begin_test(test); },
+      install_recorder([](const std::string& test) {
+                         test_started = Clock::now();
+                         StageSession::instance().begin_test(test);
+                       },
                        [](const TestRecord& record) {
                          for (TestResult& t : recording->tests) {
                            if (t.info.full_name() != record.test) continue;
+                           t.seconds = std::chrono::duration<double>(Clock::now() - test_started).count();
                            if (const auto loss = StageSession::instance().test_loss()) {
                              t.status = Status::Lost;  // whatever the test concluded without the stage's answers
                              t.messages = {verbatim(*loss)};
@@ -110,6 +116,7 @@ StageResult grade_stage(const StageInfo& stage) {
 }  // namespace
 
 int run_supervisor(const SupervisorOptions& options) {
+  const Clock::time_point run_started = Clock::now();
   std::vector<const StageInfo*> selected;
   for (const StageInfo& stage : stages())
     if (options.stages.empty() || std::find(options.stages.begin(), options.stages.end(), stage.number) != options.stages.end())
@@ -165,7 +172,10 @@ int run_supervisor(const SupervisorOptions& options) {
   if (options.verbose)
     std::printf("%s\n", render({MessageId::console_sandbox, {{"how", sandbox_description()}}}).c_str());
   if (!options.json_path.empty()) {
-    write_results_json(results, options.json_path);
+    GradescopeOptions gradescope;
+    gradescope.visibility = options.visibility;
+    gradescope.run_seconds = std::chrono::duration<double>(Clock::now() - run_started).count();
+    write_results_json(results, options.json_path, gradescope);
     std::printf("%s\n", render({MessageId::console_results_written, {{"path", options.json_path}}}).c_str());
   }
   std::fflush(stdout);

@@ -3,6 +3,8 @@
 // stage code, decides every score from values it received, and writes the reports itself.
 #pragma once
 
+#include "gradescope.h"
+
 #include <string>
 #include <vector>
 
@@ -14,6 +16,7 @@ struct SupervisorOptions {
   std::string server_path;         // the stage server linked with that code
   std::vector<int> stages;         // empty: every stage
   std::string json_path;           // Gradescope results.json, if set
+  std::vector<VisibilityRule> visibility;  // Gradescope's visibility per test (gradescope.h)
   std::string output_directory;    // side-by-side images
   std::string reference_directory; // reference data ("": the checked-in autograder/reference/)
   double timeout_seconds = 60.0;   // wall clock per stage, all its calls together
