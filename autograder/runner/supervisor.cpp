@@ -1,6 +1,7 @@
 #include "supervisor.h"
 
 #include "grading.h"
+#include "report_html.h"
 #include "stage_process.h"
 #include "results.h"
 #include "stage_session.h"
@@ -49,7 +50,7 @@ StageResult grade_stage(const StageInfo& stage) {
   StageResult result;
   result.stage = &stage;
   for (const TestInfo& test : tests())
-    if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {MessageId::test_not_run}, {}, {}});
+    if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {MessageId::test_not_run}, {}, {}, {}});
 
   StageSession& session = StageSession::instance();
   session.begin_stage();
@@ -86,6 +87,7 @@ StageResult grade_stage(const StageInfo& stage) {
                              t.messages = {verbatim(*loss)};
                              t.hints.clear();
                              t.notes.clear();
+                             t.images.clear();
                              return;
                            }
                            t.status = record.passed            ? Status::Passed
@@ -94,6 +96,7 @@ StageResult grade_stage(const StageInfo& stage) {
                            t.messages = record.messages;
                            t.hints = record.hints;
                            t.notes = record.notes;
+                           t.images = record.images;
                          }
                        });
     }
@@ -164,6 +167,8 @@ int run_supervisor(const SupervisorOptions& options) {
   print_results(results, description, options.verbose);
   if (options.verbose)
     std::printf("%s\n", render({MessageId::console_sandbox, {{"how", sandbox_description()}}}).c_str());
+  const std::string report = write_report_html(results, description, options.output_directory);
+  std::printf("%s\n", render({MessageId::report_written, {{"path", report}}}).c_str());
   if (!options.json_path.empty()) {
     write_results_json(results, options.json_path);
     std::printf("%s\n", render({MessageId::console_results_written, {{"path", options.json_path}}}).c_str());
