@@ -111,10 +111,13 @@ constexpr const char* kScript = R"js(
     var images = Array.prototype.slice.call(document.images);
     var missing = images.filter(function (image) { return !(image.complete && image.naturalWidth > 0); });
     if (missing.length > 0) {
-      var warning = document.getElementById('images-missing'), list = warning.querySelector('ul');
+      var warning = document.getElementById('images-missing'), list = warning.querySelector('ul'), listed = {};
       missing.forEach(function (image) {
+        var name = image.getAttribute('src');
+        if (listed[name]) return;
+        listed[name] = true;
         var item = document.createElement('li');
-        item.textContent = image.getAttribute('src');
+        item.textContent = name;
         list.appendChild(item);
       });
       warning.hidden = false;
