@@ -76,6 +76,8 @@ int StageResult::max() const {
   return sum;
 }
 
+std::string stage_status(const StageResult& stage) { return status_text(stage); }
+
 std::string test_output(const TestResult& t, Language language) {
   std::string out;
   for (const Message& m : t.messages) out += render(m, language) + "\n";

@@ -24,6 +24,8 @@ std::vector<StageInfo>& stage_registry() {
       // docs/zh/<name>.md is the Chinese twin of docs/<name>.md, with the same sections.
       const std::string handout(description.handout);
       const std::string handout_zh = "docs/zh/" + handout.substr(handout.rfind('/') + 1);
+      stage.handout_file = handout;
+      stage.handout_file_zh = handout_zh;
       Message handout_text = verbatim("");
       handout_text.args = {MessageArg::bilingual("text", handout, handout_zh)};
       if (!description.handout_section.empty())
@@ -61,6 +63,7 @@ std::vector<TestInfo>& test_registry() {
 
 struct CurrentTest {
   std::vector<Message> hints, notes;
+  std::vector<ImageComparison> images;
   std::vector<Message> failures;  // add_failure's, in order, until the listener has seen each
 };
 CurrentTest& current() {
@@ -152,7 +155,7 @@ class Recorder : public ::testing::EmptyTestEventListener {
 
   void OnTestEnd(const ::testing::TestInfo& info) override {
     on_end_(TestRecord{full_name(info), info.result()->Passed(), not_implemented_, messages_, name_non_finite(current().hints),
-                       name_non_finite(current().notes)});
+                       name_non_finite(current().notes), current().images});
   }
 
  private:
@@ -230,6 +233,8 @@ void add_hint(const Message& hint) {
 }
 
 void add_note(const Message& note) { current().notes.push_back(note); }
+
+void add_image(const ImageComparison& images) { current().images.push_back(images); }
 
 void add_failure(const Message& failure) { ADD_FAILURE() << failure_text(failure); }
 

@@ -27,6 +27,8 @@ struct StageInfo {
   std::string id;                // "05b_bvh_sah"
   std::string title;             // "bonus: binned SAH build"
   std::string handout;           // "docs/05_bvh.md, section 5"
+  std::string handout_file;      // "docs/05_bvh.md"
+  std::string handout_file_zh;   // "docs/zh/05_bvh.md", its Chinese twin
   Message title_text{MessageId::verbatim};    // the title in either language ("附加题：分桶 SAH 构建")
   Message handout_text{MessageId::verbatim};  // the handout in either language ("docs/zh/05_bvh.md，第 5 节")
   std::vector<int> depends_on;   // "needs": the stages its image test renders with
@@ -71,6 +73,16 @@ std::string failure_text(const Message& failure);
 // entry of messages.def like a hint.
 void add_note(const Message& note);
 
+// Inside a test: pictures to compare, shown side by side (and with a slider between the student's
+// and the expected one) in the HTML report, grading-output/index.html (report_html.h). Files in
+// output_directory(), named without the folder; `difference` may be "" (none).
+struct ImageComparison {
+  std::string yours, reference, difference;
+  Message yours_label{MessageId::report_yours};
+  Message reference_label{MessageId::report_reference};
+};
+void add_image(const ImageComparison& images);
+
 // Where image tests write yours | reference | difference pictures.
 const std::string& output_directory();
 void set_output_directory(const std::string& directory);
@@ -89,6 +101,7 @@ struct TestRecord {
   std::vector<Message> messages;
   std::vector<Message> hints;
   std::vector<Message> notes;
+  std::vector<ImageComparison> images;
 };
 // The judge: calls on_test_start before each test and on_test_end after it.
 void install_recorder(std::function<void(const std::string&)> on_test_start,

@@ -17,6 +17,7 @@ struct TestResult {
   std::vector<Message> hints;
   std::vector<Message> notes;
   double seconds = 0;  // wall clock from the test's start to its end, in the judge
+  std::vector<ImageComparison> images;  // for the HTML report
   int earned() const { return status == Status::Passed ? info.points : 0; }
 };
 
@@ -29,6 +30,9 @@ struct StageResult {
   int earned() const;
   int max() const;
 };
+
+// The stage's status as the score table shows it ("passed", "2 of 5 tests failed; ...").
+std::string stage_status(const StageResult& stage);
 
 // A test's messages, hints and notes, one per line, in `language`.
 std::string test_output(const TestResult& test, Language language);
@@ -45,5 +49,8 @@ struct GradescopeOptions;  // gradescope.h
 // written to a fresh temporary file beside `path` and renamed over it, so nothing another
 // process wrote there first survives.
 void write_results_json(const std::vector<StageResult>& results, const std::string& path, const GradescopeOptions& options);
+// Writes `text` to `path` the same way: a fresh temporary file beside it, renamed over it.
+// Throws std::runtime_error naming the file if it cannot.
+void replace_file(const std::string& path, const std::string& text);
 
 }  // namespace raylab::grading

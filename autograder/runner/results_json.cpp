@@ -25,13 +25,13 @@
 namespace raylab::grading {
 namespace {
 
-// Creates a new file in `directory` under a random name (set in `name`), readable by everyone,
+// Creates a new file in `directory` under a random name starting with `prefix` (set in `name`), readable by everyone,
 // failing rather than opening anything that exists there already. Returns its descriptor or -1.
-int create_exclusive_file(const std::filesystem::path& directory, std::string& name) {
+int create_exclusive_file(const std::filesystem::path& directory, const std::string& prefix, std::string& name) {
 #if defined(_WIN32)
   std::random_device random;
   for (int attempt = 0; attempt < 100; ++attempt) {
-    name = (directory / (".results.json." + std::to_string(random()))).string();
+    name = (directory / (prefix + std::to_string(random()))).string();
     int fd = -1;
     if (::_sopen_s(&fd, name.c_str(), _O_CREAT | _O_EXCL | _O_WRONLY | _O_BINARY, _SH_DENYNO, _S_IREAD | _S_IWRITE) == 0)
       return fd;
@@ -39,7 +39,7 @@ int create_exclusive_file(const std::filesystem::path& directory, std::string& n
   }
   return -1;
 #else
-  name = (directory / ".results.json.XXXXXX").string();
+  name = (directory / (prefix + "XXXXXX")).string();
   const int fd = ::mkstemp(name.data());
   if (fd >= 0) ::fchmod(fd, 0644);
   return fd;
@@ -85,14 +85,16 @@ void write_results_json(const std::vector<StageResult>& results, const std::stri
                              {"execution_time", options.run_seconds},
                              {"tests", tests_json},
                              {"leaderboard", leaderboard(results)}};
-  const std::string text = results_json.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+  replace_file(path, results_json.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
+}
 
+void replace_file(const std::string& path, const std::string& text) {
   // A new file with a name no one could know in advance (created exclusively: O_EXCL), renamed
   // over the target: whatever was at `path` before, a file or a link planted there, is replaced.
   const std::filesystem::path target(path);
   const std::filesystem::path directory = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
   std::string temporary;
-  const int fd = create_exclusive_file(directory, temporary);
+  const int fd = create_exclusive_file(directory, "." + target.filename().string() + ".", temporary);
   if (fd < 0) throw std::runtime_error("cannot write in " + directory.string() + ": " + std::strerror(errno));
   std::size_t written = 0;
   while (written < text.size()) {

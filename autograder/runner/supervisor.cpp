@@ -2,6 +2,7 @@
 
 #include "gradescope.h"
 #include "grading.h"
+#include "report_html.h"
 #include "stage_process.h"
 #include "results.h"
 #include "stage_session.h"
@@ -50,7 +51,7 @@ StageResult grade_stage(const StageInfo& stage) {
   StageResult result;
   result.stage = &stage;
   for (const TestInfo& test : tests())
-    if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {MessageId::test_not_run}, {}, {}});
+    if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {MessageId::test_not_run}, {}, {}, {}});
 
   StageSession& session = StageSession::instance();
   session.begin_stage();
@@ -92,6 +93,7 @@ StageResult grade_stage(const StageInfo& stage) {
                              t.messages = {verbatim(*loss)};
                              t.hints.clear();
                              t.notes.clear();
+                             t.images.clear();
                              return;
                            }
                            t.status = record.passed            ? Status::Passed
@@ -100,6 +102,7 @@ StageResult grade_stage(const StageInfo& stage) {
                            t.messages = record.messages;
                            t.hints = record.hints;
                            t.notes = record.notes;
+                           t.images = record.images;
                          }
                        });
     }
@@ -171,6 +174,8 @@ int run_supervisor(const SupervisorOptions& options) {
   print_results(results, description, options.verbose);
   if (options.verbose)
     std::printf("%s\n", render({MessageId::console_sandbox, {{"how", sandbox_description()}}}).c_str());
+  const std::string report = write_report_html(results, description, options.output_directory);
+  std::printf("%s\n", render({MessageId::report_written, {{"path", report}}}).c_str());
   if (!options.json_path.empty()) {
     GradescopeOptions gradescope;
     gradescope.visibility = options.visibility;

@@ -320,7 +320,7 @@ glm::vec3 heat(double value) {
 }
 
 // <output>/07_sampling-<warp>.png: the student's samples per pixel | the count the intended
-// density expects there, on one colour scale (white = twice the domain's mean). Directions are
+// density expects there (and each half on its own: -yours.png, -intended.png), on one colour scale (white = twice the domain's mean). Directions are
 // drawn by (phi across, z = cos theta up: an equal-area map, so a uniform warp looks flat),
 // disk points as they are, triangle points by (b1 across, b2 up).
 std::string write_histogram_picture(Warp warp, const WarpData& data) {
@@ -373,16 +373,21 @@ std::string write_histogram_picture(Warp warp, const WarpData& data) {
     }
   const double white = nonzero > 0 ? 2.0 * sum / nonzero : 1.0;
   Image picture(2 * width * scale + gap, height * scale, glm::vec3(0.35f));
+  Image yours(width * scale, height * scale), intended(width * scale, height * scale);  // the halves, for the HTML report
   for (int y = 0; y < height * scale; ++y)
     for (int x = 0; x < width * scale; ++x) {
       const std::size_t cell = static_cast<std::size_t>(height - 1 - y / scale) * width + x / scale;  // y up
-      picture.at(x, y) = heat(counts[cell] / white);
-      picture.at(x + width * scale + gap, y) = heat(expected[cell] / white);
+      picture.at(x, y) = yours.at(x, y) = heat(counts[cell] / white);
+      picture.at(x + width * scale + gap, y) = intended.at(x, y) = heat(expected[cell] / white);
     }
   const std::string directory = output_directory();
   std::filesystem::create_directories(directory);
-  const std::string path = directory + "/" + kStage + "-" + file_name(warp) + ".png";
+  const std::string name = std::string(kStage) + "-" + file_name(warp);
+  const std::string path = directory + "/" + name + ".png";
   write_image(picture, path);
+  write_image(yours, directory + "/" + name + "-yours.png");
+  write_image(intended, directory + "/" + name + "-intended.png");
+  add_image({name + "-yours.png", name + "-intended.png", "", MessageId::report_your_samples, MessageId::report_intended_density});
   return path;
 }
 

@@ -75,7 +75,16 @@ void expect_image_matches_reference(const std::string& stage_id, float channel_t
   const Image yours = read_image(yours_path);
   const Image expected = read_image(reference_path(reference_image_name(stage_id)));
   const ImageDifference difference = compare_images(yours, expected, channel_threshold);
-  write_image(side_by_side_difference(yours, expected, 0.25f), comparison_path);
+  const Image comparison = side_by_side_difference(yours, expected, 0.25f);
+  write_image(comparison, comparison_path);
+  // Each picture on its own as well, for the HTML report (its slider lays yours over the reference).
+  const std::string reference_name = stage_id + "-reference.png", difference_name = stage_id + "-difference.png";
+  write_image(expected, directory + "/" + reference_name);
+  Image heat_map(yours.width(), yours.height());
+  for (int y = 0; y < heat_map.height(); ++y)
+    for (int x = 0; x < heat_map.width(); ++x) heat_map.at(x, y) = comparison.at(2 * yours.width() + x, y);
+  write_image(heat_map, directory + "/" + difference_name);
+  add_image({stage_id + "-yours.png", reference_name, difference_name});
 
   add_note({MessageId::note_image,
             {{"width", std::to_string(kImageWidth)}, {"height", std::to_string(kImageHeight)},

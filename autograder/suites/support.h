@@ -64,8 +64,9 @@ std::string reference_image_name(const std::string& stage_id);  // "<id>.png"
 
 // The image test: renders the stage's picture with the linked stage code, compares it with
 // the reference (both as 8-bit sRGB PNG, so quantisation is the same), writes
-// <output>/<stage_id>.png = yours | reference | difference, and fails when more than
-// max_fraction of the pixels differ by more than channel_threshold.
+// <output>/<stage_id>.png = yours | reference | difference (and each of the three on its own,
+// <stage_id>-yours.png, -reference.png, -difference.png, for the HTML report), and fails when
+// more than max_fraction of the pixels differ by more than channel_threshold.
 void expect_image_matches_reference(const std::string& stage_id, float channel_threshold, double max_fraction);
 
 }  // namespace raylab::grading
