@@ -17,8 +17,12 @@ namespace raylab {
 
 using nlohmann::json;
 
+// How deeply [ ] and { } may nest in a file read with parse_json_text (scenes need 4).
+constexpr int kMaxJsonDepth = 64;
+
 // Parses JSON text (comments allowed); throws InputError "SOURCE: not valid JSON: line L,
-// column C: ..." if it is not JSON.
+// column C: ..." if it is not JSON, nests deeper than kMaxJsonDepth or holds a number beyond
+// a double.
 json parse_json_text(const std::string& text, const std::string& source);
 
 // Reads values out of a parsed document, naming the JSON path of anything wrong.
@@ -69,7 +73,9 @@ class JsonReader {
 
   int integer(const json& value, const std::string& path, long long min, long long max) const {
     if (!value.is_number_integer()) fail(path, "expected a whole number, got " + describe(value));
-    const long long x = value.get<long long>();
+    // A whole number above the largest long long (up to 2^64 - 1) is stored unsigned.
+    const long long x = value.is_number_unsigned() && value.get<unsigned long long>() > 1ULL << 62
+                            ? (1LL << 62) : value.get<long long>();
     if (x < min || x > max)
       fail(path, "expected a whole number in [" + std::to_string(min) + ", " +
                      std::to_string(max) + "], got " + value.dump());

@@ -4,22 +4,70 @@
 
 #include "raylab/error.h"
 
+#include "input_file.h"
+
 #include <tiny_obj_loader.h>
 
 #include <cmath>
-#include <fstream>
 #include <string>
 #include <unordered_map>
 
 namespace raylab {
 
+namespace {
+
+// The OBJ text tinyobjloader is given, made safe for tinyobjloader 2.0rc10, which has
+// undefined behaviour on two inputs that fuzzing found (docs/fuzzing.md); line numbers stay
+// the same:
+//  - every `vw` line (vertex weights, an extension raylab does not use) becomes a comment:
+//    tinyobjloader converts its joint numbers to int unchecked (1e10 overflows);
+//  - a number whose exponent has more than 9 digits, on a line of numbers (v, vt, vn, vp, t),
+//    is an error naming the line: tinyobjloader's exponent overflows int.
+std::string prepared_for_tinyobjloader(const std::string& text, const std::string& path) {
+  std::string result = text;
+  std::size_t line = 1;
+  for (std::size_t start = 0; start < result.size(); ++line) {
+    // Lines end as tinyobjloader ends them: at "\n", "\r\n" or a lone "\r".
+    std::size_t end = result.find_first_of("\r\n", start);
+    if (end == std::string::npos) end = result.size();
+    std::size_t i = start;
+    while (i < end && (result[i] == ' ' || result[i] == '\t')) ++i;
+    std::size_t keyword_end = i;
+    while (keyword_end < end && result[keyword_end] != ' ' && result[keyword_end] != '\t') ++keyword_end;
+    const std::string keyword = result.substr(i, keyword_end - i);
+    if (keyword == "vw") {
+      result[i] = '#';
+    } else if (keyword == "v" || keyword == "vt" || keyword == "vn" || keyword == "vp" || keyword == "t") {
+      for (std::size_t j = keyword_end; j < end; ++j) {
+        if (result[j] != 'e' && result[j] != 'E') continue;
+        std::size_t k = j + 1;
+        if (k < end && (result[k] == '+' || result[k] == '-')) ++k;
+        std::size_t digits = 0;
+        while (k + digits < end && result[k + digits] >= '0' && result[k + digits] <= '9') ++digits;
+        if (digits > 9)
+          throw InputError(path + ": malformed OBJ: line " + std::to_string(line) +
+                           ": a number's exponent has more than 9 digits");
+      }
+    }
+    start = end + (result.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+  }
+  return result;
+}
+
+}  // namespace
+
 TriangleMesh load_obj_mesh(const std::string& path) {
-  if (!std::ifstream(path)) throw InputError(path + ": cannot open OBJ file (does it exist?)");
+  return parse_obj_mesh(read_input_file(path, "OBJ file"), path);
+}
+
+TriangleMesh parse_obj_mesh(const std::string& text, const std::string& path) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
+  // From memory, with no material text: `mtllib` names no file that is opened (raylab's
+  // materials come from the scene), so `mtllib /dev/zero` cannot make it read forever.
+  if (!reader.ParseFromString(prepared_for_tinyobjloader(text, path), "", config)) {
     std::string reason = reader.Error();
     while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' ')) reason.pop_back();
     throw InputError(path + ": malformed OBJ: " + reason);
@@ -28,7 +76,9 @@ TriangleMesh load_obj_mesh(const std::string& path) {
   const std::size_t vertex_count = attrib.vertices.size() / 3;
   const std::size_t texcoord_count = attrib.texcoords.size() / 2;
   for (float value : attrib.vertices)
-    if (!std::isfinite(value)) throw InputError(path + ": malformed OBJ: a vertex position is not a finite number");
+    if (!std::isfinite(value)) throw InputError(path + ": malformed OBJ: a vertex position (v) is not a finite float (beyond about 3.4e38)");
+  for (float value : attrib.texcoords)
+    if (!std::isfinite(value)) throw InputError(path + ": malformed OBJ: a texture coordinate (vt) is not a finite float (beyond about 3.4e38)");
 
   TriangleMesh mesh;
   mesh.name = path;

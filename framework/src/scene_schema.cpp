@@ -3,11 +3,11 @@
 // JSON path and what was expected.
 #include "raylab/scene_loader.h"
 
+#include "input_file.h"
 #include "json_reader.h"
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -119,8 +119,22 @@ TriangleMesh read_inline_mesh(const JsonReader& r, const json& node, const std::
   return mesh;
 }
 
-void transform_mesh(TriangleMesh& mesh, float scale, const glm::vec3& translate) {
-  for (glm::vec3& p : mesh.positions) p = p * scale + translate;
+// Scales then translates an OBJ mesh; a vertex pushed beyond the float range is an error at
+// `path` (the object), naming the vertex.
+void transform_mesh(const JsonReader& r, const std::string& path, TriangleMesh& mesh, float scale,
+                    const glm::vec3& translate) {
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    glm::vec3& p = mesh.positions[v];
+    const glm::vec3 before = p;
+    p = p * scale + translate;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+      std::ostringstream what;
+      what << "scale " << scale << " and translate (" << translate.x << ", " << translate.y << ", "
+           << translate.z << ") move vertex (" << before.x << ", " << before.y << ", " << before.z
+           << ") of " << mesh.name << " beyond the float range (about 3.4e38)";
+      r.fail(path, what.str());
+    }
+  }
 }
 
 Scene read_scene(const JsonReader& r, const json& root, const std::string& base_directory) {
@@ -183,7 +197,7 @@ Scene read_scene(const JsonReader& r, const json& root, const std::string& base_
           ? static_cast<float>(r.number(object["scale"], path + "/scale", 1e-30, 1e30)) : 1.0f;
       const glm::vec3 translate = object.contains("translate")
           ? r.vector<3>(object["translate"], path + "/translate") : glm::vec3(0.0f);
-      transform_mesh(mesh, scale, translate);
+      transform_mesh(r, path, mesh, scale, translate);
       mesh.material = material_of(object, path);
       scene.meshes.push_back(std::move(mesh));
     } else {
@@ -226,12 +240,9 @@ Scene parse_scene(const std::string& json_text, const std::string& source,
 }
 
 Scene load_scene(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path + ": cannot open scene file (does it exist?)");
-  std::ostringstream text;
-  text << file.rdbuf();
+  const std::string text = read_input_file(path, "scene file");
   const std::string base = std::filesystem::path(path).parent_path().string();
-  return parse_scene(text.str(), path, base.empty() ? "." : base);
+  return parse_scene(text, path, base.empty() ? "." : base);
 }
 
 }  // namespace raylab

@@ -17,7 +17,11 @@ Scene parse_scene(const std::string& json_text, const std::string& source,
                   const std::string& base_directory);
 
 // Reads a triangulated OBJ mesh (positions and texture coordinates) through tinyobjloader.
-// Throws InputError naming the file (and line where known) if it is missing or malformed.
+// Throws InputError naming the file (and line where known) if it is missing, not a regular
+// file, or malformed. `mtllib` lines are ignored: no other file is read.
 TriangleMesh load_obj_mesh(const std::string& path);
+
+// The same for OBJ text already in memory; `source` names it in messages.
+TriangleMesh parse_obj_mesh(const std::string& obj_text, const std::string& source);
 
 }  // namespace raylab
