@@ -84,7 +84,6 @@ std::string render(const Message& message, Language language) {
 std::string render(const Message& message) { return render(message, language()); }
 
 Message verbatim(std::string text) { return {MessageId::verbatim, {{"text", std::move(text)}}}; }
-Message untranslated(std::string english) { return verbatim(std::move(english)); }
 
 std::optional<Language> parse_language(std::string_view name) {
   auto starts = [&](std::string_view prefix) {

@@ -60,11 +60,6 @@ std::string render(const Message& message);
 // assertion, a framework error), shown as it is in both languages.
 Message verbatim(std::string text);
 
-// Transitional: a hint, note or advice still written as English text, not yet an entry of the
-// catalogue; it shows in English in both languages. messages_are_paired fails for a suite that uses
-// it unless the test lists that suite as still to translate (and then names it in its output).
-Message untranslated(std::string english);
-
 // "sphere_hit_behind": the id as results.json names it.
 std::string_view message_name(MessageId id);
 

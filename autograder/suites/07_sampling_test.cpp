@@ -67,15 +67,19 @@ const bool kRegistered = register_stage(kStage, [] {
   if (stubs == functions && first) throw *first;
 });
 
-const char* handout_section(Warp warp) {
+// The {section} of a hint: the warp's section of the handout, in the hint's language.
+MessageArg handout_section(Warp warp) {
+  int section = 0;
   switch (warp) {
-    case Warp::UniformHemisphere: return "docs/07_sampling.md, section 3";
-    case Warp::CosineHemisphere: return "docs/07_sampling.md, section 4";
-    case Warp::UniformSphere: return "docs/07_sampling.md, section 5";
-    case Warp::UniformDisk: return "docs/07_sampling.md, section 6";
-    case Warp::UniformTriangle: return "docs/07_sampling.md, section 7";
+    case Warp::UniformHemisphere: section = 3; break;
+    case Warp::CosineHemisphere: section = 4; break;
+    case Warp::UniformSphere: section = 5; break;
+    case Warp::UniformDisk: section = 6; break;
+    case Warp::UniformTriangle: section = 7; break;
   }
-  return "docs/07_sampling.md";
+  const std::string number = std::to_string(section);
+  return MessageArg::bilingual("section", "docs/07_sampling.md, section " + number,
+                               "docs/zh/07_sampling.md，第 " + number + " 节");
 }
 
 const char* file_name(Warp warp) {
@@ -117,29 +121,25 @@ const glm::vec3 kUnitTriangle[3] = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm:
 // Mistakes whose samples have a known density: if the samples fit one, its hint names it.
 struct Mistake {
   std::function<double(double u, double v)> pdf;  // in the warp's own measure, as intended_pdf
-  std::string hint;
+  MessageId hint;                                  // with the placeholder {section}
 };
 std::vector<Mistake> sample_mistakes(Warp warp) {
   switch (warp) {
     case Warp::UniformHemisphere:
       return {{[](double, double v) { return v >= 0.0 ? v / kPiD : 0.0; },
-               "your samples are cosine-weighted (density cos(theta) / pi, what sample_cosine_hemisphere does); here "
-               "every direction must be equally likely: z = cos(theta) uniform in [0, 1]"}};
+               MessageId::sampling_hemisphere_cosine_samples}};
     case Warp::CosineHemisphere:
       return {{[](double, double v) { return v >= 0.0 ? 1.0 / kTwoPi : 0.0; },
-               "your samples are uniform over the hemisphere, not cosine-weighted: z = cos(theta) must not be uniform, "
-               "but z^2 is (or lift a uniform disk point: z = sqrt(1 - x^2 - y^2))"}};
+               MessageId::sampling_cosine_uniform_samples}};
     case Warp::UniformSphere:
       return {{[](double, double v) { return v >= 0.0 ? 1.0 / kTwoPi : 0.0; },
-               "your samples cover only the upper hemisphere (z >= 0): z = cos(theta) must be uniform in [-1, 1]"}};
+               MessageId::sampling_sphere_upper_only}};
     case Warp::UniformDisk:
       return {{[](double, double v) { return v > 0.0 ? 1.0 / (kTwoPi * v) : 0.0; },
-               "samples crowd the centre of the disk: a square root missing (the radius uniform in [0, 1] puts as "
-               "many points within r < 1/2 as beyond, but that ring has 3 times the area; r = sqrt(u))"}};
+               MessageId::sampling_disk_no_sqrt}};
     case Warp::UniformTriangle:
       return {{[](double, double v) { return v > 0.0 ? 1.0 / v : 0.0; },
-               "samples crowd the vertex p0: a square root missing (b1 + b2 uniform in [0, 1] puts as many points "
-               "near p0 as near the opposite edge, where the triangle is wider; use sqrt(u))"}};
+               MessageId::sampling_triangle_no_sqrt}};
   }
   return {};
 }
@@ -149,17 +149,14 @@ std::vector<Mistake> pdf_mistakes(Warp warp) {
   switch (warp) {
     case Warp::UniformHemisphere:
       return {{[](double, double v) { return v >= 0.0 ? v / kPiD : 0.0; },
-               "uniform_hemisphere_pdf returns the cosine-weighted density cos(theta) / pi; uniform directions have "
-               "the same density everywhere: 1 / (2 pi), the hemisphere's solid angle being 2 pi"}};
+               MessageId::sampling_hemisphere_pdf_cosine}};
     case Warp::CosineHemisphere:
       return {{[](double, double v) { return v >= 0.0 ? 1.0 / kTwoPi : 0.0; },
-               "cosine_hemisphere_pdf returns the uniform hemisphere's density 1 / (2 pi), but cosine-weighted samples "
-               "have density cos(theta) / pi = z / pi"}};
+               MessageId::sampling_cosine_pdf_uniform}};
     case Warp::UniformSphere: return {};
     case Warp::UniformDisk:
       return {{[](double, double v) { return v / kPiD; },
-               "uniform_disk_pdf includes the Jacobian r: r / pi is the density per dr dphi, but the pdf is per unit "
-               "area, the same everywhere: 1 / pi"}};
+               MessageId::sampling_disk_pdf_jacobian}};
     case Warp::UniformTriangle: return {};
   }
   return {};
@@ -322,8 +319,14 @@ glm::vec3 heat(double value) {
 // <output>/07_sampling-<warp>.png: the student's samples per pixel | the count the intended
 // density expects there (and each half on its own: -yours.png, -intended.png), on one colour scale (white = twice the domain's mean). Directions are
 // drawn by (phi across, z = cos theta up: an equal-area map, so a uniform warp looks flat),
-// disk points as they are, triangle points by (b1 across, b2 up).
-std::string write_histogram_picture(Warp warp, const WarpData& data) {
+// disk points as they are, triangle points by (b1 across, b2 up). Returns the path, or why it
+// could not be written (a build without image I/O, a folder that cannot be written): the picture
+// only illustrates; the verdict never depends on it.
+struct HistogramPicture {
+  std::string path;    // if written
+  std::string reason;  // else: why not
+};
+HistogramPicture write_histogram_picture(Warp warp, const WarpData& data) {
   const bool directions = is_direction_warp(warp);
   const int width = directions ? 128 : 96, height = directions ? 64 : 96, scale = 2, gap = 6;
   std::vector<double> counts(static_cast<std::size_t>(width) * height, 0.0), expected(counts.size(), 0.0);
@@ -381,14 +384,18 @@ std::string write_histogram_picture(Warp warp, const WarpData& data) {
       picture.at(x + width * scale + gap, y) = intended.at(x, y) = heat(expected[cell] / white);
     }
   const std::string directory = output_directory();
-  std::filesystem::create_directories(directory);
   const std::string name = std::string(kStage) + "-" + file_name(warp);
   const std::string path = directory + "/" + name + ".png";
-  write_image(picture, path);
-  write_image(yours, directory + "/" + name + "-yours.png");
-  write_image(intended, directory + "/" + name + "-intended.png");
+  try {
+    std::filesystem::create_directories(directory);
+    write_image(picture, path);
+    write_image(yours, directory + "/" + name + "-yours.png");
+    write_image(intended, directory + "/" + name + "-intended.png");
+  } catch (const std::exception& e) {
+    return {"", e.what()};
+  }
   add_image({name + "-yours.png", name + "-intended.png", "", MessageId::report_your_samples, MessageId::report_intended_density});
-  return path;
+  return {path, ""};
 }
 
 // ---- The tests -------------------------------------------------------------------------------
@@ -398,25 +405,34 @@ void hint_non_finite(Warp warp, const WarpData& data) {
   const std::size_t i = *data.first_non_finite;
   const glm::vec3& s = data.samples[i];
   const float bad = !std::isfinite(s.x) ? s.x : !std::isfinite(s.y) ? s.y : s.z;
-  hint_if_not_finite(std::string(warp_sample_function(warp)) + " for " + input_text(data.inputs[i]), {bad},
-                     untranslated("look for a division by 0, sqrt of a negative number (1 - x^2 rounding below 0: clamp it) or "
-                     "log/acos outside its range (" + std::string(handout_section(warp)) + ")"));
+  hint_if_not_finite(std::string(warp_sample_function(warp)) + "(" + input_text(data.inputs[i]) + ")", {bad},
+                     {MessageId::sampling_not_finite_advice, {handout_section(warp)}});
+}
+
+Message below_surface_hint(Warp warp, const WarpData& data) {
+  return {MessageId::sampling_below_surface,
+          {{"count", std::to_string(data.below_surface)}, {"total", std::to_string(data.samples.size())}, handout_section(warp)}};
+}
+
+// What domain_problem found, as the {reason} of a hint.
+Message domain_reason(const std::string& problem) {
+  if (problem.rfind("not unit length", 0) == 0) return MessageId::sampling_reason_not_unit;
+  if (problem.rfind("below the surface", 0) == 0) return MessageId::sampling_reason_below_surface;
+  if (problem.rfind("outside the unit disk", 0) == 0) return MessageId::sampling_reason_outside_disk;
+  return MessageId::sampling_reason_outside_triangle;
 }
 
 void expect_samples_in_domain(Warp warp) {
   const WarpData& data = data_of(warp);
   hint_non_finite(warp, data);
   if (data.below_surface > 0)
-    add_hint(untranslated("directions below the surface (z < 0) in " + std::to_string(data.below_surface) + " of " +
-             std::to_string(data.samples.size()) + " samples: a hemisphere direction has z = cos(theta) in [0, 1] (the "
-             "sphere's z = 1 - 2u covers [-1, 1]) (" + handout_section(warp) + ")"));
+    add_hint(below_surface_hint(warp, data));
   else if (data.first_out_of_domain && warp == Warp::UniformTriangle)
-    add_hint(untranslated("barycentrics outside the triangle: b1 >= 0, b2 >= 0 and b1 + b2 <= 1 must hold (two independent uniform "
-             "numbers as b1 and b2 reach b1 + b2 > 1 half of the time) (" + std::string(handout_section(warp)) + ")"));
+    add_hint({MessageId::sampling_triangle_outside, {handout_section(warp)}});
   else if (data.first_out_of_domain && is_direction_warp(warp))
-    add_hint(untranslated("directions must be unit vectors: x^2 + y^2 + z^2 = 1 (" + std::string(handout_section(warp)) + ")"));
+    add_hint({MessageId::sampling_not_unit, {handout_section(warp)}});
   else if (data.first_out_of_domain)
-    add_hint(untranslated("points outside the unit disk: the radius must stay in [0, 1] (" + std::string(handout_section(warp)) + ")"));
+    add_hint({MessageId::sampling_disk_outside, {handout_section(warp)}});
   if (data.first_non_finite)
     ADD_FAILURE() << warp_sample_function(warp) << " returned a value that is not a number for "
                   << input_text(data.inputs[*data.first_non_finite]) << ": " << data.samples[*data.first_non_finite]
@@ -447,15 +463,13 @@ double fraction_below(Warp warp, const WarpData& data, double v_limit) {
 void diagnose_samples(Warp warp, const WarpData& data) {
   hint_non_finite(warp, data);
   if (data.below_surface > 0) {
-    add_hint(untranslated("directions below the surface (z < 0) in " + std::to_string(data.below_surface) + " of " +
-             std::to_string(data.samples.size()) + " samples: a hemisphere direction has z = cos(theta) in [0, 1] (" +
-             handout_section(warp) + ")"));
+    add_hint(below_surface_hint(warp, data));
     return;
   }
   if (data.first_out_of_domain) {
-    add_hint(untranslated(std::to_string(data.out_of_domain) + " of " + std::to_string(data.samples.size()) + " samples are " +
-             data.out_of_domain_reason.substr(0, data.out_of_domain_reason.find(" (")) + " (see " + test_prefix(warp) +
-             "SamplesInDomain) (" + handout_section(warp) + ")"));
+    add_hint({MessageId::sampling_outside_domain,
+              {{"count", std::to_string(data.out_of_domain)}, {"total", std::to_string(data.samples.size())},
+               {"reason", domain_reason(data.out_of_domain_reason)}, {"test", test_prefix(warp)}, handout_section(warp)}});
     return;
   }
   for (const Mistake& mistake : sample_mistakes(warp)) {
@@ -464,7 +478,7 @@ void diagnose_samples(Warp warp, const WarpData& data) {
         static_cast<double>(data.samples.size()), 4);
     // Lenient: a mistake's density that the samples fit at 1e-6 names the mistake.
     if (testkit::chi_square_test(data.histogram.counts(), expected, 1e-6).passed) {
-      add_hint(untranslated(mistake.hint + " (" + handout_section(warp) + ")"));
+      add_hint({mistake.hint, {handout_section(warp)}});
       return;
     }
   }
@@ -473,13 +487,11 @@ void diagnose_samples(Warp warp, const WarpData& data) {
   if (warp == Warp::UniformDisk || warp == Warp::UniformTriangle) {
     const double inner = fraction_below(warp, data, 0.5);
     if (inner > 0.27) {
-      std::ostringstream hint;
-      hint.precision(3);
-      hint << (warp == Warp::UniformDisk ? "samples crowd the centre of the disk: " : "samples crowd the vertex p0: ")
-           << 100.0 * inner << "% of them lie in the "
-           << (warp == Warp::UniformDisk ? "inner half radius" : "corner triangle b1 + b2 < 1/2")
-           << ", which has a quarter of the area (25%); is a square root missing? (" << handout_section(warp) << ")";
-      add_hint(untranslated(hint.str()));
+      std::ostringstream percent;
+      percent.precision(3);
+      percent << 100.0 * inner;
+      add_hint({warp == Warp::UniformDisk ? MessageId::sampling_disk_crowds_centre : MessageId::sampling_triangle_crowds_vertex,
+                {{"percent", percent.str()}, handout_section(warp)}});
       return;
     }
   }
@@ -494,22 +506,25 @@ void diagnose_samples(Warp warp, const WarpData& data) {
     const double fraction = finite > 0 ? near_pole / finite : 0.0;
     const double intended = warp == Warp::CosineHemisphere ? 0.19 : 0.1;  // P(|z| > 0.9)
     if (fraction > intended + 0.04) {
-      add_hint(untranslated("samples crowd the pole" + std::string(warp == Warp::UniformSphere ? "s" : "") +
-               " (|z| > 0.9 for " + std::to_string(static_cast<int>(100.0 * fraction + 0.5)) + "% of them, " +
-               std::to_string(static_cast<int>(100.0 * intended + 0.5)) + "% expected): is theta uniform? Equal "
-               "steps of theta cover less solid angle near the pole; make z = cos(theta) follow the density (" +
-               handout_section(warp) + ")"));
+      add_hint({MessageId::sampling_crowd_pole,
+                {warp == Warp::UniformSphere ? MessageArg::bilingual("pole", "poles", "两极")
+                                             : MessageArg::bilingual("pole", "pole", "极点"),
+                 {"percent", std::to_string(static_cast<int>(100.0 * fraction + 0.5))},
+                 {"expected", std::to_string(static_cast<int>(100.0 * intended + 0.5))}, handout_section(warp)}});
       return;
     }
   }
-  add_hint(untranslated(std::string("your samples do not follow the intended density: compare your histogram with the expected one "
-                       "in the picture named below (") + handout_section(warp) + ")"));
+  add_hint({MessageId::sampling_wrong_density, {handout_section(warp)}});
 }
 
 void expect_intended_density(Warp warp) {
   const WarpData& data = data_of(warp);
-  const std::string picture = write_histogram_picture(warp, data);
-  add_note(untranslated(std::string(warp_sample_function(warp)) + ": your samples | the intended density: " + picture));
+  const HistogramPicture written = write_histogram_picture(warp, data);
+  if (written.path.empty())
+    add_note({MessageId::note_sampling_no_picture, {{"sampler", warp_sample_function(warp)}, {"reason", written.reason}}});
+  else
+    add_note({MessageId::note_sampling_picture, {{"sampler", warp_sample_function(warp)}, {"picture", written.path}}});
+  const std::string picture = written.path.empty() ? "none (" + written.reason + ")" : written.path;
   const testkit::ChiSquareResult result = chi_square_against(data, data.expected);
   if (!result.passed) {
     diagnose_samples(warp, data);
@@ -526,7 +541,7 @@ struct PdfComparison {
   std::optional<double> constant_factor;  // student = factor x intended everywhere (factor != 1)
   std::optional<glm::dvec2> not_zero_outside;  // a point where intended is 0 and the student's is not
   std::optional<std::size_t> non_finite, negative;  // indices of points
-  std::optional<std::string> mistake_hint;
+  std::optional<MessageId> mistake_hint;
 };
 
 PdfComparison compare_pdf(Warp warp, const PdfData& pdf) {
@@ -573,42 +588,46 @@ PdfComparison compare_pdf(Warp warp, const PdfData& pdf) {
   return c;
 }
 
+// A number with 4 significant digits, as the hints give factors.
+std::string four_digits(double value) {
+  std::ostringstream text;
+  text.precision(4);
+  text << value;
+  return text.str();
+}
+
 void hint_pdf(Warp warp, const PdfData& pdf, const PdfComparison& c) {
-  const std::string section = handout_section(warp);
+  const MessageArg section = handout_section(warp);
+  const MessageArg function{"function", warp_pdf_function(warp)};
   if (c.non_finite) {
     const float value = pdf.values[*c.non_finite];
-    hint_if_not_finite(std::string(warp_pdf_function(warp)) + " at " +
-                           point_text(warp, pdf_argument_at(warp, pdf.points[*c.non_finite].x, pdf.points[*c.non_finite].y)),
-                       {value}, untranslated("a density is a finite number >= 0 (" + section + ")"));
+    hint_if_not_finite(std::string(warp_pdf_function(warp)) + "(" +
+                           point_text(warp, pdf_argument_at(warp, pdf.points[*c.non_finite].x, pdf.points[*c.non_finite].y)) + ")",
+                       {value}, {MessageId::sampling_pdf_not_finite_advice, {section}});
   }
-  if (c.negative) add_hint(untranslated(std::string(warp_pdf_function(warp)) + " returns a negative density; a density is >= 0 (" + section + ")"));
-  if (c.not_zero_outside) {
-    std::ostringstream hint;
-    hint << warp_pdf_function(warp) << " is not 0 where the warp never goes (at "
-         << point_text(warp, pdf_argument_at(warp, c.not_zero_outside->x, c.not_zero_outside->y))
-         << (is_hemisphere(warp) ? ", below the surface" : "") << "): return 0 there (" << section << ")";
-    add_hint(untranslated(hint.str()));
-  }
+  if (c.negative) add_hint({MessageId::sampling_pdf_negative, {function, section}});
+  if (c.not_zero_outside)
+    add_hint({MessageId::sampling_pdf_not_zero_outside,
+              {function,
+               {"point", point_text(warp, pdf_argument_at(warp, c.not_zero_outside->x, c.not_zero_outside->y))},
+               is_hemisphere(warp) ? MessageArg::bilingual("below", ", below the surface", "，在表面以下")
+                                   : MessageArg{"below", ""},
+               section}});
   if (c.mistake_hint) {
-    add_hint(untranslated(*c.mistake_hint + " (" + section + ")"));
+    add_hint({*c.mistake_hint, {section}});
   } else if (c.constant_factor && warp == Warp::UniformTriangle) {
-    std::ostringstream hint;
-    hint.precision(4);
-    hint << "uniform_triangle_pdf of the triangle (0,0,0), (1,0,0), (0,1,0), whose area is 1/2, is " << pdf.unit_triangle_pdf
-         << ", not 2 (see UniformTrianglePdfIntegratesToOne) (" << section << ")";
-    add_hint(untranslated(hint.str()));
+    add_hint({MessageId::sampling_unit_triangle_pdf, {{"value", four_digits(pdf.unit_triangle_pdf)}, section}});
   } else if (c.constant_factor) {
-    std::ostringstream hint;
-    hint.precision(4);
-    hint << warp_pdf_function(warp) << " is off by a constant factor " << *c.constant_factor
-         << ": it integrates to " << *c.constant_factor << ", not 1 (not normalised: divide by the "
-         << (is_direction_warp(warp) ? "solid angle" : "area") << " of the whole domain) (" << section << ")";
-    add_hint(untranslated(hint.str()));
+    add_hint({MessageId::sampling_pdf_constant_factor,
+              {function, {"factor", four_digits(*c.constant_factor)},
+               is_direction_warp(warp) ? MessageArg::bilingual("measure", "solid angle", "立体角")
+                                       : MessageArg::bilingual("measure", "area", "面积"),
+               section}});
   }
 }
 
 void expect_pdf_integrates_to_one(Warp warp) {
-  const std::string section = handout_section(warp);
+  const MessageArg section = handout_section(warp);
   if (warp == Warp::UniformTriangle) {
     // Triangles of every size and shape: pdf x area must be 1 on each.
     Pcg32 random(kSeed, testkit::stream_of(std::string(kStage) + "/triangles"));
@@ -639,17 +658,13 @@ void expect_pdf_integrates_to_one(Warp warp) {
                       << ": the density times the area is " << integral << ", expected 1 (within 1e-3)";
     }
     if (failures == 0) return;
-    if (hint_if_not_finite("uniform_triangle_pdf", {values[0]}, untranslated("the density is 1 / area (" + section + ")"))) {
+    if (hint_if_not_finite("uniform_triangle_pdf", {values[0]}, {MessageId::sampling_triangle_pdf_advice, {section}})) {
     } else if (returns_area) {
-      add_hint(untranslated("uniform_triangle_pdf returns the area; the density is 1 / area (" + section + ")"));
+      add_hint({MessageId::sampling_triangle_pdf_is_area, {section}});
     } else if (constant) {
-      std::ostringstream hint;
-      hint.precision(4);
-      hint << "uniform_triangle_pdf is off by a constant factor " << first_ratio
-           << " (not normalised): the density is 1 / area, the area being |cross(p1 - p0, p2 - p0)| / 2 (" << section << ")";
-      add_hint(untranslated(hint.str()));
+      add_hint({MessageId::sampling_triangle_pdf_constant_factor, {{"factor", four_digits(first_ratio)}, section}});
     } else {
-      add_hint(untranslated("uniform_triangle_pdf must be 1 / area of the triangle given (" + section + ")"));
+      add_hint({MessageId::sampling_triangle_pdf_wrong, {section}});
     }
     ADD_FAILURE() << failures << " of " << values.size() << " triangles";
     return;
@@ -670,7 +685,7 @@ void expect_pdf_integrates_to_one(Warp warp) {
     for (std::size_t i = 0; i < outside.size(); ++i)
       if (values[i] != 0.0f) {
         failed = true;
-        add_hint(untranslated("uniform_disk_pdf must be 0 outside the unit disk (x^2 + y^2 > 1) (" + section + ")"));
+        add_hint({MessageId::sampling_disk_pdf_outside, {section}});
         ADD_FAILURE() << "uniform_disk_pdf(" << point_text(warp, outside[i]) << ") = " << values[i]
                       << " outside the disk, expected 0";
       }
@@ -697,10 +712,14 @@ void expect_pdf_matches_samples(Warp warp) {
     const std::vector<float> values = warp_pdfs(warp, arguments);
     for (std::size_t k = 0; k < values.size(); ++k)
       if (!(values[k] > 0.0f) || !std::isfinite(values[k])) {
-        add_hint(untranslated(std::string(warp_pdf_function(warp)) + " returns " +
-                 (std::isnan(values[k]) ? "NaN" : std::isinf(values[k]) ? "infinity" : "0") + " for a " +
-                 (is_direction_warp(warp) ? "direction" : "point") + " that " + warp_sample_function(warp) +
-                 " returns: the renderer divides by the pdf, giving NaN or infinity (" + handout_section(warp) + ")"));
+        add_hint({MessageId::sampling_pdf_zero_at_sample,
+                  {{"function", warp_pdf_function(warp)},
+                   std::isnan(values[k])   ? MessageArg{"value", "NaN"}
+                   : std::isinf(values[k]) ? MessageArg::bilingual("value", "infinity", "无穷大")
+                                           : MessageArg{"value", "0"},
+                   is_direction_warp(warp) ? MessageArg::bilingual("kind", "direction", "方向")
+                                           : MessageArg::bilingual("kind", "point", "点"),
+                   {"sampler", warp_sample_function(warp)}, handout_section(warp)}});
         ADD_FAILURE() << warp_pdf_function(warp) << "(" << point_text(warp, arguments[k]) << ") = " << values[k]
                       << " for the sample of " << input_text(data.inputs[which[k]]);
         break;
@@ -710,8 +729,7 @@ void expect_pdf_matches_samples(Warp warp) {
   if (result.passed) return;
   const bool samples_right = chi_square_against(data, data.expected).passed;
   if (c.equals_intended && !samples_right) {
-    add_hint(untranslated(std::string(warp_pdf_function(warp)) + " is right; your samples are not (see " + test_prefix(warp) +
-             "FollowsIntendedDensity)"));
+    add_hint({MessageId::sampling_pdf_right_samples_wrong, {{"function", warp_pdf_function(warp)}, {"test", test_prefix(warp)}}});
   } else {
     hint_pdf(warp, pdf, c);
     if (!c.mistake_hint && !c.constant_factor && !c.not_zero_outside && !c.non_finite && !c.negative) {
@@ -728,16 +746,20 @@ void expect_pdf_matches_samples(Warp warp) {
       const double u = data.histogram.u_min() + (column + 0.5) * data.histogram.cell_width();
       const double v = data.histogram.v_min() + (row + 0.5) * data.histogram.cell_height();
       const double measure = data.histogram.cell_area() * jacobian_at(warp, u, v);
-      std::ostringstream hint;
-      hint.precision(3);
-      hint << warp_pdf_function(warp) << " does not describe your samples: near "
-           << point_text(warp, warp == Warp::UniformTriangle
-                                   ? glm::vec3(static_cast<float>(v * (1 - u)), static_cast<float>(v * u), 0.0f)
-                                   : pdf_argument_at(warp, u, v))
-           << " it gives " << pdf.values[worst * 16] << " where your samples' density is "
-           << counts[worst] / (static_cast<double>(data.samples.size()) * measure)
-           << (warp == Warp::UniformTriangle ? " (on the unit triangle)" : "") << " (" << handout_section(warp) << ")";
-      add_hint(untranslated(hint.str()));
+      std::ostringstream pdf_value, density;
+      pdf_value.precision(3);
+      density.precision(3);
+      pdf_value << pdf.values[worst * 16];
+      density << counts[worst] / (static_cast<double>(data.samples.size()) * measure);
+      add_hint({MessageId::sampling_pdf_disagrees,
+                {{"function", warp_pdf_function(warp)},
+                 {"point", point_text(warp, warp == Warp::UniformTriangle
+                                                ? glm::vec3(static_cast<float>(v * (1 - u)), static_cast<float>(v * u), 0.0f)
+                                                : pdf_argument_at(warp, u, v))},
+                 {"pdf", pdf_value.str()}, {"density", density.str()},
+                 warp == Warp::UniformTriangle ? MessageArg::bilingual("unit_triangle", " (on the unit triangle)", "（在单位三角形上）")
+                                               : MessageArg{"unit_triangle", ""},
+                 handout_section(warp)}});
     }
   }
   ADD_FAILURE() << warp_sample_function(warp) << "'s samples do not follow " << warp_pdf_function(warp) << " ("
