@@ -9,6 +9,10 @@
 #include "raylab/stage_table.h"
 #include "raylab/stages/01_camera_rays.h"
 #include "raylab/stages/07_sampling.h"
+#include "raylab/stages/08_direct_light.h"
+#include "raylab/stages/09_path.h"
+
+#include <cmath>
 
 #include <stdexcept>
 
@@ -91,6 +95,82 @@ Image render_stage_image(const std::string& stage_id) {
   RenderSettings settings;
   settings.max_depth = scene.max_depth;
   return render(scene, settings);
+}
+
+std::vector<glm::vec3> direct_light_samples(const DirectLightScene& test_scene, const std::vector<DirectLightQuery>& queries,
+                                            std::uint64_t seed) {
+  // The test scene: material 0 is the black occluders', then one material per emitter.
+  Scene scene;
+  scene.materials.push_back(Material{});
+  scene.materials[0].kind = MaterialKind::Diffuse;
+  scene.materials[0].diffuse_color = glm::vec3(0.0f);
+  auto material_of = [&](const glm::vec3& emission) {
+    if (emission == glm::vec3(0.0f)) return std::uint32_t{0};
+    Material material = scene.materials[0];
+    material.emission = emission;
+    scene.materials.push_back(material);
+    return static_cast<std::uint32_t>(scene.materials.size() - 1);
+  };
+  for (const DirectLightTriangle& triangle : test_scene.triangles) {
+    TriangleMesh mesh;
+    mesh.positions = {triangle.p0, triangle.p1, triangle.p2};
+    mesh.indices = {0, 1, 2};
+    mesh.material = material_of(triangle.emission);
+    scene.meshes.push_back(mesh);
+  }
+  for (const DirectLightSphere& sphere : test_scene.spheres)
+    scene.spheres.push_back(Sphere{sphere.center, sphere.radius, material_of(sphere.emission)});
+  for (const DirectLightPoint& light : test_scene.point_lights) scene.lights.push_back(PointLight{light.position, light.intensity});
+  const SceneGeometry geometry(scene, Acceleration::BruteForce);
+  const RenderContext context(scene, geometry, 0, Skips{});
+
+  std::vector<glm::vec3> samples;
+  Sampler sampler(1, seed);
+  int index = 0;
+  for (const DirectLightQuery& query : queries) {
+    SurfaceHit hit;
+    hit.point = query.point;
+    // The point is given exactly; a bound on its error keeps shadow rays off the surface.
+    hit.point_error = glm::vec3(1e-6f * (1.0f + glm::length(query.point)));
+    hit.geometric_normal = query.normal;
+    Bsdf bsdf;
+    bsdf.kind = BsdfKind::Lambertian;
+    bsdf.albedo = query.albedo;
+    for (std::uint32_t i = 0; i < query.sample_count; ++i, ++index) {
+      sampler.start_pixel_sample(index % 4096, index / 4096, 0);
+      samples.push_back(estimate_direct_light(context, hit, bsdf, query.wo, sampler));
+    }
+  }
+  return samples;
+}
+
+PathRenderResult path_render(const std::string& scene_path, const PathRenderRequest& request) {
+  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + scene_path);
+  scene.camera.width = request.width;
+  scene.camera.height = request.height;
+  if (request.albedo >= 0.0f)
+    for (Material& material : scene.materials) material.diffuse_color = glm::vec3(request.albedo);
+  if (request.probe_only) {
+    const SceneGeometry geometry(scene);
+    const RenderContext context(scene, geometry, request.max_depth, Skips{}, request.roulette_probability);
+    Ray ray;
+    ray.origin = scene.camera.position;
+    ray.direction = glm::normalize(scene.camera.look_at - scene.camera.position);
+    Sampler sampler(1, request.seed);
+    sampler.start_pixel_sample(0, 0, 0);
+    PathRenderResult result{Image(1, 1), Image(1, 1)};
+    result.mean.at(0, 0) = path_radiance(context, ray, sampler);
+    return result;
+  }
+  RenderSettings settings;
+  settings.integrator = IntegratorKind::Path;
+  settings.samples_per_pixel = request.samples_per_pixel;
+  settings.max_depth = request.max_depth;
+  settings.roulette_probability = request.roulette_probability;
+  settings.seed = request.seed;
+  settings.track_variance = true;
+  RenderOutput output = render_with_variance(scene, settings);
+  return PathRenderResult{std::move(output.mean), std::move(output.variance_of_mean)};
 }
 
 }  // namespace raylab::grading

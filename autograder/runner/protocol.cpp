@@ -59,6 +59,12 @@ const char* function_name(Function function) {
     case Function::TrianglesHit: return "intersect_ray_triangle";
     case Function::WarpSamples: return "a stage-07 warp (sample_...)";
     case Function::WarpPdfs: return "a stage-07 density (..._pdf)";
+    case Function::PointLightIntensity: return "point_light_intensity";
+    case Function::PointLightIrradiance: return "point_light_irradiance";
+    case Function::LambertianF: return "lambertian_f";
+    case Function::AreaPdfToSolidAngle: return "area_pdf_to_solid_angle";
+    case Function::DirectLightSamples: return "estimate_direct_light";
+    case Function::PathRender: return "path_radiance (rendering)";
   }
   return "a stage function";
 }

@@ -56,6 +56,12 @@ enum class Function : std::uint8_t {
   TrianglesHit,         // a batch of stage-03 or stage-03b calls on one mesh (stage_calls.h)
   WarpSamples,          // a batch of one stage-07 warp's samples (stage_calls.h)
   WarpPdfs,             // a batch of one stage-07 density's values (stage_calls.h)
+  PointLightIntensity,  // stage 08's radiometry, one call each
+  PointLightIrradiance,
+  LambertianF,
+  AreaPdfToSolidAngle,
+  DirectLightSamples,   // a batch of stage-08 estimate_direct_light calls in a test scene (stage_calls.h)
+  PathRender,           // a picture of stage 09's path_radiance, with its variance (stage_calls.h)
 };
 const char* function_name(Function function);
 

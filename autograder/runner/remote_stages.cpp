@@ -15,6 +15,8 @@
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
 #include "raylab/stages/07_sampling.h"
+#include "raylab/stages/08_direct_light.h"
+#include "raylab/stages/09_path.h"
 
 #include <cstring>
 
@@ -217,7 +219,83 @@ float uniform_triangle_pdf(const glm::vec3& p0, const glm::vec3& p1, const glm::
   return grading::warp_pdfs(grading::Warp::UniformTriangle, {p0, p1, p2})[0];
 }
 
+// Stage 08: the radiometry functions one call each; the estimator only in bulk, in a test scene
+// the server builds (grading::direct_light_samples), since a RenderContext cannot be sent.
+glm::vec3 point_light_intensity(const glm::vec3& power) {
+  Writer arguments;
+  arguments.put(power);
+  return call_returning<glm::vec3>(Function::PointLightIntensity, arguments);
+}
+glm::vec3 point_light_irradiance(const glm::vec3& intensity, const glm::vec3& light_position, const glm::vec3& point,
+                                 const glm::vec3& normal) {
+  Writer arguments;
+  arguments.put(intensity);
+  arguments.put(light_position);
+  arguments.put(point);
+  arguments.put(normal);
+  return call_returning<glm::vec3>(Function::PointLightIrradiance, arguments);
+}
+glm::vec3 lambertian_f(const glm::vec3& albedo) {
+  Writer arguments;
+  arguments.put(albedo);
+  return call_returning<glm::vec3>(Function::LambertianF, arguments);
+}
+float area_pdf_to_solid_angle(float pdf_area, float distance, float cos_at_light) {
+  Writer arguments;
+  arguments.put(pdf_area);
+  arguments.put(distance);
+  arguments.put(cos_at_light);
+  return call_returning<float>(Function::AreaPdfToSolidAngle, arguments);
+}
+glm::vec3 estimate_direct_light(const RenderContext&, const SurfaceHit&, const Bsdf&, const glm::vec3&, Sampler&) {
+  throw std::logic_error("the judge calls estimate_direct_light only through grading::direct_light_samples");
+}
+// Stage 09: only whole pictures (grading::path_render).
+glm::vec3 path_radiance(const RenderContext&, const Ray&, Sampler&) {
+  throw std::logic_error("the judge calls path_radiance only through grading::path_render");
+}
+
 namespace grading {
+
+std::vector<glm::vec3> direct_light_samples(const DirectLightScene& scene, const std::vector<DirectLightQuery>& queries,
+                                            std::uint64_t seed) {
+  Writer arguments;
+  arguments.put_vector(scene.triangles);
+  arguments.put_vector(scene.spheres);
+  arguments.put_vector(scene.point_lights);
+  arguments.put_vector(queries);
+  arguments.put(seed);
+  const std::string reply = StageSession::instance().call(Function::DirectLightSamples, arguments);
+  Reader in(reply);
+  in.get<std::uint8_t>();
+  auto samples = in.get_vector<glm::vec3>();
+  in.expect_end();
+  std::size_t expected = 0;
+  for (const DirectLightQuery& query : queries) expected += query.sample_count;
+  if (samples.size() != expected) throw protocol::ProtocolError("an answer for the wrong number of samples");
+  return samples;
+}
+
+PathRenderResult path_render(const std::string& scene_path, const PathRenderRequest& request) {
+  Writer arguments;
+  arguments.put_string(scene_path);
+  arguments.put(request);
+  const std::string reply = StageSession::instance().call(Function::PathRender, arguments);
+  Reader in(reply);
+  in.get<std::uint8_t>();
+  const int width = in.get<int>(), height = in.get<int>();
+  const auto mean = in.get_vector<glm::vec3>();
+  const auto variance = in.get_vector<glm::vec3>();
+  in.expect_end();
+  const int expected_width = request.probe_only ? 1 : request.width, expected_height = request.probe_only ? 1 : request.height;
+  const std::size_t pixels = static_cast<std::size_t>(expected_width) * static_cast<std::size_t>(expected_height);
+  if (width != expected_width || height != expected_height || mean.size() != pixels || variance.size() != pixels)
+    throw protocol::ProtocolError("a picture of the wrong size");
+  PathRenderResult result{Image(width, height), Image(width, height)};
+  std::memcpy(result.mean.data(), mean.data(), pixels * sizeof(glm::vec3));
+  std::memcpy(result.variance_of_mean.data(), variance.data(), pixels * sizeof(glm::vec3));
+  return result;
+}
 
 std::vector<glm::vec3> warp_samples(Warp warp, const std::vector<glm::vec2>& uniform_randoms) {
   Writer arguments;

@@ -46,6 +46,54 @@ std::vector<glm::vec3> warp_samples(Warp warp, const std::vector<glm::vec2>& uni
 // triangle, three consecutive vec3 are one call's corners (p0, p1, p2).
 std::vector<float> warp_pdfs(Warp warp, const std::vector<glm::vec3>& arguments);
 
+// Stage 08: a test scene for estimate_direct_light, built in the stage server. Every triangle
+// and sphere emits its radiance from its front (a triangle's by winding); a triangle of zero
+// emission is an occluder (black). Plain values only: the judge sends them as they are.
+struct DirectLightTriangle {
+  glm::vec3 p0{0.0f}, p1{0.0f}, p2{0.0f};
+  glm::vec3 emission{0.0f};
+};
+struct DirectLightSphere {
+  glm::vec3 center{0.0f};
+  float radius = 1.0f;
+  glm::vec3 emission{0.0f};
+};
+struct DirectLightPoint {
+  glm::vec3 position{0.0f};
+  glm::vec3 intensity{0.0f};
+};
+struct DirectLightScene {
+  std::vector<DirectLightTriangle> triangles;
+  std::vector<DirectLightSphere> spheres;
+  std::vector<DirectLightPoint> point_lights;
+};
+// A diffuse surface point that is not part of the scene: where, its unit normal, the unit
+// direction towards the viewer, its albedo, and how many independent samples to take there.
+struct DirectLightQuery {
+  glm::vec3 point{0.0f}, normal{0.0f, 0.0f, 1.0f}, wo{0.0f, 0.0f, 1.0f}, albedo{0.5f};
+  std::uint32_t sample_count = 1;
+};
+// estimate_direct_light's samples, query after query (sample_count of each), each drawn with a
+// fresh 1-spp sampler of `seed` (independent numbers).
+std::vector<glm::vec3> direct_light_samples(const DirectLightScene& scene, const std::vector<DirectLightQuery>& queries,
+                                            std::uint64_t seed);
+
+// Stage 09: a scene file of the kit rendered with the path integrator (path_radiance), with
+// changes for the test: each pixel's mean and its variance of the mean (film.h).
+struct PathRenderRequest {
+  int width = 32, height = 32, samples_per_pixel = 4, max_depth = 5;
+  float roulette_probability = 1.0f;
+  float albedo = -1.0f;  // >= 0: every material's diffuse colour becomes this grey (furnaces)
+  std::uint64_t seed = 0;
+  // 1: no picture, one path_radiance call along the camera's view direction (the stage's probe:
+  // it reaches path_radiance before any other stage's function), returned as a 1x1 picture.
+  int probe_only = 0;
+};
+struct PathRenderResult {
+  Image mean, variance_of_mean;
+};
+PathRenderResult path_render(const std::string& scene_path, const PathRenderRequest& request);
+
 // The grader's own triangle test (Cramer's rule in double), as a PrimitiveIntersector test over
 // `triangles` (a const std::vector<protocol::Triangle>*), so that BVH grades do not depend on
 // your stage 3.

@@ -12,6 +12,7 @@
 #include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
+#include "raylab/stages/08_direct_light.h"
 
 #include <exception>
 #include <new>
@@ -132,6 +133,47 @@ void answer(Reader& in, Writer& out, Cache& cache) {
       const auto warp = in.get<Warp>();
       const auto arguments = in.get_vector<glm::vec3>();
       out.put_vector(warp_pdfs(warp, arguments));
+      return;
+    }
+    case Function::PointLightIntensity: {
+      const auto power = in.get<glm::vec3>();
+      out.put(point_light_intensity(power));
+      return;
+    }
+    case Function::PointLightIrradiance: {
+      const auto intensity = in.get<glm::vec3>();
+      const auto position = in.get<glm::vec3>(), point = in.get<glm::vec3>(), normal = in.get<glm::vec3>();
+      out.put(point_light_irradiance(intensity, position, point, normal));
+      return;
+    }
+    case Function::LambertianF: {
+      const auto albedo = in.get<glm::vec3>();
+      out.put(lambertian_f(albedo));
+      return;
+    }
+    case Function::AreaPdfToSolidAngle: {
+      const auto pdf_area = in.get<float>(), distance = in.get<float>(), cos_at_light = in.get<float>();
+      out.put(area_pdf_to_solid_angle(pdf_area, distance, cos_at_light));
+      return;
+    }
+    case Function::DirectLightSamples: {
+      DirectLightScene scene;
+      scene.triangles = in.get_vector<DirectLightTriangle>();
+      scene.spheres = in.get_vector<DirectLightSphere>();
+      scene.point_lights = in.get_vector<DirectLightPoint>();
+      const auto queries = in.get_vector<DirectLightQuery>();
+      const auto seed = in.get<std::uint64_t>();
+      out.put_vector(direct_light_samples(scene, queries, seed));
+      return;
+    }
+    case Function::PathRender: {
+      const std::string scene_path = in.get_string();
+      const auto request = in.get<PathRenderRequest>();
+      const PathRenderResult result = path_render(scene_path, request);
+      out.put<int>(result.mean.width());
+      out.put<int>(result.mean.height());
+      out.put_vector(result.mean.pixels());
+      out.put_vector(result.variance_of_mean.pixels());
       return;
     }
     case Function::RenderStageImage: {

@@ -3,6 +3,7 @@
 #include "raylab/sampling.h"
 #include "raylab/shading.h"
 #include "raylab/stages/07_sampling.h"
+#include "raylab/stages/08_direct_light.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,7 @@ glm::vec3 bsdf_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo,
   if (bsdf.kind != BsdfKind::Lambertian) return glm::vec3(0.0f);
   const float cos_o = glm::dot(normal, wo), cos_i = glm::dot(normal, wi);
   if (!(cos_o * cos_i > 0.0f)) return glm::vec3(0.0f);  // wi on the other side: no transmission
-  return bsdf.albedo * (1.0f / kPi);
+  return lambertian_f(bsdf.albedo);
 }
 
 float bsdf_pdf(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, const glm::vec3& wi) {
@@ -37,7 +38,7 @@ std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& norma
       sample.wi = glm::normalize(Frame(facing_normal).to_world(local));
       const float cos_i = glm::dot(facing_normal, sample.wi);
       if (!(cos_i > 0.0f)) return std::nullopt;
-      sample.f = bsdf.albedo * (1.0f / kPi);
+      sample.f = lambertian_f(bsdf.albedo);
       sample.pdf = cosine_hemisphere_pdf(local);
       if (!(sample.pdf > 0.0f) || !std::isfinite(sample.pdf)) return std::nullopt;
       return sample;

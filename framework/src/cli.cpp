@@ -30,8 +30,9 @@ struct RenderOptions {
   int max_depth = -1;         // -1: the scene's
   int threads = 0;            // 0: every core
   int samples_per_pixel = 1;
+  float roulette = 1.0f;      // the path tracer's Russian roulette probability (1: none)
   std::uint64_t seed = 0;
-  std::string integrator = "whitted";
+  std::string integrator;     // empty: the scene's ("integrator", whitted by default)
   std::string variance_path;  // empty: no variance image
   bool quiet = false;
   bool watertight = false;
@@ -40,9 +41,12 @@ struct RenderOptions {
 int run_render(const RenderOptions& options) {
   check_image_extension(options.output_path);
   if (!options.variance_path.empty()) check_image_extension(options.variance_path);
-  const std::optional<IntegratorKind> integrator = integrator_from_name(options.integrator);
-  if (!integrator) throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct)");
+  if (!options.integrator.empty() && !integrator_from_name(options.integrator))
+    throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct, path)");
   Scene scene = load_scene(options.scene_path);
+  const std::optional<IntegratorKind> integrator =
+      integrator_from_name(options.integrator.empty() ? scene.integrator : options.integrator);
+  if (!integrator) throw UsageError("unknown integrator '" + scene.integrator + "'");
   if (options.width > 0) scene.camera.width = options.width;
   if (options.height > 0) scene.camera.height = options.height;
   try {
@@ -56,6 +60,7 @@ int run_render(const RenderOptions& options) {
   settings.seed = options.seed;
   settings.track_variance = !options.variance_path.empty();
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
+  settings.roulette_probability = options.roulette;
   settings.threads = options.threads;
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
   settings.show_progress = !options.quiet && RAYLAB_ISATTY(stderr);
@@ -92,7 +97,13 @@ int run_cli(int argc, char** argv) {
   render_command->add_option("--spp", options.samples_per_pixel,
                              "Samples per pixel (default 1: one ray through each pixel's centre)")
       ->check(CLI::Range(1, kMaxSamplesPerPixel));
-  render_command->add_option("--integrator", options.integrator, "How light is computed: whitted (default) or direct (area and point lights, BSDFs)");
+  render_command->add_option("--integrator", options.integrator,
+                             "How light is computed (default: the scene's, else whitted): whitted, direct (area and point lights, BSDFs) or path "
+                             "(path tracing, stage 09)");
+  render_command->add_option("--roulette", options.roulette,
+                             "path: the chance that a path goes on at each bounce, in (0, 1] (default 1: no Russian "
+                             "roulette, paths end at --max-depth)")
+      ->check(CLI::Range(0.001f, 1.0f));
   render_command->add_option("--seed", options.seed, "Seed of the random numbers (default 0)");
   render_command->add_option("--variance", options.variance_path,
                              "Also write each pixel's variance of the mean (.exr keeps it linear)");

@@ -1,10 +1,12 @@
 // The direct-light integrator: emission seen directly or through mirrors and glass, plus, at
 // the first diffuse surface, the light arriving straight from the lights (one light chosen
-// per sample, one point sampled on it, one shadow ray). No indirect diffuse light: the
-// reference against which the path tracer's first bounce can be checked.
+// per sample, one point sampled on it, one shadow ray: stage 08's estimate_direct_light). No
+// indirect diffuse light: the reference against which the path tracer's first bounce can be
+// checked.
 #include "raylab/integrator.h"
 
 #include "raylab/bsdf.h"
+#include "raylab/stages/08_direct_light.h"
 
 #include <cmath>
 
@@ -45,23 +47,10 @@ glm::vec3 direct_light_li(const RenderContext& context, const Ray& camera_ray, S
       continue;
     }
 
-    // A diffuse surface: sample one light, then one point or direction on it.
+    // A diffuse surface: one sample of the light arriving straight from the lights (stage 08).
     if (lights.empty() || bsdf.albedo == glm::vec3(0.0f)) return radiance;
-    float choice_probability = 0.0f;
-    const Light& light = lights[lights.choose(sampler.get_1d(), &choice_probability)];
-    const std::optional<LightSample> light_sample = sample_li(light, hit->point, sampler.get_2d());
-    if (!light_sample) return radiance;
-    const glm::vec3 f = bsdf_f(bsdf, normal, wo, light_sample->direction);
-    if (f == glm::vec3(0.0f)) return radiance;  // the light is behind the surface
-    Ray shadow;
-    shadow.origin = offset_ray_origin(*hit, light_sample->direction);
-    shadow.direction = light_sample->point - shadow.origin;
-    shadow.t_max = 1.0f - 1e-4f;  // stop just short of the light's point
     ++stats.shadow_rays;
-    if (context.geometry.occluded(shadow)) return radiance;
-    const float cos_surface = std::fabs(glm::dot(normal, light_sample->direction));
-    return radiance + throughput * f * light_sample->radiance *
-                          (cos_surface / (light_sample->pdf * choice_probability));
+    return radiance + throughput * estimate_direct_light(context, *hit, bsdf, wo, sampler);
   }
 }
 

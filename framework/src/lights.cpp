@@ -1,6 +1,7 @@
 #include "raylab/lights.h"
 
 #include "raylab/shapes.h"
+#include "raylab/stages/08_direct_light.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,7 @@ std::optional<LightSample> area_sample(const ShapeSample& shape, const glm::vec3
   sample.direction = to_light / sample.distance;
   const float cos_light = -glm::dot(shape.normal, sample.direction);
   if (!(cos_light > 0.0f)) return std::nullopt;  // seen edge-on (no solid angle) or from the back (dark)
-  sample.pdf = shape.pdf_area * distance_squared / cos_light;
+  sample.pdf = area_pdf_to_solid_angle(shape.pdf_area, sample.distance, cos_light);  // stage 08
   if (!std::isfinite(sample.pdf)) return std::nullopt;
   sample.radiance = radiance;
   sample.point = shape.point;

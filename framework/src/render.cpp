@@ -58,7 +58,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   if (settings.track_variance) output.variance_of_mean = Image(camera.width, camera.height);
   const SceneGeometry geometry(scene, settings.skips.no_bvh_for_small_sets ? Acceleration::Bvh : Acceleration::BvhAlways,
                                settings.triangle_test);
-  const RenderContext context(scene, geometry, settings.max_depth, settings.skips);
+  const RenderContext context(scene, geometry, settings.max_depth, settings.skips, settings.roulette_probability);
   const Integrator integrator(settings.integrator);
   const int samples_per_pixel = settings.samples_per_pixel;
   const bool one_plain_sample = samples_per_pixel == 1 && !settings.track_variance;

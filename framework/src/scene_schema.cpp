@@ -139,12 +139,17 @@ void transform_mesh(const JsonReader& r, const std::string& path, TriangleMesh& 
 
 Scene read_scene(const JsonReader& r, const json& root, const std::string& base_directory) {
   r.expect_object(root, "");
-  r.check_keys(root, "", {"camera", "background", "max_depth", "materials", "objects", "lights"});
+  r.check_keys(root, "", {"camera", "background", "max_depth", "integrator", "materials", "objects", "lights"});
   Scene scene;
   scene.source = r.source();
   scene.camera = read_camera(r, r.require(root, "", "camera"), "/camera");
   if (root.contains("background")) scene.background = r.color(root["background"], "/background");
   if (root.contains("max_depth")) scene.max_depth = r.integer(root["max_depth"], "/max_depth", 0, 64);
+  if (root.contains("integrator")) {
+    scene.integrator = r.string(root["integrator"], "/integrator");
+    if (scene.integrator != "whitted" && scene.integrator != "direct" && scene.integrator != "path")
+      r.fail("/integrator", "unknown integrator '" + scene.integrator + "' (expected whitted, direct or path)");
+  }
 
   std::map<std::string, std::uint32_t> material_index;
   if (root.contains("materials")) {

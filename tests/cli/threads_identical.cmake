@@ -1,14 +1,19 @@
-# cmake -DPROGRAM=raylab-reference -DSCENE=scene.json -DOUTPUT_DIR=dir -P threads_identical.cmake
+# cmake -DPROGRAM=raylab-reference -DSCENE=scene.json -DOUTPUT_DIR=dir [-DINTEGRATOR=path] -P threads_identical.cmake
 # Renders SCENE with --threads 1 and --threads 2, at 1 and at 4 samples per pixel, and fails
 # unless the two PNG files of each sample count are byte-identical: each pixel must depend
-# only on the scene and the sample count, never on which thread drew it.
+# only on the scene and the sample count, never on which thread drew it. INTEGRATOR (default
+# the renderer's) is passed as --integrator.
+set(integrator_arguments "")
+if(INTEGRATOR)
+  set(integrator_arguments --integrator ${INTEGRATOR})
+endif()
 foreach(spp 1 4)
   foreach(threads 1 2)
     set(image "${OUTPUT_DIR}/threads_${threads}_spp_${spp}.png")
     file(REMOVE "${image}")
     execute_process(
       COMMAND "${PROGRAM}" render "${SCENE}" -o "${image}" --width 160 --height 120 -q --threads ${threads}
-              --spp ${spp}
+              --spp ${spp} ${integrator_arguments}
       RESULT_VARIABLE status ERROR_VARIABLE err)
     if(NOT status EQUAL 0 OR NOT EXISTS "${image}")
       message(FATAL_ERROR "--threads ${threads} --spp ${spp}: exit status ${status}, no ${image}\nstderr: ${err}")

@@ -8,7 +8,8 @@
 // the side of wo decides "outside" for the Lambertian and the mirror; for the dielectric the
 // normal's side is the outside (the side the index of refraction 1 is on).
 //
-// Lambertian  f = albedo / pi on wo's side, sampled cosine-weighted (pdf = |cos| / pi).
+// Lambertian  f = albedo / pi on wo's side (stage 08's lambertian_f), sampled cosine-weighted
+//             (pdf = |cos| / pi).
 // Mirror      perfect specular reflection, weight reflectance * Fresnel (fresnel_ior > 0: the
 //             dielectric Fresnel reflectance of GAMES101's "reflective"; 0: none).
 // Dielectric  glass: reflection with probability F (Fresnel), refraction with 1 - F; the

@@ -32,18 +32,23 @@ struct RenderContext {
   SceneNeeds needs;
   LightSet lights;    // point lights and emitters (empty: no light sampling)
   int max_depth = 5;  // bounces after the camera ray
+  // The path tracer's Russian roulette: the chance, in (0, 1], that a path goes on at each
+  // bounce (1: no roulette; paths end at max_depth only).
+  float roulette_probability = 1.0f;
   Skips skips;
 
-  RenderContext(const Scene& scene_, const SceneGeometry& geometry_, int max_depth_, const Skips& skips_);
+  RenderContext(const Scene& scene_, const SceneGeometry& geometry_, int max_depth_, const Skips& skips_,
+                float roulette_probability_ = 1.0f);
 };
 
 enum class IntegratorKind {
   Whitted,      // GAMES101 assignment 5: point lights, Phong, mirror and glass; no randomness
   DirectLight,  // emission + light straight from point and area lights at the first diffuse
                 // surface (through mirrors and glass), with BSDFs (bsdf.h); no indirect light
+  Path,         // GAMES101 assignment 7: Monte Carlo path tracing (stage 09's path_radiance)
 };
 
-// "whitted" -> Whitted, "direct" -> DirectLight; nullopt for an unknown name.
+// "whitted" -> Whitted, "direct" -> DirectLight, "path" -> Path; nullopt for an unknown name.
 std::optional<IntegratorKind> integrator_from_name(const std::string& name);
 const char* integrator_name(IntegratorKind kind);
 
@@ -66,9 +71,12 @@ class Integrator {
 glm::vec3 whitted_li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats);
 
 // Direct lighting (direct_light.cpp): per sample, a specular chain up to max_depth, then at
-// the first diffuse surface one light chosen uniformly and one point on it, with its shadow
-// ray: L = Le + f Li |cos| / (pdf_light * p_choice). Point lights fall off as 1 / d^2 here.
+// the first diffuse surface one sample of stage 08's estimate_direct_light (one light, one point
+// on it, its shadow ray). Point lights fall off as 1 / d^2 here.
 glm::vec3 direct_light_li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats);
+
+// Path tracing (path.cpp): stage 09's path_radiance, with the camera ray counted.
+glm::vec3 path_li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats);
 
 // One switch per camera ray (inline: the renderer calls it for every sample).
 inline glm::vec3 Integrator::li(const RenderContext& context, const Ray& ray, Sampler& sampler,
@@ -76,6 +84,7 @@ inline glm::vec3 Integrator::li(const RenderContext& context, const Ray& ray, Sa
   switch (kind_) {
     case IntegratorKind::Whitted: return whitted_li(context, ray, sampler, stats);
     case IntegratorKind::DirectLight: return direct_light_li(context, ray, sampler, stats);
+    case IntegratorKind::Path: return path_li(context, ray, sampler, stats);
   }
   return glm::vec3(0.0f);
 }

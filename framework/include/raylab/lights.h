@@ -9,7 +9,8 @@
 //                  (Material::emission, radiance in W / (m^2 sr)) from its front: the side
 //                  its geometric normal points to (a triangle's by winding, a sphere's out);
 //                  sampled uniformly by area, the density turned into solid angle:
-//                  pdf_solid_angle = pdf_area * distance^2 / |cos theta_light|.
+//                  pdf_solid_angle = pdf_area * distance^2 / |cos theta_light| (stage 08's
+//                  area_pdf_to_solid_angle).
 // A scene without point lights and without emitters has an empty LightSet: no light
 // sampling, no shadow rays.
 #pragma once

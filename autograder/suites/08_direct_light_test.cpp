@@ -1,0 +1,321 @@
+// Autograder suite for stage 08_direct_light (30 points).
+//
+// The radiometry functions are judged against exact formulas (float tolerance), each wrong value
+// checked against the mistakes that explain it. The one-sample estimator runs in the stage
+// server, in test scenes the judge describes (stage_calls.h: direct_light_samples), and the judge
+// t-tests the mean of its samples against the direct light in closed form: Lambert's formula for
+// a polygon light, pi L (r / d)^2 cos for a sphere light above the horizon, I cos / d^2 for a
+// point light, 0 behind an occluder.
+//
+// False failures: the estimator's mean tests (kMeanTests of them, one per query and channel)
+// share kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected); the exact checks
+// have tolerances for float rounding that a correct implementation never exceeds.
+#include "grading.h"
+#include "stage_calls.h"
+#include "support.h"
+
+#include "raylab/error.h"
+#include "raylab/math.h"
+#include "raylab/stages/08_direct_light.h"
+#include "raylab/testkit/statistics.h"
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab::grading {
+namespace {
+
+constexpr const char* kStage = "08_direct_light";
+constexpr double kPiD = 3.14159265358979323846;
+constexpr std::uint32_t kSamplesPerQuery = 20000;
+constexpr int kMeanTests = 15;  // 5 queries x 3 channels (EstimatorUnderQuadLight, EstimatorSeveralLights)
+const double kLevel = testkit::sidak_level(testkit::kGraderFalseFailureRate, kMeanTests);
+
+const bool kRegistered = register_stage(kStage, [] {
+  std::optional<NotImplemented> first;
+  int stubs = 0;
+  auto probe = [&](auto call) {
+    try {
+      call();
+    } catch (const NotImplemented& e) {
+      if (e.stage_id() != kStage) return;  // a stub of stage 07 that it samples with
+      ++stubs;
+      if (!first) first = e;
+    }
+  };
+  probe([] { (void)point_light_intensity(glm::vec3(1.0f)); });
+  probe([] { (void)point_light_irradiance(glm::vec3(1.0f), glm::vec3(0, 0, 1), glm::vec3(0.0f), glm::vec3(0, 0, 1)); });
+  probe([] { (void)lambertian_f(glm::vec3(0.5f)); });
+  probe([] { (void)area_pdf_to_solid_angle(1.0f, 1.0f, 1.0f); });
+  probe([] {
+    DirectLightScene scene;
+    scene.point_lights.push_back({glm::vec3(0, 0, 1), glm::vec3(1.0f)});
+    (void)direct_light_samples(scene, {DirectLightQuery{}}, 1);
+  });
+  if (stubs == 5 && first) throw *first;
+});
+
+std::string text(const glm::vec3& v) { return gtest_text(v); }
+std::string text(float v) { return gtest_text(v); }
+
+bool close(double got, double expected, double relative = 1e-5) {
+  return std::fabs(got - expected) <= relative * std::fabs(expected) + 1e-30;
+}
+bool close(const glm::vec3& got, const glm::dvec3& expected, double relative = 1e-5) {
+  return close(got.x, expected.x, relative) && close(got.y, expected.y, relative) && close(got.z, expected.z, relative);
+}
+
+void fail_value(const std::string& call, const std::string& got, const std::string& expected) {
+  add_failure({MessageId::direct_failure_value, {{"call", call}, {"got", got}, {"expected", expected}}});
+}
+
+// ---- Exact functions ---------------------------------------------------------------------
+
+GRADED_TEST(kStage, Stage08DirectLight, PointLightIntensityFromPower, 3) {
+  const glm::vec3 powers[] = {glm::vec3(4.0f * kPi), glm::vec3(100.0f, 50.0f, 10.0f), glm::vec3(1.0f, 0.0f, 2.5f)};
+  for (const glm::vec3& power : powers) {
+    const glm::vec3 got = point_light_intensity(power);
+    const glm::dvec3 expected = glm::dvec3(power) / (4.0 * kPiD);
+    if (close(got, expected)) continue;
+    fail_value("point_light_intensity(" + text(power) + ")", text(got), text(glm::vec3(expected)));
+    if (hint_if_not_finite("point_light_intensity", {got.x, got.y, got.z}, {MessageId::direct_advice_division, {}})) return;
+    const double ratio = got.x / power.x;  // power.x > 0 in every case
+    for (const double divisor : {1.0, kPiD, 2.0 * kPiD, 4.0, 2.0})
+      if (close(ratio, 1.0 / divisor, 1e-4))
+        add_hint({MessageId::direct_intensity_not_over_sphere, {{"divisor", divisor == 1.0 ? "1" : divisor == kPiD ? "pi" : divisor == 2.0 * kPiD ? "2 pi" : divisor == 4.0 ? "4" : "2"}}});
+    return;
+  }
+}
+
+GRADED_TEST(kStage, Stage08DirectLight, PointLightIrradiance, 5) {
+  struct Case {
+    glm::vec3 intensity, light, point, normal;
+  };
+  const Case cases[] = {
+      {glm::vec3(10.0f), glm::vec3(0, 0, 2), glm::vec3(0.0f), glm::vec3(0, 0, 1)},                  // overhead
+      {glm::vec3(3.0f, 2.0f, 1.0f), glm::vec3(3, 0, 4), glm::vec3(0.0f), glm::vec3(0, 0, 1)},        // cos 0.8, d 5
+      {glm::vec3(7.0f), glm::vec3(1, 2, 3), glm::vec3(0.5f, -1, 0.25f), glm::normalize(glm::vec3(1, 1, 2))},
+      {glm::vec3(5.0f), glm::vec3(0, 0, -2), glm::vec3(0.0f), glm::vec3(0, 0, 1)},                 // behind
+  };
+  for (const Case& c : cases) {
+    const glm::vec3 got = point_light_irradiance(c.intensity, c.light, c.point, c.normal);
+    const glm::dvec3 to_light = glm::dvec3(c.light) - glm::dvec3(c.point);
+    const double d = glm::length(to_light);
+    const double cosine = glm::dot(glm::dvec3(c.normal), to_light) / d;
+    const glm::dvec3 expected = cosine > 0 ? glm::dvec3(c.intensity) * (cosine / (d * d)) : glm::dvec3(0.0);
+    if (close(got, expected, 2e-5)) continue;
+    const std::string call = "point_light_irradiance(intensity " + text(c.intensity) + ", light at " + text(c.light) +
+                             ", point " + text(c.point) + ", normal " + text(c.normal) + ")";
+    fail_value(call, text(got), text(glm::vec3(expected)));
+    if (hint_if_not_finite("point_light_irradiance", {got.x, got.y, got.z}, {MessageId::direct_advice_division, {}})) return;
+    const glm::dvec3 intensity(c.intensity);
+    if (cosine <= 0) add_hint({MessageId::direct_irradiance_behind, {}});
+    else if (close(got, intensity / (d * d), 1e-4)) add_hint({MessageId::direct_irradiance_no_cosine, {}});
+    else if (close(got, intensity * (cosine / d), 1e-4)) add_hint({MessageId::direct_irradiance_not_squared, {}});
+    return;
+  }
+}
+
+GRADED_TEST(kStage, Stage08DirectLight, LambertianF, 4) {
+  const glm::vec3 albedos[] = {glm::vec3(1.0f), glm::vec3(0.725f, 0.71f, 0.68f), glm::vec3(0.0f, 0.5f, 0.25f)};
+  for (const glm::vec3& albedo : albedos) {
+    const glm::vec3 got = lambertian_f(albedo);
+    const glm::dvec3 expected = glm::dvec3(albedo) / kPiD;
+    if (close(got, expected)) continue;
+    fail_value("lambertian_f(" + text(albedo) + ")", text(got), text(glm::vec3(expected)));
+    if (hint_if_not_finite("lambertian_f", {got.x, got.y, got.z}, {MessageId::direct_advice_division, {}})) return;
+    if (close(got, glm::dvec3(albedo), 1e-4)) add_hint({MessageId::direct_lambertian_no_pi, {}});
+    else if (close(got, glm::dvec3(albedo) / (2.0 * kPiD), 1e-4)) add_hint({MessageId::direct_lambertian_two_pi, {}});
+    return;
+  }
+}
+
+GRADED_TEST(kStage, Stage08DirectLight, AreaPdfToSolidAngle, 5) {
+  struct Case {
+    float pdf_area, distance, cos_at_light;
+  };
+  const Case cases[] = {{0.5f, 2.0f, 1.0f}, {0.01f, 3.0f, 0.6f}, {2.0f, 0.5f, 0.25f}, {1.0f / 13650.0f, 400.0f, 0.8f}};
+  for (const Case& c : cases) {
+    const float got = area_pdf_to_solid_angle(c.pdf_area, c.distance, c.cos_at_light);
+    const double pdf = c.pdf_area, d = c.distance, cosine = c.cos_at_light;
+    const double expected = pdf * d * d / cosine;
+    if (close(got, expected, 2e-5)) continue;
+    const std::string call = "area_pdf_to_solid_angle(pdf_area " + text(c.pdf_area) + ", distance " + text(c.distance) +
+                             ", cos_at_light " + text(c.cos_at_light) + ")";
+    fail_value(call, text(got), gtest_text(static_cast<float>(expected)));
+    if (hint_if_not_finite("area_pdf_to_solid_angle", {got}, {MessageId::direct_advice_division, {}})) return;
+    if (close(got, pdf, 1e-4)) add_hint({MessageId::direct_pdf_not_converted, {}});
+    else if (close(got, pdf * d * d, 1e-4)) add_hint({MessageId::direct_pdf_no_cosine, {}});
+    else if (close(got, pdf * d / cosine, 1e-4)) add_hint({MessageId::direct_pdf_not_squared, {}});
+    else if (close(got, pdf * cosine / (d * d), 1e-4)) add_hint({MessageId::direct_pdf_inverted, {}});
+    return;
+  }
+}
+
+// ---- The estimator -------------------------------------------------------------------------
+
+// Irradiance at x (unit normal n) from a polygon of radiance 1 seen from its front, wholly above
+// x's horizon: Lambert's formula, E = 1/2 sum_i angle(v_i, v_i+1) (n . unit(v_i x v_i+1)).
+double polygon_irradiance(const std::vector<glm::dvec3>& corners, const glm::dvec3& x, const glm::dvec3& n) {
+  double sum = 0;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const glm::dvec3 a = glm::normalize(corners[i] - x), b = glm::normalize(corners[(i + 1) % corners.size()] - x);
+    const double angle = std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
+    sum += angle * glm::dot(n, glm::normalize(glm::cross(a, b)));
+  }
+  return 0.5 * std::fabs(sum);
+}
+
+// A quad light facing down (-y) at height y, x in [x0, x1], z in [z0, z1], as two triangles.
+void add_quad_light(DirectLightScene& scene, float x0, float x1, float z0, float z1, float y, const glm::vec3& radiance) {
+  const glm::vec3 a(x1, y, z0), b(x1, y, z1), c(x0, y, z1), d(x0, y, z0);
+  scene.triangles.push_back({a, b, c, radiance});  // wound so that its normal points down
+  scene.triangles.push_back({a, c, d, radiance});
+}
+
+struct Expectation {
+  std::string what;
+  DirectLightQuery query;
+  glm::dvec3 radiance;  // the exact expected value of the estimate
+};
+
+// Runs the queries, t-tests each channel's mean; names the first failure and the mistakes that fit.
+void expect_means(const DirectLightScene& scene, const std::vector<Expectation>& expectations, int light_count) {
+  std::vector<DirectLightQuery> queries;
+  for (const Expectation& e : expectations) queries.push_back(e.query);
+  const std::vector<glm::vec3> samples = direct_light_samples(scene, queries, 8);
+  std::size_t offset = 0;
+  bool failed = false;
+  for (const Expectation& e : expectations) {
+    testkit::RunningMoments moments[3];
+    for (std::uint32_t i = 0; i < e.query.sample_count; ++i)
+      for (int c = 0; c < 3; ++c) moments[c].add(samples[offset + i][c]);
+    for (std::uint32_t i = 0; i < e.query.sample_count; ++i) {
+      const glm::vec3& s = samples[offset + i];
+      if (hint_if_not_finite("estimate_direct_light (" + e.what + ")", {s.x, s.y, s.z},
+                             {MessageId::direct_advice_division, {}}))
+        return add_failure({MessageId::direct_failure_not_finite, {{"what", e.what}}});
+    }
+    offset += e.query.sample_count;
+    for (int c = 0; c < 3; ++c) {
+      const testkit::MeanTestResult result = testkit::mean_test(moments[c], e.radiance[c], kLevel);
+      if (result.passed || failed) continue;
+      failed = true;
+      add_failure({MessageId::direct_failure_mean,
+                   {{"what", e.what},
+                    {"count", std::to_string(result.count)},
+                    {"channel", std::to_string(c)},
+                    {"mean", gtest_text(result.mean)},
+                    {"error", gtest_text(result.standard_error)},
+                    {"expected", gtest_text(result.expected_mean)},
+                    {"p_value", gtest_text(result.p_value)},
+                    {"level", gtest_text(result.significance_level)}}});
+      const double ratio = result.mean / result.expected_mean;
+      // Which simple factor explains the mean? (Judged against the noise: within 4 standard errors.)
+      auto fits = [&](double factor) {
+        return std::fabs(result.mean - factor * result.expected_mean) <= 4.0 * result.standard_error + 1e-9;
+      };
+      if (light_count > 1 && fits(1.0 / light_count))
+        add_hint({MessageId::direct_estimate_no_choice_probability, {{"lights", std::to_string(light_count)}}});
+      else if (fits(kPiD))
+        add_hint({MessageId::direct_estimate_times_pi, {}});
+      else
+        add_hint({MessageId::direct_estimate_ratio, {{"ratio", gtest_text(ratio)}}});
+    }
+  }
+}
+
+GRADED_TEST(kStage, Stage08DirectLight, EstimatorUnderQuadLight, 5) {
+  // GAMES101's ceiling light, radiance 10, and points under it: on the floor below, off to the
+  // side, and on a tilted surface.
+  DirectLightScene scene;
+  add_quad_light(scene, 213, 343, 227, 332, 548.7f, glm::vec3(10.0f, 8.0f, 6.0f));
+  const std::vector<glm::dvec3> corners = {{213, 548.7, 227}, {213, 548.7, 332}, {343, 548.7, 332}, {343, 548.7, 227}};
+  std::vector<Expectation> expectations;
+  auto add = [&](const std::string& what, glm::vec3 point, glm::vec3 normal, glm::vec3 albedo) {
+    normal = glm::normalize(normal);
+    const double e = polygon_irradiance(corners, glm::dvec3(point), glm::dvec3(normal));
+    const glm::dvec3 radiance = glm::dvec3(albedo) / kPiD * glm::dvec3(10.0, 8.0, 6.0) * e;
+    expectations.push_back({what, DirectLightQuery{point, normal, normal, albedo, kSamplesPerQuery}, radiance});
+  };
+  add("floor under the light", glm::vec3(278, 0, 280), glm::vec3(0, 1, 0), glm::vec3(0.725f, 0.71f, 0.68f));
+  add("floor near a wall", glm::vec3(40, 0, 500), glm::vec3(0, 1, 0), glm::vec3(0.5f));
+  add("a tilted surface", glm::vec3(300, 200, 100), glm::vec3(0.3f, 1.0f, 0.5f), glm::vec3(0.63f, 0.065f, 0.05f));
+  expect_means(scene, expectations, 2);
+}
+
+GRADED_TEST(kStage, Stage08DirectLight, EstimatorSeveralLights, 4) {
+  // A triangle light, a sphere light and a point light together; the estimator picks one per
+  // sample, so it must divide by the chance of the one it picked.
+  DirectLightScene scene;
+  const glm::vec3 t0(-1, 3, -1), t1(1, 3, 0), t2(-1, 3, 1);  // faces down (by its winding)
+  scene.triangles.push_back({t0, t1, t2, glm::vec3(4.0f)});
+  scene.spheres.push_back({glm::vec3(3, 2, 0), 0.5f, glm::vec3(2.0f, 3.0f, 1.0f)});
+  scene.point_lights.push_back({glm::vec3(-2, 2, 1), glm::vec3(5.0f, 1.0f, 2.0f)});
+  std::vector<Expectation> expectations;
+  auto add = [&](const std::string& what, glm::vec3 point, glm::vec3 normal, glm::vec3 albedo) {
+    normal = glm::normalize(normal);
+    const glm::dvec3 x(point), n(normal);
+    glm::dvec3 e = glm::dvec3(4.0) * polygon_irradiance({glm::dvec3(t0), glm::dvec3(t1), glm::dvec3(t2)}, x, n);
+    const glm::dvec3 to_sphere = glm::dvec3(3, 2, 0) - x;
+    const double d = glm::length(to_sphere);
+    e += glm::dvec3(2.0, 3.0, 1.0) * (kPiD * (0.25 / (d * d)) * glm::dot(n, to_sphere / d));
+    const glm::dvec3 to_point = glm::dvec3(-2, 2, 1) - x;
+    const double dp = glm::length(to_point);
+    e += glm::dvec3(5.0, 1.0, 2.0) * (glm::dot(n, to_point / dp) / (dp * dp));
+    expectations.push_back({what, DirectLightQuery{point, normal, normal, albedo, kSamplesPerQuery},
+                            glm::dvec3(albedo) / kPiD * e});
+  };
+  add("a point lit by a triangle, a sphere and a point light", glm::vec3(0, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0.8f));
+  add("a tilted point lit by all three", glm::vec3(0.5f, 0.2f, 0.3f), glm::vec3(0.2f, 1.0f, -0.1f),
+      glm::vec3(0.3f, 0.6f, 0.9f));
+  expect_means(scene, expectations, 3);
+}
+
+GRADED_TEST(kStage, Stage08DirectLight, ShadowRaysAndBackFaces, 3) {
+  // Every sample must be exactly black: a light hidden behind an occluder, and a light below the
+  // surface.
+  DirectLightScene scene;
+  add_quad_light(scene, -1, 1, -1, 1, 4.0f, glm::vec3(10.0f));
+  // A black occluder, larger than the light, between it and the point at the origin.
+  scene.triangles.push_back({glm::vec3(-3, 2, -3), glm::vec3(-3, 2, 3), glm::vec3(3, 2, 3), glm::vec3(0.0f)});
+  scene.triangles.push_back({glm::vec3(-3, 2, -3), glm::vec3(3, 2, 3), glm::vec3(3, 2, -3), glm::vec3(0.0f)});
+  const DirectLightQuery hidden{glm::vec3(0, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), glm::vec3(0.8f), 2000};
+  const DirectLightQuery facing_away{glm::vec3(0, 6, 0), glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), glm::vec3(0.8f), 2000};
+  const std::vector<glm::vec3> samples = direct_light_samples(scene, {hidden, facing_away}, 9);
+  std::size_t lit_hidden = 0, lit_behind = 0;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    if (samples[i] != glm::vec3(0.0f)) ++(i < hidden.sample_count ? lit_hidden : lit_behind);
+  if (lit_hidden > 0) {
+    add_failure({MessageId::direct_failure_lit_hidden, {{"count", std::to_string(lit_hidden)}, {"total", "2000"}}});
+    add_hint({MessageId::direct_estimate_no_shadow, {}});
+  }
+  if (lit_behind > 0) {
+    add_failure({MessageId::direct_failure_lit_behind, {{"count", std::to_string(lit_behind)}, {"total", "2000"}}});
+    add_hint({MessageId::direct_estimate_from_behind, {}});
+  }
+}
+
+GRADED_TEST(kStage, Stage08DirectLight, EstimatorPointLightExact, 1) {
+  // One point light: no randomness left, every sample is f I cos / d^2.
+  DirectLightScene scene;
+  scene.point_lights.push_back({glm::vec3(1, 3, 2), glm::vec3(6.0f, 3.0f, 1.5f)});
+  const glm::vec3 normal = glm::normalize(glm::vec3(0.1f, 1.0f, 0.2f));
+  const DirectLightQuery query{glm::vec3(0.0f), normal, normal, glm::vec3(0.5f, 0.6f, 0.7f), 16};
+  const std::vector<glm::vec3> samples = direct_light_samples(scene, {query}, 10);
+  const glm::dvec3 to_light(1, 3, 2);
+  const double d = glm::length(to_light);
+  const glm::dvec3 expected = glm::dvec3(0.5, 0.6, 0.7) / kPiD * glm::dvec3(6.0, 3.0, 1.5) *
+                              (glm::dot(glm::dvec3(normal), to_light / d) / (d * d));
+  for (const glm::vec3& s : samples)
+    if (!close(s, expected, 1e-4)) {
+      fail_value("estimate_direct_light with one point light (6, 3, 1.5) at (1, 3, 2), point (0, 0, 0)", text(s),
+                 text(glm::vec3(expected)));
+      return;
+    }
+}
+
+}  // namespace
+}  // namespace raylab::grading

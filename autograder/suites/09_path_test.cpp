@@ -1,0 +1,276 @@
+// Autograder suite for stage 09_path (40 points).
+//
+// path_radiance runs in the stage server, which renders whole pictures with it (stage_calls.h:
+// path_render) and returns each pixel's mean and variance of the mean; the judge decides.
+//   Furnaces (scenes/furnace.json, every wall emitting 1 with albedo a): every pixel's
+//   expectation is known exactly, sum over the vertices a path reaches of a^k (see
+//   furnace_model). A t-test of the pixel means against it, at three (albedo, roulette
+//   probability, max depth). When a test fails, models of the common mistakes (roulette not
+//   divided by p, emission counted twice, the light black when seen directly, the cosine or
+//   1 / pi missing) are fitted to all three furnaces: a model that fits all of them is named.
+//   Cornell boxes (scenes/cornell.json, scenes/cornell_specular.json), kCornellSize pixels
+//   square at kStudentSamples spp, against a converged reference (autograder/reference/
+//   09_path_cases.json): per region of 4x4 pixels and channel a z-test of the mean, with the
+//   larger of the student's and the reference's variance (so a correct strategy of higher
+//   variance passes too), and a picture of the z-scores.
+//
+// False failures: the 3 furnace t-tests and the 2 x 64 x 3 region z-tests share
+// kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected);
+// autograder-path-false-failures (autograder/tools/path_false_failures.cpp) measures it over
+// many seeds.
+#include "grading.h"
+#include "path_support.h"
+#include "stage_calls.h"
+#include "support.h"
+
+#include "raylab/error.h"
+#include "raylab/image.h"
+#include "raylab/math.h"
+#include "raylab/stages/08_direct_light.h"
+#include "raylab/testkit/statistics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab::grading {
+namespace {
+
+constexpr const char* kStage = "09_path";
+constexpr double kPiD = 3.14159265358979323846;
+const double kLevel = path_test_level();
+
+// Not attempted only when path_radiance itself is the stub: a stub of stage 07 or 08 that it
+// calls costs the tests, which name that stage.
+const bool kRegistered = register_stage(kStage, [] {
+  PathRenderRequest request;
+  request.probe_only = 1;
+  try {
+    (void)path_render("scenes/furnace.json", request);
+  } catch (const NotImplemented& e) {
+    if (e.stage_id() == kStage) throw;
+  }
+});
+
+// ---- Furnaces ------------------------------------------------------------------------------
+
+// What a path tracer that makes a mistake computes in a furnace of emission 1: the camera's
+// hit counts `first_emission`, every vertex k = 0..max_depth (reached with weight r^k) adds its
+// direct light d, and vertices after the first add `later_emission` each.
+struct Model {
+  std::function<double(const Furnace&)> bounce_weight;  // r
+  double direct_factor = 1.0;                            // d = direct_factor * a
+  double first_emission = 1.0, later_emission = 0.0;
+};
+struct Mistake {
+  MessageId hint;
+  Model model;
+  // Mistakes whose weights explode: the cosine missing weighs a bounce by a / cos(theta), of
+  // infinite variance; 1 / pi missing by pi a > 1. Their furnaces with roulette (weights divided
+  // by p again and again) are left out, and a mean within 10% of the model (or 4 standard errors)
+  // fits.
+  bool wild_weights = false;
+};
+double furnace_value(const Model& model, const Furnace& f) {
+  const double r = model.bounce_weight(f), d = model.direct_factor * f.albedo;
+  double sum = model.first_emission, reach = 1.0;
+  for (int k = 0; k <= f.max_depth; ++k) {
+    sum += reach * d + (k > 0 ? reach * model.later_emission : 0.0);
+    reach *= r;
+  }
+  return sum;
+}
+const Model kCorrect{[](const Furnace& f) { return f.albedo; }};
+const std::vector<Mistake>& mistakes() {
+  static const std::vector<Mistake> models = {
+      {MessageId::path_roulette_not_divided, {[](const Furnace& f) { return f.albedo * f.roulette; }}},
+      {MessageId::path_emission_twice, {[](const Furnace& f) { return f.albedo; }, 1.0, 1.0, 1.0}},
+      {MessageId::path_light_black, {[](const Furnace& f) { return f.albedo; }, 1.0, 0.0, 0.0}},
+      {MessageId::path_missing_cosine, {[](const Furnace& f) { return 2.0 * f.albedo; }}, true},
+      {MessageId::path_missing_inverse_pi, {[](const Furnace& f) { return kPiD * f.albedo; }, kPiD}, true},
+  };
+  return models;
+}
+
+struct FurnaceRender {
+  std::vector<double> pixel_means;
+  std::size_t not_finite = 0;
+};
+const FurnaceRender& furnace_render(int index) {
+  static std::map<int, FurnaceRender> cache;
+  const auto found = cache.find(index);
+  if (found != cache.end()) return found->second;
+  const PathRenderResult result =
+      path_render("scenes/furnace.json", furnace_request(index, 100 + static_cast<std::uint64_t>(index)));
+  FurnaceRender render;
+  for (const glm::vec3& v : result.mean.pixels()) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) ++render.not_finite;
+    else render.pixel_means.push_back(v.x);  // a grey furnace: the channels are alike
+  }
+  return cache.emplace(index, std::move(render)).first->second;
+}
+
+bool fits(const Model& model, int index) {
+  const FurnaceRender& render = furnace_render(index);
+  if (render.not_finite || render.pixel_means.size() < 2) return false;
+  return testkit::mean_test(render.pixel_means, furnace_value(model, kFurnaces[index]), kLevel).passed;
+}
+
+bool fits(const Mistake& mistake) {
+  for (int i = 0; i < 3; ++i) {
+    if (!mistake.wild_weights) {
+      if (!fits(mistake.model, i)) return false;
+      continue;
+    }
+    if (kFurnaces[i].roulette < 1.0) continue;
+    const FurnaceRender& render = furnace_render(i);
+    if (render.not_finite || render.pixel_means.size() < 2) return false;
+    const double predicted = furnace_value(mistake.model, kFurnaces[i]);
+    const testkit::MeanTestResult result = testkit::mean_test(render.pixel_means, predicted, kLevel);
+    if (!(std::fabs(result.mean - predicted) <= std::max(0.1 * predicted, 4.0 * result.standard_error))) return false;
+  }
+  return true;
+}
+
+void hint_not_finite(std::size_t count, std::size_t total) {
+  add_hint({MessageId::path_not_finite, {{"count", std::to_string(count)}, {"total", std::to_string(total)}}});
+}
+
+// Names the stage-08 functions the path tracer uses that are wrong (the framework's BSDF and
+// light sampling call them).
+void hint_stage08() {
+  try {
+    const float f = lambertian_f(glm::vec3(1.0f)).x;
+    if (!(std::fabs(f - 1.0f / kPi) <= 1e-5f)) add_hint({MessageId::path_stage08_wrong, {{"function", "lambertian_f"}}});
+    const float pdf = area_pdf_to_solid_angle(0.5f, 2.0f, 0.5f);
+    if (!(std::fabs(pdf - 4.0f) <= 1e-4f))
+      add_hint({MessageId::path_stage08_wrong, {{"function", "area_pdf_to_solid_angle"}}});
+  } catch (const NotImplemented& e) {
+    add_hint({MessageId::path_stage08_wrong, {{"function", e.function()}}});
+  }
+}
+
+void expect_furnace(int index) {
+  const Furnace& f = kFurnaces[index];
+  const FurnaceRender& render = furnace_render(index);
+  const std::size_t total = render.pixel_means.size() + render.not_finite;
+  if (render.not_finite) {
+    add_failure({MessageId::path_failure_not_finite, {{"count", std::to_string(render.not_finite)},
+                                                       {"total", std::to_string(total)}}});
+    hint_not_finite(render.not_finite, total);
+    return;
+  }
+  const double expected = furnace_value(kCorrect, f);
+  const testkit::MeanTestResult result = testkit::mean_test(render.pixel_means, expected, kLevel);
+  if (result.passed) return;
+  add_failure({MessageId::path_failure_furnace,
+               {{"albedo", gtest_text(f.albedo)},
+                {"roulette", gtest_text(f.roulette)},
+                {"depth", std::to_string(f.max_depth)},
+                {"count", std::to_string(result.count)},
+                {"mean", gtest_text(result.mean)},
+                {"error", gtest_text(result.standard_error)},
+                {"expected", gtest_text(expected)},
+                {"p_value", gtest_text(result.p_value)},
+                {"level", gtest_text(result.significance_level)}}});
+  for (const Mistake& mistake : mistakes())
+    if (fits(mistake)) add_hint({mistake.hint, {}});
+  hint_stage08();
+}
+
+GRADED_TEST(kStage, Stage09Path, FurnaceWithoutRoulette, 8) { expect_furnace(0); }
+GRADED_TEST(kStage, Stage09Path, FurnaceWithRoulette, 8) { expect_furnace(1); }
+GRADED_TEST(kStage, Stage09Path, FurnaceLowAlbedo, 6) { expect_furnace(2); }
+
+// ---- Cornell boxes -------------------------------------------------------------------------
+
+glm::vec3 z_colour(double z, double limit) {
+  // Pale grey within the noise, shading to full blue (below the reference) or red (above) at the
+  // test's limit; NaN is magenta.
+  if (std::isnan(z)) return glm::vec3(1.0f, 0.0f, 1.0f);
+  const float t = static_cast<float>(std::min(1.0, std::fabs(z) / limit));
+  const glm::vec3 grey(0.8f), full = z < 0 ? glm::vec3(0.0f, 0.1f, 1.0f) : glm::vec3(1.0f, 0.05f, 0.0f);
+  return grey * (1.0f - t) + full * t;
+}
+
+void expect_cornell(int scene_index) {
+  const std::string scene = kCornellScenes[scene_index];
+  const nlohmann::json cases = load_reference_cases(kStage);
+  const nlohmann::json& reference = cases.at(scene);
+  const int reference_spp = reference.at("samples_per_pixel").get<int>();
+  const PathRenderResult render = path_render(scene, cornell_request(kStudentSamples, kStudentSeed));
+  std::size_t not_finite = 0;
+  for (const glm::vec3& v : render.mean.pixels())
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) ++not_finite;
+  const std::size_t total = render.mean.pixels().size();
+  if (not_finite) {
+    add_failure({MessageId::path_failure_not_finite, {{"count", std::to_string(not_finite)}, {"total", std::to_string(total)}}});
+    hint_not_finite(not_finite, total);
+    return;
+  }
+  Image reference_mean(kCornellSize, kCornellSize), reference_variance(kCornellSize, kCornellSize);
+  for (int y = 0; y < kCornellSize; ++y)
+    for (int x = 0; x < kCornellSize; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * kCornellSize + static_cast<std::size_t>(x);
+      reference_mean.at(x, y) = vec3_from_json(reference.at("mean").at(i));
+      reference_variance.at(x, y) = vec3_from_json(reference.at("variance_of_mean").at(i));
+    }
+  const RegionTest test = region_z_test(render, kStudentSamples, reference_mean, reference_variance, reference_spp);
+  Image z_picture(kRegionsPerSide, kRegionsPerSide);
+  for (int ry = 0; ry < kRegionsPerSide; ++ry)
+    for (int rx = 0; rx < kRegionsPerSide; ++rx) {
+      double z_shown = 0;
+      for (int c = 0; c < 3; ++c) {
+        const double z = test.z_scores[static_cast<std::size_t>((ry * kRegionsPerSide + rx) * 3 + c)];
+        if (!(std::fabs(z) <= std::fabs(z_shown))) z_shown = z;
+      }
+      z_picture.at(rx, ry) = z_colour(z_shown, test.z_limit);
+    }
+  // yours | reference | z-scores, each kCornellSize pixels scaled 4x.
+  const int scale = 4, side = kCornellSize * scale;
+  Image picture(3 * side, side);
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      picture.at(x, y) = render.mean.at(x / scale, y / scale);
+      picture.at(x + side, y) = reference_mean.at(x / scale, y / scale);
+      picture.at(x + 2 * side, y) = z_picture.at(x / scale / kRegion, y / scale / kRegion);
+    }
+  const std::string directory = output_directory();
+  std::filesystem::create_directories(directory);
+  const std::string path = directory + "/" + kStage + "-" + std::filesystem::path(scene).stem().string() + ".png";
+  write_image(picture, path);
+  add_note({MessageId::path_note_picture, {{"scene", scene}, {"path", path}}});
+  if (test.failures == 0) return;
+  add_failure({MessageId::path_failure_regions,
+               {{"scene", scene},
+                {"failures", std::to_string(test.failures)},
+                {"tests", std::to_string(kRegionTestsPerScene)},
+                {"limit", gtest_text(test.z_limit)},
+                {"x", std::to_string(test.worst_x)},
+                {"y", std::to_string(test.worst_y)},
+                {"channel", std::to_string(test.worst_channel)},
+                {"mean", gtest_text(test.worst_mean)},
+                {"expected", gtest_text(test.worst_expected)},
+                {"z", gtest_text(test.worst_z)}}});
+  // The furnaces name the mistake when they can.
+  for (const Mistake& mistake : mistakes())
+    if (fits(mistake)) add_hint({mistake.hint, {}});
+  if (scene_index == 1) {
+    // Only the specular box: emission after mirrors and glass.
+    bool furnaces_right = true;
+    for (int i = 0; i < 3 && furnaces_right; ++i) furnaces_right = fits(kCorrect, i);
+    if (furnaces_right) add_hint({MessageId::path_specular_wrong, {}});
+  }
+  hint_stage08();
+}
+
+GRADED_TEST(kStage, Stage09Path, CornellBoxMatchesReference, 10) { expect_cornell(0); }
+GRADED_TEST(kStage, Stage09Path, SpecularCornellBoxMatchesReference, 8) { expect_cornell(1); }
+
+}  // namespace
+}  // namespace raylab::grading

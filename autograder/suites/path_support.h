@@ -1,0 +1,63 @@
+// What stage 09's suite, its reference data and the false-failure measurement
+// (autograder/tools/path_false_failures.cpp) share: the renders' settings and the tests' statistics.
+#pragma once
+
+#include "stage_calls.h"
+
+#include "raylab/image.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace raylab::grading {
+
+constexpr const char* kCornellScenes[] = {"scenes/cornell.json", "scenes/cornell_specular.json"};
+constexpr int kCornellSize = 32;             // pixels, each side
+constexpr int kCornellMaxDepth = 8;
+constexpr int kReferenceSamples = 4096;      // the converged reference (autograder-regenerate)
+constexpr std::uint64_t kReferenceSeed = 9001;
+constexpr int kStudentSamples = 128;         // the render graded
+constexpr std::uint64_t kStudentSeed = 9;
+constexpr int kRegion = 4;                   // pixels per region side
+constexpr int kRegionsPerSide = kCornellSize / kRegion;
+constexpr int kRegionTestsPerScene = kRegionsPerSide * kRegionsPerSide * 3;  // per region and channel
+
+inline PathRenderRequest cornell_request(int samples_per_pixel, std::uint64_t seed) {
+  PathRenderRequest request;
+  request.width = request.height = kCornellSize;
+  request.samples_per_pixel = samples_per_pixel;
+  request.max_depth = kCornellMaxDepth;
+  request.roulette_probability = 1.0f;
+  request.seed = seed;
+  return request;
+}
+
+// The furnaces (scenes/furnace.json with every albedo set to `albedo`), each rendered 32x32 at
+// 4 spp: each pixel's mean is one value of the t-test.
+struct Furnace {
+  double albedo, roulette;
+  int max_depth;
+};
+constexpr Furnace kFurnaces[] = {{0.5, 1.0, 5}, {0.5, 0.5, 20}, {0.3, 0.8, 20}};
+PathRenderRequest furnace_request(int index, std::uint64_t seed);
+// A furnace's exact pixel value (emission 1): sum of a^k for k = 0 .. max_depth + 1.
+double furnace_exact(const Furnace& furnace);
+
+// The stage's statistical tests: 3 furnace t-tests and the region z-tests of both boxes.
+constexpr int kPathStatisticalTests = 3 + 2 * kRegionTestsPerScene;
+double path_test_level();  // each test's level: the stage's 1 in 1,000, Sidak-corrected
+
+// The region z-tests of a Cornell render: per 4x4 region and channel, z = (yours - reference) /
+// sqrt(variance), the variance the larger of yours and the reference's (scaled to your sample
+// count) plus the reference mean's own.
+struct RegionTest {
+  int failures = 0;
+  double z_limit = 0;
+  double worst_z = 0, worst_mean = 0, worst_expected = 0;
+  int worst_x = 0, worst_y = 0, worst_channel = 0;
+  std::vector<double> z_scores;  // region by region (row-major), channel by channel
+};
+RegionTest region_z_test(const PathRenderResult& yours, int your_samples, const Image& reference_mean,
+                         const Image& reference_variance_of_mean, int reference_samples);
+
+}  // namespace raylab::grading
