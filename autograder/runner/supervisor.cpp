@@ -51,7 +51,7 @@ StageResult grade_stage(const StageInfo& stage) {
   StageResult result;
   result.stage = &stage;
   for (const TestInfo& test : tests())
-    if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {MessageId::test_not_run}, {}, {}, {}});
+    if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {MessageId::test_not_run}, {}, {}, 0.0, {}});
 
   StageSession& session = StageSession::instance();
   session.begin_stage();
