@@ -183,7 +183,10 @@ testkit::LeakCount count_leaks(const testkit::ClosedMesh& mesh, TriangleFunction
   Pcg32 random(seed, testkit::stream_of("leak rays"));
   return testkit::count_leaks(mesh, static_cast<std::uint64_t>(rays), random,
                               [&](const std::vector<Ray>& batch, const std::vector<std::vector<std::uint32_t>>& candidates) {
-                                return triangles_hit(test, triangles, batch, candidates);
+                                const auto hit_lists = triangles_hit(test, triangles, batch, candidates);
+                                std::vector<bool> any(hit_lists.size());
+                                for (std::size_t r = 0; r < hit_lists.size(); ++r) any[r] = !hit_lists[r].empty();
+                                return any;
                               });
 }
 

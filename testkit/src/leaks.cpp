@@ -24,24 +24,25 @@ ClosedMesh closed_grid_cube(int n, float half_size, const glm::vec3& center) {
   return closed_mesh(make_grid_cube(n, half_size, center), center, 0.5f * half_size);
 }
 
-TrianglesHit triangles_hit_by(const ClosedMesh& mesh, TriangleFunction function) {
+HitsAnyTriangle hits_any_triangle_by(const ClosedMesh& mesh, TriangleFunction function) {
   return [&mesh, function](const std::vector<Ray>& rays, const std::vector<std::vector<std::uint32_t>>& candidates) {
-    auto corner = [&](std::uint32_t t, int k) { return mesh.positions[mesh.indices[3 * std::size_t(t) + k]]; };
-    std::vector<std::vector<std::uint32_t>> hits(rays.size());
+    auto hits = [&](const Ray& ray, std::uint32_t t) {
+      const std::uint32_t* corner = mesh.indices.data() + 3 * std::size_t(t);
+      return function(ray, mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]]).has_value();
+    };
+    std::vector<bool> any(rays.size(), false);
     for (std::size_t r = 0; r < rays.size(); ++r) {
-      auto test = [&](std::uint32_t t) {
-        if (function(rays[r], corner(t, 0), corner(t, 1), corner(t, 2))) hits[r].push_back(t);
-      };
-      if (candidates.empty())
-        for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t) test(t);
-      else
-        for (std::uint32_t t : candidates[r]) test(t);
+      if (candidates.empty()) {
+        for (std::uint32_t t = 0; !any[r] && t < mesh.triangle_count(); ++t) any[r] = hits(rays[r], t);
+      } else {
+        for (std::size_t i = 0; !any[r] && i < candidates[r].size(); ++i) any[r] = hits(rays[r], candidates[r][i]);
+      }
     }
-    return hits;
+    return any;
   };
 }
 
-LeakCount count_leaks(const ClosedMesh& mesh, std::uint64_t rays, Pcg32& random, const TrianglesHit& hits) {
+LeakCount count_leaks(const ClosedMesh& mesh, std::uint64_t rays, Pcg32& random, const HitsAnyTriangle& hits) {
   // Which triangles touch each vertex (the candidates for a ray aimed at it or at its edges).
   std::vector<std::vector<std::uint32_t>> around_vertex(mesh.positions.size());
   const auto triangle_count = static_cast<std::uint32_t>(mesh.triangle_count());
@@ -70,14 +71,14 @@ LeakCount count_leaks(const ClosedMesh& mesh, std::uint64_t rays, Pcg32& random,
       near.back().insert(near.back().end(), around_vertex[b].begin(), around_vertex[b].end());
     }
     count.rays += batch.size();
-    const std::vector<std::vector<std::uint32_t>> near_hits = hits(batch, near);
+    const std::vector<bool> near_hit = hits(batch, near);
     std::vector<Ray> missed;
     for (std::size_t r = 0; r < batch.size(); ++r)
-      if (near_hits[r].empty()) missed.push_back(batch[r]);
+      if (!near_hit[r]) missed.push_back(batch[r]);
     if (missed.empty()) continue;
-    const std::vector<std::vector<std::uint32_t>> all_hits = hits(missed, {});
+    const std::vector<bool> any_hit = hits(missed, {});
     for (std::size_t m = 0; m < missed.size(); ++m) {
-      if (!all_hits[m].empty()) continue;
+      if (any_hit[m]) continue;
       ++count.leaks;
       if (!count.first_leak) count.first_leak = missed[m];
     }

@@ -293,7 +293,7 @@ std::vector<ClosedMesh> leak_test_meshes() {
 
 LeakCount count_leaks(const ClosedMesh& mesh, TriangleKernel kernel, std::uint64_t rays, std::uint64_t seed) {
   Pcg32 random(seed);
-  return testkit::count_leaks(mesh, rays, random, testkit::triangles_hit_by(mesh, kernel));
+  return testkit::count_leaks(mesh, rays, random, testkit::hits_any_triangle_by(mesh, kernel));
 }
 
 // ---- Ray-box ----------------------------------------------------------------------------

@@ -38,13 +38,14 @@ ClosedMesh closed_icosphere(int levels, float radius, const glm::vec3& center);
 // the half size.
 ClosedMesh closed_grid_cube(int n, float half_size, const glm::vec3& center);
 
-// For each ray, the triangles (indices into the mesh's triangles) among candidates[i] that the
-// triangle test hits; every triangle is a candidate when `candidates` is empty.
-using TrianglesHit = std::function<std::vector<std::vector<std::uint32_t>>(
-    const std::vector<Ray>& rays, const std::vector<std::vector<std::uint32_t>>& candidates)>;
+// For each ray, whether it hits any of the triangles (indices into the mesh's triangles) in
+// candidates[i]; any triangle of the mesh when `candidates` is empty.
+using HitsAnyTriangle = std::function<std::vector<bool>(const std::vector<Ray>& rays,
+                                                        const std::vector<std::vector<std::uint32_t>>& candidates)>;
 
-// The same for a triangle test in this process (the mesh must outlive the function).
-TrianglesHit triangles_hit_by(const ClosedMesh& mesh, TriangleFunction function);
+// The same for a triangle test in this process, stopping at each ray's first hit (the mesh
+// must outlive the function).
+HitsAnyTriangle hits_any_triangle_by(const ClosedMesh& mesh, TriangleFunction function);
 
 struct LeakCount {
   std::uint64_t rays = 0, leaks = 0;
@@ -58,6 +59,6 @@ struct LeakCount {
 // hits no triangle: each is tried against the triangles around its edge's two vertices first,
 // and only if it hits none of them against every triangle, so that the count is exact. The
 // rays go to `hits` in batches.
-LeakCount count_leaks(const ClosedMesh& mesh, std::uint64_t rays, Pcg32& random, const TrianglesHit& hits);
+LeakCount count_leaks(const ClosedMesh& mesh, std::uint64_t rays, Pcg32& random, const HitsAnyTriangle& hits);
 
 }  // namespace raylab::testkit
