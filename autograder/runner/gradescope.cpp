@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <regex>
@@ -104,13 +105,20 @@ std::string test_markdown(const TestResult& test, Language language) {
   for (std::string line; std::getline(lines, line);)
     if (!line.empty()) out += "- " + markdown_line(line) + "\n";
   if (test.earned() == test.info.points) return out;
-  // The pictures named in the English text (the same files in either language).
+  // The pictures named in the English text (the same files in either language), if the judge
+  // wrote them: a file in the output folder (a text the stage code chose, such as an exception's,
+  // may name any other file).
   static const std::regex png(R"([^\s:;,()]+\.png)");
   const std::string english = test_output(test, Language::English);
+  std::error_code error;
+  const std::filesystem::path pictures = std::filesystem::weakly_canonical(output_directory(), error);
   std::set<std::string> shown;
   for (auto match = std::sregex_iterator(english.begin(), english.end(), png); match != std::sregex_iterator(); ++match) {
     const std::string path = match->str();
     if (!shown.insert(path).second) continue;
+    std::error_code path_error;
+    const std::filesystem::path where = std::filesystem::weakly_canonical(path, path_error);
+    if (error || path_error || where.parent_path() != pictures) continue;
     std::ifstream in(path, std::ios::binary);
     if (!in) continue;
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

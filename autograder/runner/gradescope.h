@@ -35,7 +35,7 @@ std::string test_visibility(const StageResult& stage, const TestResult& test, co
 
 // A test's output in Markdown, in `language`: its failures, hints and notes one per list item;
 // for a test that lost points, the pictures its messages name (yours | reference | difference)
-// inlined as PNG data.
+// inlined as PNG data, if they are in the output folder (output_directory()).
 std::string test_markdown(const TestResult& test, Language language);
 
 // Work and speed where the tests measured them: nodes and triangles per ray of your BVH
