@@ -3,7 +3,13 @@
 // Confinement of a stage server: a job object, created per server and assigned before the
 // server runs its first instruction (created suspended), holds the server and everything it
 // starts (a process in a job cannot leave it):
-//   - memory: JOB_OBJECT_LIMIT_JOB_MEMORY, the memory committed by all its processes together;
+//   - memory: JOB_OBJECT_LIMIT_JOB_MEMORY, the memory committed by all its processes together
+//     (an allocation past it fails: std::bad_alloc, "ran out of memory"). The judge also watches
+//     that sum itself while it waits for a reply and ends the job when it passes the limit
+//     ("memory limit"): Wine accepts the job's limit but does not enforce it, and there each
+//     process's count is the memory it wrote to (its resident private memory and swap), not all
+//     it committed; so under Wine a stage that writes to its memory is stopped, one that only
+//     asks for memory without using it is not (and costs nothing);
 //   - processes: JOB_OBJECT_LIMIT_ACTIVE_PROCESS (a fork bomb stops at the limit);
 //   - killed with its stage: TerminateJobObject ends every process in the job at once, and
 //     JOB_OBJECT_LIMIT_KILL_ON_JOB_CLOSE ends them if the judge itself dies (parent death);
@@ -21,10 +27,13 @@
 #define NOMINMAX
 #endif
 #include <windows.h>
+// (after windows.h)
+#include <psapi.h>
 
 #include <fcntl.h>
 #include <io.h>
 
+#include <algorithm>
 #include <condition_variable>
 #include <cstdint>
 #include <cstdio>
@@ -39,6 +48,8 @@ namespace raylab::grading {
 namespace {
 
 constexpr UINT kKilledExitCode = 0xDEAD;  // what TerminateJobObject leaves as the exit code
+constexpr UINT kMemoryExitCode = 0xDEAE;  // the same when the judge's memory watch ended the job
+constexpr auto kMemoryCheckInterval = std::chrono::milliseconds(50);  // how often the watch looks
 
 std::string last_error(const char* what) {
   const DWORD code = ::GetLastError();
@@ -102,6 +113,28 @@ std::string quoted(const std::string& argument) {
   return text + "\"";
 }
 
+// The memory committed by all processes in `job` together, as JOB_OBJECT_LIMIT_JOB_MEMORY counts
+// it on Windows (each process's PagefileUsage, its private committed memory; under Wine, what
+// it wrote to). A process that ends between the list and the look is not counted.
+std::uint64_t job_memory_bytes(HANDLE job, std::size_t max_processes) {
+  std::vector<ULONG_PTR> storage(2 + std::max<std::size_t>(max_processes, 64));  // header + ids
+  auto* list = reinterpret_cast<JOBOBJECT_BASIC_PROCESS_ID_LIST*>(storage.data());
+  const DWORD size = static_cast<DWORD>(storage.size() * sizeof(ULONG_PTR));
+  // ERROR_MORE_DATA still fills the list as far as it goes: those processes are counted.
+  if (!::QueryInformationJobObject(job, JobObjectBasicProcessIdList, list, size, nullptr) && ::GetLastError() != ERROR_MORE_DATA)
+    return 0;
+  std::uint64_t total = 0;
+  for (DWORD i = 0; i < list->NumberOfProcessIdsInList; ++i) {
+    const HANDLE process = ::OpenProcess(PROCESS_QUERY_LIMITED_INFORMATION, FALSE, static_cast<DWORD>(list->ProcessIdList[i]));
+    if (process == nullptr) continue;
+    PROCESS_MEMORY_COUNTERS counters{};
+    counters.cb = sizeof counters;
+    if (::GetProcessMemoryInfo(process, &counters, sizeof counters)) total += counters.PagefileUsage;
+    ::CloseHandle(process);
+  }
+  return total;
+}
+
 }  // namespace
 
 struct StageProcess::Child {
@@ -117,6 +150,25 @@ struct StageProcess::Child {
   std::condition_variable delivered_changed;
   std::uint64_t delivered = 0;  // chunks copied, under `mutex`
   bool reply_ended = false;     // the server's reply pipe reached its end, under `mutex`
+  // The judge's own memory watch (see the top of this file); used by the judge's thread only.
+  std::uint64_t memory_limit_bytes = 0;  // 0: none
+  std::size_t max_processes = 0;
+  long memory_limit_mb = 0;
+  Clock::time_point next_memory_check{};
+  bool over_memory = false;  // the watch ended the job
+
+  // Looks at the job's memory if it is time to; ends the job when it is over the limit. True once
+  // it has done so.
+  bool check_memory() {
+    if (over_memory || memory_limit_bytes == 0) return over_memory;
+    const auto now = Clock::now();
+    if (now < next_memory_check) return false;
+    next_memory_check = now + kMemoryCheckInterval;
+    if (job_memory_bytes(job, max_processes) <= memory_limit_bytes) return false;
+    over_memory = true;
+    ::TerminateJobObject(job, kMemoryExitCode);
+    return true;
+  }
 };
 
 void prepare_judge() {
@@ -186,6 +238,9 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
   }
   if (!::SetInformationJobObject(child->job, JobObjectExtendedLimitInformation, &job_limits, sizeof job_limits))
     fail("SetInformationJobObject");
+  child->memory_limit_bytes = static_cast<std::uint64_t>(std::max(limits.memory_limit_mb, 0L)) * 1024 * 1024;
+  child->memory_limit_mb = limits.memory_limit_mb;
+  child->max_processes = static_cast<std::size_t>(std::max(limits.max_processes, 0));
 
   // Only the child's three pipe ends and NUL are inherited, whatever else the judge has open.
   HANDLE inherited[] = {requests.read, replies.write, output.write, null_input};
@@ -275,17 +330,26 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
 }
 
 bool StageProcess::wait_for_reply(Clock::time_point deadline) const {
-  std::unique_lock<std::mutex> lock(child_->mutex);
-  const std::uint64_t before = child_->delivered;
-  if (child_->reply_ended) return true;  // the read reports the end (or what is left)
-  lock.unlock();
-  // Bytes delivered earlier and not read yet (one look; the pump tells of anything new).
-  DWORD available = 0;
-  const auto pipe = reinterpret_cast<HANDLE>(::_get_osfhandle(reply_fd_));
-  if (!::PeekNamedPipe(pipe, nullptr, 0, nullptr, &available, nullptr) || available > 0) return true;
-  lock.lock();
-  return child_->delivered_changed.wait_until(lock, deadline,
-                                              [&]() { return child_->delivered != before || child_->reply_ended; });
+  Child& child = *child_;
+  // Waits in steps of the memory watch's interval, looking at the job's memory between them.
+  for (;;) {
+    // Over the memory limit: the job is ended, and the read sees the end of the replies.
+    if (child.check_memory()) return true;
+    std::unique_lock<std::mutex> lock(child.mutex);
+    const std::uint64_t before = child.delivered;
+    if (child.reply_ended) return true;  // the read reports the end (or what is left)
+    lock.unlock();
+    // Bytes delivered earlier and not read yet (one look; the pump tells of anything new).
+    DWORD available = 0;
+    const auto pipe = reinterpret_cast<HANDLE>(::_get_osfhandle(reply_fd_));
+    if (!::PeekNamedPipe(pipe, nullptr, 0, nullptr, &available, nullptr) || available > 0) return true;
+    lock.lock();
+    const Clock::time_point until =
+        child.memory_limit_bytes == 0 ? deadline : std::min(deadline, Clock::now() + kMemoryCheckInterval);
+    if (child.delivered_changed.wait_until(lock, until, [&]() { return child.delivered != before || child.reply_ended; }))
+      return true;
+    if (Clock::now() >= deadline) return false;
+  }
 }
 
 ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
@@ -305,7 +369,12 @@ ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
   }
   DWORD code = 0;
   ::GetExitCodeProcess(child_->process, &code);
-  if (code == kKilledExitCode) {
+  if (code == kMemoryExitCode || child_->over_memory) {
+    end.crashed = true;
+    end.crash = "being stopped over the memory limit of " + std::to_string(child_->memory_limit_mb) +
+                " MiB (the memory kept by all the stage's processes): does it keep growing a container, or never free what "
+                "it allocates?";
+  } else if (code == kKilledExitCode) {
     end.crashed = true;
     end.crash = "being killed: probably over the memory or time limit";
   } else if (code == 3) {  // what abort() leaves with the MinGW and MSVC runtimes
