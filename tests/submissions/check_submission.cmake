@@ -7,7 +7,7 @@ cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
 #   HONEST         a grader of the same code without the attack: every test must score the same
 #   EXPECT_SCORES  "stage=points;..." exact stage scores
 #   LINGER         seconds to wait after the grader exits: results.json must not change meanwhile
-# Every run also checks: a results.json planted before grading does not survive, the score table
+# Every run also checks: a results.json (and an index.html) planted before grading does not survive, the score table
 # shows one total and it is results.json's, a time-out is paid once, no stage process is left.
 # ONLY_LOSES (optional regex: the only tests of EXPECT_STAGE that may lose points), FORBID (optional
 # regex the output must not match).
@@ -30,6 +30,8 @@ endif()
 
 # A forged results.json, planted where the grader will write its own.
 file(WRITE "${WORK}/results.json" "{\"score\": 99999, \"max_score\": 1, \"tests\": [{\"name\": \"planted: Forged\", \"score\": 99999, \"max_score\": 1}]}\n")
+# And a forged HTML report where the grader writes its own (grading-output/index.html).
+file(WRITE "${WORK}/images/index.html" "<p>planted: total <strong>99999/1</strong></p>\n")
 execute_process(COMMAND "${GRADER}" --json "${WORK}/results.json" --output "${WORK}/images" --timeout ${TIMEOUT} --lang en
                 RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE errors)
 message("${output}")
@@ -75,6 +77,11 @@ if(NOT total_line_count EQUAL 1)
   list(APPEND problems "the output shows ${total_line_count} score totals, expected 1")
 elseif(NOT total_lines MATCHES "total +${total_score}/${total_max}$")
   list(APPEND problems "the printed total (${total_lines}) is not results.json's ${total_score}/${total_max}")
+endif()
+# The HTML report is the judge's: the planted one is gone, and it shows results.json's total.
+file(READ "${WORK}/images/index.html" report)
+if(report MATCHES "planted" OR NOT report MATCHES "<strong>${total_score}/${total_max}</strong>")
+  list(APPEND problems "images/index.html is not the judge's report of results.json's ${total_score}/${total_max}")
 endif()
 # A time-out costs its stage once, not once per test: no more tests time out than stages do.
 string(REGEX MATCHALL "timed out after [0-9.]+ s [^\n]* during this test" timeouts "${output}")
