@@ -179,6 +179,14 @@ GRADED_TEST(kStage, Stage05Bvh, DoesNoMoreWorkThanTheReference, 3) {
                  {{"counted", per_ray(double(yours.primitives_counted) / rays.size())},
                   {"tested", per_ray(yours.tests_per_ray())}}});
   }
+  // Nodes visited are the one figure here that the grader takes from your process (your
+  // traversal counts them in the stage server; docs/instructors.md): checked against the nodes
+  // the grader knows were visited, those above the leaves whose triangles it saw tested.
+  if (yours.rays_nodes_under_reported > 0) {
+    add_hint(MessageId::bvh_nodes_not_counted);
+    add_failure({MessageId::bvh_failure_nodes_under_reported,
+                 {{"rays", gtest_text(yours.rays_nodes_under_reported)}, {"total", gtest_text(rays.size())}}});
+  }
   EXPECT_FALSE(too_much) << failure_text(MessageId::bvh_failure_too_much_work);
 }
 

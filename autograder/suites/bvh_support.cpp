@@ -177,6 +177,10 @@ class WorkProbe {
     ++work.rays;
   }
   void end_ray(const BvhTraversalStats& stats) {
+    // marked_ holds this ray's tested leaves and all their ancestors: a traversal from the root
+    // visited each of them, so a count below theirs is false.
+    work.nodes_implied += marked_.size();
+    if (stats.nodes_visited < marked_.size()) ++work.rays_nodes_under_reported;
     work.nodes_visited += stats.nodes_visited;
     work.primitives_counted += stats.primitives_tested;
     work.rays_beyond_a_hit += beyond_a_hit_;

@@ -46,6 +46,9 @@ struct TraversalWork {
   std::uint64_t nodes_visited = 0;         // the traversal's stats.nodes_visited
   std::uint64_t primitives_counted = 0;    // the traversal's stats.primitives_tested
   std::uint64_t primitives_tested = 0;     // calls of intersector.test, counted by the grader
+  std::uint64_t nodes_implied = 0;         // nodes on the paths from the root to the leaves tested: the
+                                           // fewest a top-down traversal can visit, counted by the grader
+  std::uint64_t rays_nodes_under_reported = 0;  // rays whose stats.nodes_visited is below nodes_implied
   std::uint64_t calls_beyond_a_hit = 0;    // calls whose t_max is larger than a hit already reported for that ray
   std::uint64_t rays_beyond_a_hit = 0;     // rays with at least one such call
   std::uint64_t leaves_entered = 0;        // distinct leaves whose primitives were tested
