@@ -177,7 +177,7 @@ void trace_brute_force(const TestMesh& mesh, const std::vector<Ray>& rays, bool 
           ++stats.primitives_tested;
           return test_triangle(&context, search, triangle);
         });
-    const float t_best = best ? best->t_hit : kInfinity;
+    float t_best = best ? best->t_hit : kInfinity;  // not const: see trace_reference
     if (t_out) t_out[i] = t_best;
     benchmark::DoNotOptimize(t_best);
   }
