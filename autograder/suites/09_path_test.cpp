@@ -269,8 +269,8 @@ void expect_cornell(int scene_index) {
   hint_stage08();
 }
 
-GRADED_TEST(kStage, Stage09Path, CornellBoxMatchesReference, 10) { expect_cornell(0); }
-GRADED_TEST(kStage, Stage09Path, SpecularCornellBoxMatchesReference, 8) { expect_cornell(1); }
+GRADED_TEST(kStage, Stage09Path, CornellBoxImageMatchesReference, 10) { expect_cornell(0); }
+GRADED_TEST(kStage, Stage09Path, SpecularCornellBoxImageMatchesReference, 8) { expect_cornell(1); }
 
 }  // namespace
 }  // namespace raylab::grading

@@ -4,7 +4,7 @@
 # run_autograder per submission, each scored from $ROOT/results/results.json:
 #   the solutions                    full marks
 #   no files (the stubs)             0
-#   a broken camera                  loses stage 01 only
+#   a broken camera                  loses stage 01, and later stages only tests that trace with it
 #   code that does not compile       0, and results.json says so
 #   a camera that copies the released reference answers: earns MatchesReferenceRays against
 #   the released data, and nothing for it on the server (fresh cases from the course's seed)
@@ -89,7 +89,15 @@ score=$(grade stubs)
 submit_solutions_except 01_camera_rays/camera_rays.cpp
 cp "$source_dir/tests/submissions/camera_half_size_screen.cpp" "$root/submission/camera_rays.cpp"
 score=$(grade broken)
-[ "$score" -lt "$max" ] && [ "$score" -ge $((max - 20)) ] || fail "the broken camera scored $score of $max (expected to lose stage 01's points only)"
+# Lost: stage 01's tests, and the picture tests of the later stages (they render with its rays).
+python3 - "$work/broken.results.json" <<'PYTHON' || fail "the broken camera scored $score of $max (expected to lose stage 01's tests and later pictures only)"
+import json, sys
+lost = [t["name"] for t in json.load(open(sys.argv[1]))["tests"] if t["score"] < t["max_score"]]
+# (stages 08 and 09 trace their rays with the student's camera and geometry: check_submission.cmake)
+wrong = [name for name in lost if not name.startswith(("01_camera_rays:", "08_direct_light:", "09_path:")) and "Image" not in name]
+print("\n".join(f"lost, but only the camera is broken: {name}" for name in wrong))
+sys.exit(1 if wrong or not any(name.startswith("01_camera_rays:") for name in lost) else 0)
+PYTHON
 # Its failed picture test shows yours | reference | difference inlined in the Markdown output.
 python3 - "$work/broken.results.json" <<'PYTHON' || fail "the broken camera's failed picture is not inlined in results.json"
 import json, sys
