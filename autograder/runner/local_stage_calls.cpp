@@ -121,7 +121,7 @@ std::vector<glm::vec3> direct_light_samples(const DirectLightScene& test_scene, 
   for (const DirectLightSphere& sphere : test_scene.spheres)
     scene.spheres.push_back(Sphere{sphere.center, sphere.radius, material_of(sphere.emission)});
   for (const DirectLightPoint& light : test_scene.point_lights) scene.lights.push_back(PointLight{light.position, light.intensity});
-  const SceneGeometry geometry(scene, Acceleration::BruteForce);
+  const SceneGeometry geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, grader_tracing());
   const RenderContext context(scene, geometry, 0, Skips{});
 
   std::vector<glm::vec3> samples;
@@ -151,7 +151,7 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
   if (request.albedo >= 0.0f)
     for (Material& material : scene.materials) material.diffuse_color = glm::vec3(request.albedo);
   if (request.probe_only) {
-    const SceneGeometry geometry(scene);
+    const SceneGeometry geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, grader_tracing());
     const RenderContext context(scene, geometry, request.max_depth, Skips{}, request.roulette_probability);
     Ray ray;
     ray.origin = scene.camera.position;
@@ -169,6 +169,7 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
   settings.roulette_probability = request.roulette_probability;
   settings.seed = request.seed;
   settings.track_variance = true;
+  settings.tracing = grader_tracing();
   RenderOutput output = render_with_variance(scene, settings);
   return PathRenderResult{std::move(output.mean), std::move(output.variance_of_mean)};
 }

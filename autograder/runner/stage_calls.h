@@ -5,6 +5,7 @@
 
 #include "protocol.h"
 
+#include "raylab/geometry.h"
 #include "raylab/image.h"
 #include "raylab/stages/03_triangle.h"
 #include "raylab/testkit/triangles.h"
@@ -98,5 +99,10 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
 // `triangles` (a const std::vector<protocol::Triangle>*), so that BVH grades do not depend on
 // your stage 3.
 std::optional<float> grader_triangle_test(void* triangles, const Ray& ray, std::uint32_t primitive);
+
+// The grader's own camera rays, sphere and triangle tests (in double, with stages 01-03's
+// conventions), which stages 08 and 09 trace their scenes with: so their grades do not depend on
+// your stages 01-05, only on the stages they build on (stages.json: "needs").
+TracingFunctions grader_tracing();
 
 }  // namespace raylab::grading

@@ -4,7 +4,6 @@
 // of how long that will take.
 #include "geometry_query.h"
 
-#include "raylab/stages/02_sphere.h"
 
 #include <algorithm>
 #include <atomic>
@@ -42,7 +41,7 @@ std::string SceneGeometry::brute_force_estimate(const Ray& sample) const {
   std::size_t passes = 0, hits = 0;
   double seconds = 0.0;
   do {  // at least 2 ms of work, so that the clock's resolution does not matter
-    for (const Sphere& sphere : spheres_) hits += intersect_ray_sphere(sample, sphere.center, sphere.radius) ? 1 : 0;
+    for (const Sphere& sphere : spheres_) hits += intersect_sphere_(sample, sphere.center, sphere.radius) ? 1 : 0;
     for (const Triangle& tri : triangles_) hits += intersect_triangle_(sample, tri.p0, tri.p1, tri.p2) ? 1 : 0;
     ++passes;
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -84,7 +83,7 @@ std::optional<float> SceneGeometry::intersect_every_object(const Ray& ray, Query
   const MeshPart* const meshes = meshes_.data();
   const std::size_t mesh_count = meshes_.size();
   for (std::uint32_t i = 0; i < sphere_count; ++i) {
-    if (const std::optional<float> t = intersect_ray_sphere(search, spheres[i].center, spheres[i].radius)) {
+    if (const std::optional<float> t = intersect_sphere_(search, spheres[i].center, spheres[i].radius)) {
       search.t_max = *t;
       best.kind = Kind::Sphere;
       best.index = i;
@@ -122,7 +121,7 @@ std::optional<float> SceneGeometry::intersect_every_object(const Ray& ray, Query
 // copy: a shadow ray was just written field by field, and reading it back whole would stall).
 bool SceneGeometry::occluded_by_any_object(const Ray& ray, Query& query) const {
   for (const Sphere& sphere : spheres_)
-    if (intersect_ray_sphere(ray, sphere.center, sphere.radius)) return true;
+    if (intersect_sphere_(ray, sphere.center, sphere.radius)) return true;
   for (const MeshPart& mesh : meshes_) {
     if (!mesh.bvh.nodes.empty()) {
       if (intersect_mesh(mesh, ray, query)) return true;

@@ -7,6 +7,7 @@
 
 #include "raylab/bvh_tools.h"
 #include "raylab/error.h"
+#include "raylab/stages/02_sphere.h"
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
 
@@ -38,10 +39,13 @@ Bounds3 triangle_bounds(const glm::vec3& p0, const glm::vec3& p1, const glm::vec
 
 }  // namespace
 
-SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, TriangleTest triangle_test)
+SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, TriangleTest triangle_test,
+                             const TracingFunctions& tracing)
     : scene_(scene), spheres_(scene.spheres),
-      intersect_triangle_(triangle_test == TriangleTest::Watertight ? intersect_ray_triangle_watertight
-                                                                     : intersect_ray_triangle) {
+      intersect_triangle_(tracing.triangle                             ? tracing.triangle
+                          : triangle_test == TriangleTest::Watertight ? intersect_ray_triangle_watertight
+                                                                      : intersect_ray_triangle),
+      intersect_sphere_(tracing.sphere ? tracing.sphere : intersect_ray_sphere) {
   for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
     const TriangleMesh& mesh = scene.meshes[m];
     MeshPart part;
@@ -56,6 +60,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
     meshes_.push_back(std::move(part));
   }
   if (acceleration == Acceleration::BvhAlways) brute_force_limit_ = 0;
+  if (tracing.replaces_primitive_tests()) acceleration = Acceleration::BruteForce;
   if (acceleration != Acceleration::BruteForce) build_bvhs();
 }
 

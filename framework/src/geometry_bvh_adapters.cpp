@@ -4,7 +4,6 @@
 // tests recorded, so that the framework shades the primitive the traversal returned.
 #include "geometry_query.h"
 
-#include "raylab/stages/02_sphere.h"
 #include "raylab/stages/05_bvh.h"
 
 namespace raylab {
@@ -92,7 +91,7 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
 std::optional<float> SceneGeometry::intersect_object(std::uint32_t object, const Ray& ray, Query& query) const {
   if (object < spheres_.size()) {
     const Sphere& sphere = spheres_[object];
-    const std::optional<float> t = intersect_ray_sphere(ray, sphere.center, sphere.radius);
+    const std::optional<float> t = intersect_sphere_(ray, sphere.center, sphere.radius);
     if (t && *t < query.record->t_hit) {
       query.record->kind = Kind::Sphere;
       query.record->index = object;

@@ -57,7 +57,8 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   output.mean = Image(camera.width, camera.height);
   if (settings.track_variance) output.variance_of_mean = Image(camera.width, camera.height);
   const SceneGeometry geometry(scene, settings.skips.no_bvh_for_small_sets ? Acceleration::Bvh : Acceleration::BvhAlways,
-                               settings.triangle_test);
+                               settings.triangle_test, settings.tracing);
+  const auto camera_ray = settings.tracing.camera_ray ? settings.tracing.camera_ray : generate_camera_ray;
   const RenderContext context(scene, geometry, settings.max_depth, settings.skips, settings.roulette_probability);
   const Integrator integrator(settings.integrator);
   const int samples_per_pixel = settings.samples_per_pixel;
@@ -88,13 +89,13 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
           for (int x = tile.x0; x < tile.x1; ++x) {
             if (one_plain_sample) {  // the mean of one sample is that sample: no film needed
               sampler.start_pixel_sample(x, y, 0);
-              const Ray ray = generate_camera_ray(camera, x, y, sampler.get_pixel_2d());
+              const Ray ray = camera_ray(camera, x, y, sampler.get_pixel_2d());
               output.mean.at(x, y) = integrator.li(context, ray, sampler, tile_stats);
               continue;
             }
             for (int sample = 0; sample < samples_per_pixel; ++sample) {
               sampler.start_pixel_sample(x, y, sample);
-              const Ray ray = generate_camera_ray(camera, x, y, sampler.get_pixel_2d());
+              const Ray ray = camera_ray(camera, x, y, sampler.get_pixel_2d());
               film->add_sample(x - tile.x0, y - tile.y0, integrator.li(context, ray, sampler, tile_stats));
             }
             output.mean.at(x, y) = film->mean_at(x - tile.x0, y - tile.y0);

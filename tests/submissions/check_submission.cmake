@@ -92,6 +92,23 @@ if(timeout_count GREATER timed_out_stage_count)
   list(APPEND problems "${timeout_count} tests timed out in ${timed_out_stage_count} stages: after a time-out the stage's other tests must not run")
 endif()
 
+# The stage table: which stages each stage's image test renders with.
+file(READ "${CMAKE_CURRENT_LIST_DIR}/../../stages.json" stage_table)
+string(JSON stage_count LENGTH "${stage_table}" stages)
+math(EXPR last_stage "${stage_count} - 1")
+foreach(i RANGE ${last_stage})
+  string(JSON id GET "${stage_table}" stages ${i} id)
+  string(JSON need_count LENGTH "${stage_table}" stages ${i} needs)
+  set(needs_of_${id} "")
+  if(need_count GREATER 0)
+    math(EXPR last_need "${need_count} - 1")
+    foreach(j RANGE ${last_need})
+      string(JSON needed GET "${stage_table}" stages ${i} needs ${j})
+      list(APPEND needs_of_${id} "${needed}")
+    endforeach()
+  endif()
+endforeach()
+
 set(stages "")
 math(EXPR last "${test_count} - 1")
 foreach(i RANGE ${last})
@@ -107,16 +124,10 @@ foreach(i RANGE ${last})
   endif()
   math(EXPR earned_${stage} "${earned_${stage}} + ${score}")
   math(EXPR max_${stage} "${max_${stage}} + ${max_score}")
-  # A stage after the broken one may lose its image test (it renders with the broken stage), nothing else.
+  # A stage after the broken one may lose its image test if it renders with the broken stage
+  # (stages.json: "needs"), nothing else.
   set(expected_loss FALSE)
-  if(name MATCHES "Image" OR (ALSO_AFFECTED AND name MATCHES "${ALSO_AFFECTED}"))
-    set(expected_loss TRUE)
-  endif()
-  # Stages 08_direct_light and 09_path trace their rays through scenes with the student's own
-  # stages 01-05 (camera, sphere, triangle, box, BVH), so a broken one of those may cost their
-  # tests too. (A known limit of those stages' grading: they should trace with the reference's
-  # geometry, so that only the broken stage loses points.)
-  if(name MATCHES "^(08_direct_light|09_path): " AND EXPECT_STAGE STRLESS "06")
+  if((name MATCHES "Image" AND EXPECT_STAGE IN_LIST needs_of_${stage}) OR (ALSO_AFFECTED AND name MATCHES "${ALSO_AFFECTED}"))
     set(expected_loss TRUE)
   endif()
   if((MODE STREQUAL "broken" OR MODE STREQUAL "contained") AND stage STRGREATER EXPECT_STAGE AND NOT expected_loss

@@ -30,6 +30,8 @@ struct RenderSettings {
   // What to leave out (shading.h); the same image either way. Changed only to measure.
   Skips skips;
   TriangleTest triangle_test = TriangleTest::MollerTrumbore;  // --watertight: stage 03b's test
+  // Who computes camera rays and primitive tests (geometry.h); by default the stages' own.
+  TracingFunctions tracing;
 };
 
 struct RenderStats {
