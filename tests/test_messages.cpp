@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <iterator>
@@ -102,16 +103,93 @@ TEST(Messages, EveryStageHasAChineseTitle) {
 
 // Every hint, note and failure text is a catalogue entry: the suites never wrap a text of their
 // own in verbatim() (nor the English-only untranslated() that once was), nor stream a text into an
-// assertion (ADD_FAILURE() << "...", EXPECT_EQ(...) << "..."). Hints and notes: no exception. Suites
-// whose failure texts (what a test expected and what came back) are still English only: named in
-// the output, those checks skipped. This list only shrinks; a suite not on it fails.
-const char* const kSuitesWithEnglishFailures[] = {"07_sampling_test.cpp"};
+// assertion (ADD_FAILURE() << "...", EXPECT_EQ(...) << "..."), which --lang zh would show in
+// English. No exception: a suite that builds a value's text (a point, a replayable input) joins
+// strings instead of streaming literals, so that any << "..." in a suite is a failure text.
+// The GoogleTest assertions of a suite's source (EXPECT_..., ASSERT_..., ADD_FAILURE(), FAIL())
+// whose message is not exactly one failure_text(...): with no message GoogleTest words the failure
+// in English ("Expected equality of these values"), and a text streamed in is the suite's own.
+// Each as "<line>: <the assertion's start>". Comments and string literals are skipped.
+std::vector<std::string> assertions_without_catalogue_text(const std::string& source) {
+  std::vector<std::string> found;
+  // Index past a string or character literal starting at `i`, or past a comment; `i` if neither.
+  auto skip = [&](std::size_t i) {
+    if (source.compare(i, 2, "//") == 0) {
+      const std::size_t end = source.find('\n', i);
+      return end == std::string::npos ? source.size() : end;
+    }
+    if (source.compare(i, 2, "/*") == 0) {
+      const std::size_t end = source.find("*/", i + 2);
+      return end == std::string::npos ? source.size() : end + 2;
+    }
+    if (source.compare(i, 3, "R\"(") == 0) {
+      const std::size_t end = source.find(")\"", i + 3);
+      return end == std::string::npos ? source.size() : end + 2;
+    }
+    if (source[i] == '"' || (source[i] == '\'' && (i == 0 || !std::isalnum(static_cast<unsigned char>(source[i - 1]))))) {
+      const char quote = source[i];
+      for (std::size_t j = i + 1; j < source.size(); ++j) {
+        if (source[j] == '\\') ++j;
+        else if (source[j] == quote) return j + 1;
+      }
+      return source.size();
+    }
+    return i;
+  };
+  // Index just past the parenthesis that closes the one at `open`.
+  auto close = [&](std::size_t open) {
+    int depth = 0;
+    for (std::size_t i = open; i < source.size();) {
+      const std::size_t after = skip(i);
+      if (after != i) {
+        i = after;
+        continue;
+      }
+      if (source[i] == '(') ++depth;
+      if (source[i] == ')' && --depth == 0) return i + 1;
+      ++i;
+    }
+    return source.size();
+  };
+  auto skip_space = [&](std::size_t i) {
+    while (i < source.size() && std::isspace(static_cast<unsigned char>(source[i]))) ++i;
+    return i;
+  };
+  const std::regex assertion("(EXPECT_[A-Z0-9_]+|ASSERT_[A-Z0-9_]+|ADD_FAILURE|FAIL|GTEST_FAIL)\\s*\\(");
+  for (std::size_t i = 0; i < source.size();) {
+    const std::size_t after = skip(i);
+    if (after != i) {
+      i = after;
+      continue;
+    }
+    std::smatch match;
+    const bool word_start = i == 0 || !(std::isalnum(static_cast<unsigned char>(source[i - 1])) || source[i - 1] == '_');
+    if (!word_start || (source[i] != 'E' && source[i] != 'A' && source[i] != 'F' && source[i] != 'G') ||
+        !std::regex_search(source.cbegin() + static_cast<std::ptrdiff_t>(i), source.cend(), match, assertion,
+                           std::regex_constants::match_continuous)) {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i, end = close(i + static_cast<std::size_t>(match.length(0)) - 1);
+    std::size_t next = skip_space(end);
+    bool catalogued = false;
+    if (source.compare(next, 2, "<<") == 0) {
+      next = skip_space(next + 2);
+      if (source.compare(next, 13, "failure_text(") == 0) catalogued = source[skip_space(close(next + 12))] == ';';
+    }
+    if (!catalogued) {
+      const std::size_t line = 1 + static_cast<std::size_t>(std::count(source.begin(), source.begin() + static_cast<std::ptrdiff_t>(start), '\n'));
+      found.push_back(std::to_string(line) + ": " + source.substr(start, std::min<std::size_t>(end - start, 60)));
+    }
+    i = end;
+  }
+  return found;
+}
 
 TEST(Messages, SuitesGiveNoTextOutsideTheCatalogue) {
   const std::filesystem::path suites = std::filesystem::path(RAYLAB_SOURCE_DIR) / "autograder" / "suites";
   int files = 0;
   for (const auto& file : std::filesystem::directory_iterator(suites)) {
-    const std::string name = file.path().filename().string();
     std::ifstream in(file.path());
     std::stringstream text;
     text << in.rdbuf();
@@ -122,19 +200,37 @@ TEST(Messages, SuitesGiveNoTextOutsideTheCatalogue) {
     EXPECT_EQ(text.str().find("untranslated("), std::string::npos)
         << file.path() << " gives an English-only text (untranslated): add it to " << kWhere
         << " with its English and Chinese texts";
-    if (std::find(std::begin(kSuitesWithEnglishFailures), std::end(kSuitesWithEnglishFailures), name) !=
-        std::end(kSuitesWithEnglishFailures)) {
-      std::printf("still to translate: the failure texts of autograder/suites/%s (English in both languages: "
-                  "move each into %s); its hints and notes are checked\n", name.c_str(), kWhere);
-      continue;
-    }
     EXPECT_EQ(text.str().find("ADD_FAILURE() <<"), std::string::npos)
         << file.path() << " has an ADD_FAILURE: write add_failure({MessageId::your_id, {...}}) with an entry of " << kWhere;
     EXPECT_EQ(text.str().find("<< \""), std::string::npos)
         << file.path() << " streams a text into a failure (<< \"...\"): give it as failure_text({MessageId::your_id, {...}}) "
         << "with an entry of " << kWhere << " (English and Chinese)";
+    for (const std::string& assertion : assertions_without_catalogue_text(text.str()))
+      ADD_FAILURE() << file.path() << ":" << assertion << ": an assertion's message is one failure_text({MessageId::your_id, "
+                    << "{...}}) with an entry of " << kWhere << " (without one, or with a text of its own, --lang zh shows "
+                    << "English)";
   }
   EXPECT_GT(files, 0) << suites;
+}
+
+TEST(Messages, AssertionCheckFindsTextsOutsideTheCatalogue) {
+  // What SuitesGiveNoTextOutsideTheCatalogue must catch, and what it must let pass.
+  const std::string source = R"(
+    EXPECT_EQ(a, b) << failure_text({MessageId::x, {{"a", f(a)}}});
+    ASSERT_TRUE(ok)
+        << failure_text(MessageId::y);  // EXPECT_EQ(c, d) in a comment
+    const char* s = "EXPECT_EQ(e, f);";
+    EXPECT_NEAR(g, h, 1e-3);
+    ADD_FAILURE() << result.describe();
+    EXPECT_LT(p(i, j), k) << failure_text(MessageId::z) << " and more";
+    FAIL();
+  )";
+  const std::vector<std::string> found = assertions_without_catalogue_text(source);
+  ASSERT_EQ(found.size(), 4u) << ::testing::PrintToString(found);
+  EXPECT_EQ(found[0].rfind("6: EXPECT_NEAR(g, h, 1e-3)", 0), 0u) << found[0];
+  EXPECT_EQ(found[1].rfind("7: ADD_FAILURE()", 0), 0u) << found[1];
+  EXPECT_EQ(found[2].rfind("8: EXPECT_LT(p(i, j), k)", 0), 0u) << found[2];
+  EXPECT_EQ(found[3].rfind("9: FAIL()", 0), 0u) << found[3];
 }
 
 TEST(Messages, RenderFillsPlaceholdersInEitherLanguage) {

@@ -175,6 +175,27 @@ TEST(Statistics, ChiSquareRejectsClearlyWrongDistributions) {
   }
 }
 
+// The grader words each failure itself, in English or Chinese, from `failure` (and `reason` in English).
+TEST(Statistics, ChiSquareNamesWhyItFailed) {
+  const double level = 1e-3;
+  const ChiSquareResult fits = chi_square_test({100, 100, 100}, {100, 100, 100}, level);
+  EXPECT_TRUE(fits.passed);
+  EXPECT_EQ(fits.failure, ChiSquareFailure::none);
+  EXPECT_EQ(fits.min_expected_count, 5.0);
+  const ChiSquareResult misfit = chi_square_test({200, 50, 50}, {100, 100, 100}, level);
+  EXPECT_EQ(misfit.failure, ChiSquareFailure::misfit) << misfit.reason;
+  const ChiSquareResult where_none = chi_square_test({100, 100, 5}, {102.5, 102.5, 0}, level);
+  EXPECT_EQ(where_none.failure, ChiSquareFailure::samples_where_none_expected) << where_none.reason;
+  const ChiSquareResult too_few = chi_square_test({2, 1, 1}, {2, 1, 1}, level);
+  EXPECT_EQ(too_few.failure, ChiSquareFailure::too_few_samples) << too_few.reason;
+  const ChiSquareResult invalid = chi_square_test({1, 1}, {1, -1}, level);
+  EXPECT_EQ(invalid.failure, ChiSquareFailure::invalid_expected) << invalid.reason;
+  for (const ChiSquareResult& failed : {misfit, where_none, too_few, invalid}) {
+    EXPECT_FALSE(failed.passed);
+    EXPECT_FALSE(failed.reason.empty());
+  }
+}
+
 TEST(Statistics, ChiSquarePoolsLowCountCellsAndPassesTheRightDistribution) {
   Pcg32 random(2, stream_of("statistics"));
   const Histogram2D histogram = linear_samples(random, 400, true);

@@ -164,40 +164,51 @@ std::vector<Mistake> pdf_mistakes(Warp warp) {
 
 // ---- What the student's code returned, fetched once per warp -------------------------------
 
+// Why a sample is outside its warp's domain: in short (a hint's {reason}) and with its numbers
+// (the failure's).
+struct DomainProblem {
+  MessageId reason;  // sampling_reason_...
+  Message detail;    // sampling_domain_...
+};
+
 struct WarpData {
   std::vector<glm::vec2> inputs;
   std::vector<glm::vec3> samples;
   std::size_t non_finite = 0, out_of_domain = 0;
   std::optional<std::size_t> first_non_finite, first_out_of_domain;
-  std::string out_of_domain_reason;  // of the first such sample
+  std::optional<DomainProblem> out_of_domain_problem;  // of the first such sample
   std::size_t below_surface = 0;
   testkit::Histogram2D histogram{1, 1, 0.0, 1.0, 0.0, 1.0};
   std::vector<double> expected;  // from the intended density
 };
 
-// Why a finite sample is outside its warp's domain, or "".
-std::string domain_problem(Warp warp, const glm::vec3& s) {
-  std::ostringstream out;
+// Why a finite sample is outside its warp's domain, or nothing.
+std::optional<DomainProblem> domain_problem(Warp warp, const glm::vec3& s) {
   if (is_direction_warp(warp)) {
     const float length = glm::length(s);
-    if (std::fabs(length - 1.0f) > 1e-3f) {
-      out << "not unit length (length " << length << ")";
-      return out.str();
-    }
-    if (is_hemisphere(warp) && s.z < -1e-5f) {
-      out << "below the surface (z = " << s.z << " < 0)";
-      return out.str();
-    }
-    return "";
+    if (std::fabs(length - 1.0f) > 1e-3f)
+      return DomainProblem{MessageId::sampling_reason_not_unit,
+                           {MessageId::sampling_domain_not_unit, {{"length", stream_text(length)}}}};
+    if (is_hemisphere(warp) && s.z < -1e-5f)
+      return DomainProblem{MessageId::sampling_reason_below_surface,
+                           {MessageId::sampling_domain_below_surface, {{"z", stream_text(s.z)}}}};
+    return std::nullopt;
   }
   if (warp == Warp::UniformDisk) {
     const float radius = std::sqrt(s.x * s.x + s.y * s.y);
-    if (radius > 1.0f + 1e-5f) out << "outside the unit disk (distance " << radius << " from the centre)";
-    return out.str();
+    if (radius > 1.0f + 1e-5f)
+      return DomainProblem{MessageId::sampling_reason_outside_disk,
+                           {MessageId::sampling_domain_outside_disk, {{"radius", stream_text(radius)}}}};
+    return std::nullopt;
   }
-  if (s.x < -1e-6f || s.y < -1e-6f) out << "outside the triangle (a negative barycentric: b1 " << s.x << ", b2 " << s.y << ")";
-  else if (s.x + s.y > 1.0f + 1e-5f) out << "outside the triangle (b1 + b2 = " << s.x + s.y << " > 1, so b0 < 0)";
-  return out.str();
+  if (s.x < -1e-6f || s.y < -1e-6f)
+    return DomainProblem{MessageId::sampling_reason_outside_triangle,
+                         {MessageId::sampling_domain_negative_barycentric,
+                          {{"b1", stream_text(s.x)}, {"b2", stream_text(s.y)}}}};
+  if (s.x + s.y > 1.0f + 1e-5f)
+    return DomainProblem{MessageId::sampling_reason_outside_triangle,
+                         {MessageId::sampling_domain_barycentrics_above_one, {{"sum", stream_text(s.x + s.y)}}}};
+  return std::nullopt;
 }
 
 // The uniform inputs: the corners and middle of [0, 1)^2 first (where formulas meet 0, 1 and
@@ -232,12 +243,11 @@ const WarpData& data_of(Warp warp) {
       data.histogram.add(NAN, NAN);
       continue;
     }
-    const std::string problem = domain_problem(warp, s);
-    if (!problem.empty()) {
+    if (std::optional<DomainProblem> problem = domain_problem(warp, s)) {
       ++data.out_of_domain;
       if (!data.first_out_of_domain) {
         data.first_out_of_domain = i;
-        data.out_of_domain_reason = problem;
+        data.out_of_domain_problem = std::move(problem);
       }
     }
     if (is_hemisphere(warp) && s.z < -1e-5f) ++data.below_surface;
@@ -293,19 +303,69 @@ const PdfData& pdf_data_of(Warp warp) {
   return cache.emplace(warp, std::move(data)).first->second;
 }
 
-std::string point_text(Warp warp, const glm::vec3& p) {
-  std::ostringstream out;
-  if (warp == Warp::UniformDisk) out << "(" << p.x << ", " << p.y << ")";
-  else if (warp == Warp::UniformTriangle) out << "b1 " << p.x << ", b2 " << p.y;
-  else out << p;
-  return out.str();
+// A number with `digits` significant digits ("0.25", "1.047e-05").
+std::string digits_text(double value, int digits) {
+  std::ostringstream text;
+  text.precision(digits);
+  text << value;
+  return text.str();
 }
 
+// A warp's value in the failure texts: a direction as it is, a disk point by (x, y), a triangle
+// point by its barycentrics.
+std::string point_text(Warp warp, const glm::vec3& p) {
+  if (warp == Warp::UniformDisk) return "(" + stream_text(p.x) + ", " + stream_text(p.y) + ")";
+  if (warp == Warp::UniformTriangle) return "b1 " + stream_text(p.x) + ", b2 " + stream_text(p.y);
+  return stream_text(p);
+}
+
+// The uniform numbers a warp was given, with all their digits (to replay them).
 std::string input_text(const glm::vec2& u) {
-  std::ostringstream out;
-  out.precision(9);
-  out << "uniform_random = (" << u.x << ", " << u.y << ")";
-  return out.str();
+  return "uniform_random = (" + digits_text(u.x, 9) + ", " + digits_text(u.y, 9) + ")";
+}
+
+// A number with 4 significant digits, as the hints give factors and the chi-square verdicts their numbers.
+std::string four_digits(double value) { return digits_text(value, 4); }
+
+// A chi-square test's verdict in words: why it failed (the {reason} of a failure) ...
+Message chi_square_reason(const testkit::ChiSquareResult& result, const std::vector<double>& expected) {
+  switch (result.failure) {
+    case testkit::ChiSquareFailure::invalid_expected: {
+      std::size_t cell = 0;
+      while (cell + 1 < expected.size() && expected[cell] >= 0.0 && std::isfinite(expected[cell])) ++cell;
+      return {MessageId::chi_square_invalid_expected,
+              {{"cell", std::to_string(cell)}, {"value", four_digits(expected.empty() ? 0.0 : expected[cell])}}};
+    }
+    case testkit::ChiSquareFailure::samples_where_none_expected:
+      return {MessageId::chi_square_samples_where_none_expected,
+              {{"count", four_digits(result.samples_where_none_expected)}}};
+    case testkit::ChiSquareFailure::too_few_samples:
+      return {MessageId::chi_square_too_few_samples, {{"minimum", four_digits(result.min_expected_count)}}};
+    case testkit::ChiSquareFailure::misfit:
+    case testkit::ChiSquareFailure::none: break;
+  }
+  return {MessageId::chi_square_misfit,
+          {{"p_value", four_digits(result.p_value)}, {"level", four_digits(result.significance_level)}}};
+}
+
+// ... and its figures (the {chi_square} of a failure).
+Message chi_square_summary(const testkit::ChiSquareResult& result) {
+  std::vector<Message> pooled, none_expected;
+  if (result.pooled_cells)
+    pooled.push_back({MessageId::chi_square_pooled, {{"count", std::to_string(result.pooled_cells)}}});
+  if (result.samples_where_none_expected > 0)
+    none_expected.push_back(
+        {MessageId::chi_square_none_expected, {{"count", four_digits(result.samples_where_none_expected)}}});
+  return {MessageId::chi_square_summary,
+          {{"statistic", four_digits(result.statistic)},
+           {"degrees_of_freedom", std::to_string(result.degrees_of_freedom)},
+           {"p_value", four_digits(result.p_value)},
+           {"level", four_digits(result.significance_level)},
+           {"cells", std::to_string(result.cells)},
+           {"pooled", pooled},
+           {"observed", four_digits(result.observed_total)},
+           {"expected", four_digits(result.expected_total)},
+           {"none_expected", none_expected}}};
 }
 
 // ---- The histogram picture -------------------------------------------------------------------
@@ -414,14 +474,6 @@ Message below_surface_hint(Warp warp, const WarpData& data) {
           {{"count", std::to_string(data.below_surface)}, {"total", std::to_string(data.samples.size())}, handout_section(warp)}};
 }
 
-// What domain_problem found, as the {reason} of a hint.
-Message domain_reason(const std::string& problem) {
-  if (problem.rfind("not unit length", 0) == 0) return MessageId::sampling_reason_not_unit;
-  if (problem.rfind("below the surface", 0) == 0) return MessageId::sampling_reason_below_surface;
-  if (problem.rfind("outside the unit disk", 0) == 0) return MessageId::sampling_reason_outside_disk;
-  return MessageId::sampling_reason_outside_triangle;
-}
-
 void expect_samples_in_domain(Warp warp) {
   const WarpData& data = data_of(warp);
   hint_non_finite(warp, data);
@@ -434,14 +486,20 @@ void expect_samples_in_domain(Warp warp) {
   else if (data.first_out_of_domain)
     add_hint({MessageId::sampling_disk_outside, {handout_section(warp)}});
   if (data.first_non_finite)
-    ADD_FAILURE() << warp_sample_function(warp) << " returned a value that is not a number for "
-                  << input_text(data.inputs[*data.first_non_finite]) << ": " << data.samples[*data.first_non_finite]
-                  << " (" << data.non_finite << " of " << data.samples.size() << " samples)";
+    add_failure({MessageId::sampling_failure_not_finite,
+                 {{"sampler", warp_sample_function(warp)},
+                  {"input", input_text(data.inputs[*data.first_non_finite])},
+                  {"sample", gtest_text(data.samples[*data.first_non_finite])},
+                  {"count", std::to_string(data.non_finite)},
+                  {"total", std::to_string(data.samples.size())}}});
   if (data.first_out_of_domain)
-    ADD_FAILURE() << warp_sample_function(warp) << " for " << input_text(data.inputs[*data.first_out_of_domain])
-                  << " returned " << point_text(warp, data.samples[*data.first_out_of_domain]) << ": "
-                  << data.out_of_domain_reason << " (" << data.out_of_domain << " of " << data.samples.size()
-                  << " samples are outside the domain)";
+    add_failure({MessageId::sampling_failure_out_of_domain,
+                 {{"sampler", warp_sample_function(warp)},
+                  {"input", input_text(data.inputs[*data.first_out_of_domain])},
+                  {"point", point_text(warp, data.samples[*data.first_out_of_domain])},
+                  {"reason", data.out_of_domain_problem->detail},
+                  {"count", std::to_string(data.out_of_domain)},
+                  {"total", std::to_string(data.samples.size())}}});
 }
 
 testkit::ChiSquareResult chi_square_against(const WarpData& data, const std::vector<double>& expected) {
@@ -469,7 +527,7 @@ void diagnose_samples(Warp warp, const WarpData& data) {
   if (data.first_out_of_domain) {
     add_hint({MessageId::sampling_outside_domain,
               {{"count", std::to_string(data.out_of_domain)}, {"total", std::to_string(data.samples.size())},
-               {"reason", domain_reason(data.out_of_domain_reason)}, {"test", test_prefix(warp)}, handout_section(warp)}});
+               {"reason", Message(data.out_of_domain_problem->reason)}, {"test", test_prefix(warp)}, handout_section(warp)}});
     return;
   }
   for (const Mistake& mistake : sample_mistakes(warp)) {
@@ -524,14 +582,19 @@ void expect_intended_density(Warp warp) {
     add_note({MessageId::note_sampling_no_picture, {{"sampler", warp_sample_function(warp)}, {"reason", written.reason}}});
   else
     add_note({MessageId::note_sampling_picture, {{"sampler", warp_sample_function(warp)}, {"picture", written.path}}});
-  const std::string picture = written.path.empty() ? "none (" + written.reason + ")" : written.path;
   const testkit::ChiSquareResult result = chi_square_against(data, data.expected);
   if (!result.passed) {
     diagnose_samples(warp, data);
-    ADD_FAILURE() << warp_sample_function(warp) << ": " << data.samples.size()
-                  << " samples do not follow the intended density (" << result.reason << ")\n  " << result.describe()
-                  << "\n  a correct warp fails this test by bad luck with probability " << kLevel
-                  << " (fixed seed " << kSeed << "); picture: " << picture;
+    add_failure({MessageId::sampling_failure_intended_density,
+                 {{"sampler", warp_sample_function(warp)},
+                  {"count", std::to_string(data.samples.size())},
+                  {"reason", chi_square_reason(result, data.expected)},
+                  {"chi_square", chi_square_summary(result)},
+                  {"level", gtest_text(kLevel)},
+                  {"seed", std::to_string(kSeed)},
+                  written.path.empty()
+                      ? MessageArg{"picture", Message{MessageId::sampling_failure_no_picture, {{"reason", written.reason}}}}
+                      : MessageArg{"picture", written.path}}});
   }
 }
 
@@ -586,14 +649,6 @@ PdfComparison compare_pdf(Warp warp, const PdfData& pdf) {
       }
     }
   return c;
-}
-
-// A number with 4 significant digits, as the hints give factors.
-std::string four_digits(double value) {
-  std::ostringstream text;
-  text.precision(4);
-  text << value;
-  return text.str();
 }
 
 void hint_pdf(Warp warp, const PdfData& pdf, const PdfComparison& c) {
@@ -653,9 +708,13 @@ void expect_pdf_integrates_to_one(Warp warp) {
       constant = constant && std::fabs(integral - first_ratio) <= 1e-3 * std::fabs(first_ratio);
       if (std::isfinite(integral) && std::fabs(integral - 1.0) <= 1e-3) continue;
       if (++failures <= 2)
-        ADD_FAILURE() << "uniform_triangle_pdf(" << corners[3 * i] << ", " << corners[3 * i + 1] << ", "
-                      << corners[3 * i + 2] << ") = " << values[i] << " on a triangle of area " << areas[i]
-                      << ": the density times the area is " << integral << ", expected 1 (within 1e-3)";
+        add_failure({MessageId::sampling_failure_triangle_pdf,
+                     {{"p0", gtest_text(corners[3 * i])},
+                      {"p1", gtest_text(corners[3 * i + 1])},
+                      {"p2", gtest_text(corners[3 * i + 2])},
+                      {"value", gtest_text(values[i])},
+                      {"area", gtest_text(areas[i])},
+                      {"integral", gtest_text(integral)}}});
     }
     if (failures == 0) return;
     if (hint_if_not_finite("uniform_triangle_pdf", {values[0]}, {MessageId::sampling_triangle_pdf_advice, {section}})) {
@@ -666,7 +725,8 @@ void expect_pdf_integrates_to_one(Warp warp) {
     } else {
       add_hint({MessageId::sampling_triangle_pdf_wrong, {section}});
     }
-    ADD_FAILURE() << failures << " of " << values.size() << " triangles";
+    add_failure({MessageId::sampling_failure_triangles,
+                 {{"failures", std::to_string(failures)}, {"count", std::to_string(values.size())}}});
     return;
   }
   const PdfData& pdf = pdf_data_of(warp);
@@ -674,9 +734,10 @@ void expect_pdf_integrates_to_one(Warp warp) {
   bool failed = false;
   if (!(std::fabs(pdf.integral - 1.0) <= 1e-3) || c.non_finite || c.negative) {
     failed = true;
-    ADD_FAILURE() << warp_pdf_function(warp) << " integrates to " << pdf.integral << " over "
-                  << (is_direction_warp(warp) ? "the whole sphere of directions" : "the unit disk")
-                  << ", expected 1 (within 1e-3)";
+    add_failure({MessageId::sampling_failure_pdf_integral,
+                 {{"function", warp_pdf_function(warp)},
+                  {"integral", gtest_text(pdf.integral)},
+                  {"domain", Message(is_direction_warp(warp) ? MessageId::sampling_over_sphere : MessageId::sampling_over_disk)}}});
   }
   if (warp == Warp::UniformDisk) {
     // Outside the disk the density is 0.
@@ -686,8 +747,8 @@ void expect_pdf_integrates_to_one(Warp warp) {
       if (values[i] != 0.0f) {
         failed = true;
         add_hint({MessageId::sampling_disk_pdf_outside, {section}});
-        ADD_FAILURE() << "uniform_disk_pdf(" << point_text(warp, outside[i]) << ") = " << values[i]
-                      << " outside the disk, expected 0";
+        add_failure({MessageId::sampling_failure_disk_pdf_outside,
+                     {{"point", point_text(warp, outside[i])}, {"value", gtest_text(values[i])}}});
       }
   }
   if (failed) hint_pdf(warp, pdf, c);
@@ -702,7 +763,7 @@ void expect_pdf_matches_samples(Warp warp) {
   std::vector<std::size_t> which;
   for (std::size_t i = 0; i < data.samples.size() && which.size() < 2000; i += 97) {
     const glm::vec3& s = data.samples[i];
-    if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z) || !domain_problem(warp, s).empty()) continue;
+    if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z) || domain_problem(warp, s)) continue;
     if (warp == Warp::CosineHemisphere && s.z < 1e-3f) continue;  // at the rim the density itself goes to 0
     which.push_back(i);
     if (warp == Warp::UniformTriangle) continue;
@@ -720,8 +781,11 @@ void expect_pdf_matches_samples(Warp warp) {
                    is_direction_warp(warp) ? MessageArg::bilingual("kind", "direction", "方向")
                                            : MessageArg::bilingual("kind", "point", "点"),
                    {"sampler", warp_sample_function(warp)}, handout_section(warp)}});
-        ADD_FAILURE() << warp_pdf_function(warp) << "(" << point_text(warp, arguments[k]) << ") = " << values[k]
-                      << " for the sample of " << input_text(data.inputs[which[k]]);
+        add_failure({MessageId::sampling_failure_pdf_at_sample,
+                     {{"function", warp_pdf_function(warp)},
+                      {"point", point_text(warp, arguments[k])},
+                      {"value", gtest_text(values[k])},
+                      {"input", input_text(data.inputs[which[k]])}}});
         break;
       }
   }
@@ -762,9 +826,13 @@ void expect_pdf_matches_samples(Warp warp) {
                  handout_section(warp)}});
     }
   }
-  ADD_FAILURE() << warp_sample_function(warp) << "'s samples do not follow " << warp_pdf_function(warp) << " ("
-                << result.reason << ")\n  " << result.describe() << "\n  a correct pair fails this test by bad luck "
-                << "with probability " << kLevel << " (fixed seed " << kSeed << ")";
+  add_failure({MessageId::sampling_failure_pdf_matches,
+               {{"sampler", warp_sample_function(warp)},
+                {"function", warp_pdf_function(warp)},
+                {"reason", chi_square_reason(result, pdf.expected)},
+                {"chi_square", chi_square_summary(result)},
+                {"level", gtest_text(kLevel)},
+                {"seed", std::to_string(kSeed)}}});
 }
 
 // Each warp: its samples in their domain (1 point), following the intended density (2), its pdf

@@ -230,8 +230,10 @@ ChiSquareResult chi_square_test(const std::vector<double>& observed, const std::
   ChiSquareResult result;
   result.significance_level = significance_level;
   result.cells = observed.size();
+  result.min_expected_count = min_expected_count;
   for (std::size_t i = 0; i < observed.size(); ++i) {
     if (!(expected[i] >= 0.0) || !std::isfinite(expected[i])) {
+      result.failure = ChiSquareFailure::invalid_expected;
       result.reason = "the expected count of cell " + std::to_string(i) + " is " + number(expected[i]) +
                       " (a density must be finite and >= 0)";
       return result;
@@ -271,19 +273,23 @@ ChiSquareResult chi_square_test(const std::vector<double>& observed, const std::
   result.statistic = statistic;
   result.degrees_of_freedom = groups - 1;
   if (result.samples_where_none_expected > max_samples_where_none_expected) {
+    result.failure = ChiSquareFailure::samples_where_none_expected;
     result.reason = number(result.samples_where_none_expected) + " samples fell where the density is 0";
     return result;
   }
   if (result.degrees_of_freedom < 1) {
+    result.failure = ChiSquareFailure::too_few_samples;
     result.reason = "too few samples for a chi-square test (fewer than two cells expect " + number(min_expected_count) +
                     " or more)";
     return result;
   }
   result.p_value = chi_square_upper_tail(statistic, result.degrees_of_freedom);
   result.passed = result.p_value >= significance_level;
-  if (!result.passed)
+  if (!result.passed) {
+    result.failure = ChiSquareFailure::misfit;
     result.reason = "the samples do not follow the density (p = " + number(result.p_value) + " < " +
                     number(significance_level) + ")";
+  }
   return result;
 }
 

@@ -66,6 +66,16 @@ double binomial_upper_tail(long long k, long long n, double p);
 
 // ---- Chi-square goodness of fit --------------------------------------------------------------
 
+// Why a chi-square test failed, for a caller that words it itself (the grader, in two languages);
+// `reason` words it in English.
+enum class ChiSquareFailure {
+  none,                         // passed
+  invalid_expected,             // an expected count is negative, NaN or infinite
+  samples_where_none_expected,  // more than the tolerance fell in cells that expect nothing
+  too_few_samples,              // fewer than two cells expect min_expected_count or more
+  misfit,                       // p_value < significance_level
+};
+
 struct ChiSquareResult {
   bool passed = false;
   double statistic = 0;           // sum over the (pooled) cells of (observed - expected)^2 / expected
@@ -78,6 +88,8 @@ struct ChiSquareResult {
   // density says there is none. More than `max_samples_where_none_expected` fails outright.
   double samples_where_none_expected = 0;
   double observed_total = 0, expected_total = 0;
+  double min_expected_count = 0;  // the minimum a cell expects before it is pooled
+  ChiSquareFailure failure = ChiSquareFailure::none;
   std::string reason;             // why it failed, in words ("" when it passed)
   std::string describe() const;   // one line: statistic, dof, p-value, level, pooling
 };
