@@ -23,7 +23,7 @@ std::string status_text(const StageResult& stage) {
                                  : text_of(MessageId::console_tests_failed,
                                            {{"failed", std::to_string(failed)}, {"count", std::to_string(stage.tests.size())}});
   if (not_attempted > 0) text += text_of(MessageId::console_tests_not_attempted, {{"count", std::to_string(not_attempted)}});
-  if (!stage.problem.empty()) text += text_of(MessageId::console_problem, {{"problem", stage.problem}});
+  if (stage.problem) text += text_of(MessageId::console_problem, {{"problem", *stage.problem}});
   return text;
 }
 

@@ -148,9 +148,21 @@ class Recorder : public ::testing::EmptyTestEventListener {
         return;
       }
     }
-    std::string shown = message;
-    if (shown.size() > 1500) shown = shown.substr(0, 1500) + " [...]";
-    messages_.push_back(verbatim(name_non_finite(shown)));
+    // GoogleTest's words for an exception out of the test (the stage code's own, or the stage
+    // server's "ran out of memory"): its description framed in the run's language.
+    const std::string thrown = "C++ exception with description \"", in_body = "\" thrown in the test body.";
+    if (message.size() >= thrown.size() + in_body.size() && message.compare(0, thrown.size(), thrown) == 0 &&
+        message.compare(message.size() - in_body.size(), in_body.size(), in_body) == 0) {
+      messages_.push_back(name_non_finite(Message(
+          MessageId::failure_exception,
+          {{"what", cut(message.substr(thrown.size(), message.size() - thrown.size() - in_body.size()))}})));
+      return;
+    }
+    if (message == "Unknown C++ exception thrown in the test body.") {
+      messages_.push_back(MessageId::failure_unknown_exception);
+      return;
+    }
+    messages_.push_back(verbatim(name_non_finite(cut(message))));
   }
 
   void OnTestEnd(const ::testing::TestInfo& info) override {
@@ -159,6 +171,10 @@ class Recorder : public ::testing::EmptyTestEventListener {
   }
 
  private:
+  // A text cut at 1500 characters: a failure stays readable whatever the stage code threw.
+  static std::string cut(const std::string& text) {
+    return text.size() > 1500 ? text.substr(0, 1500) + " [...]" : text;
+  }
   static std::string full_name(const ::testing::TestInfo& info) {
     return std::string(info.test_suite_name()) + "." + info.name();
   }

@@ -189,15 +189,15 @@ void kill_every_descendant() {
 }
 
 // A signal that ended a stage server, named for a student.
-std::string signal_description(int signal_number) {
+Message signal_description(int signal_number) {
   const char* name = ::strsignal(signal_number);
-  std::string text = "signal " + std::to_string(signal_number);
-  if (name) text += " (" + std::string(name) + ")";
-  if (signal_number == SIGSEGV) text += ": your code read or wrote memory it does not own (an index out of range? a null pointer?)";
-  else if (signal_number == SIGFPE) text += ": an integer division by zero?";
-  else if (signal_number == SIGABRT) text += ": abort(), a failed assert or an uncaught exception";
-  else if (signal_number == SIGKILL || signal_number == SIGXCPU) text += ": killed, probably over the memory or time limit";
-  return text;
+  std::vector<Message> named, advice;
+  if (name) named.push_back({MessageId::crash_name, {{"name", name}}});
+  if (signal_number == SIGSEGV) advice.push_back(MessageId::crash_advice_memory);
+  else if (signal_number == SIGFPE) advice.push_back(MessageId::crash_advice_division);
+  else if (signal_number == SIGABRT) advice.push_back(MessageId::crash_advice_abort);
+  else if (signal_number == SIGKILL || signal_number == SIGXCPU) advice.push_back(MessageId::crash_advice_killed);
+  return {MessageId::crash_signal, {{"number", std::to_string(signal_number)}, {"name", named}, {"advice", advice}}};
 }
 
 [[noreturn]] void child_fail(const char* what) {
@@ -257,19 +257,19 @@ std::string default_stage_server_path() {
   return std::filesystem::canonical("/proc/self/exe").string() + "-stage-server";
 }
 
-std::string sandbox_description() {
+Message sandbox_description() {
   const Sandbox& box = sandbox();
-  std::string text = box.as_root ? "its own user id (it cannot write the grader's files, nor signal the grader; "
-                                   "everything it starts is killed with its stage)"
-                                 : "your user id (processes it starts are killed with its stage)";
-  if (box.keeps_read_search)
-    text += ", which may read every folder (CAP_DAC_READ_SEARCH: the programs are where that user id alone cannot enter)";
-  if (box.landlock > 0)
-    text += ", Landlock ABI " + std::to_string(box.landlock) + " (no file writes" +
-            std::string(box.landlock >= 4 ? ", no TCP" : "") + std::string(box.landlock >= 6 ? ", no signals out" : "") + ")";
-  else if (!box.as_root)
-    text += "; WARNING: no Landlock in this kernel and not root: stage code can write your files";
-  return text;
+  std::vector<Message> parts = {box.as_root ? MessageId::sandbox_own_user : MessageId::sandbox_your_user};
+  if (box.keeps_read_search) parts.push_back(MessageId::sandbox_reads_every_folder);
+  if (box.landlock > 0) {
+    std::vector<Message> tcp, signals;
+    if (box.landlock >= 4) tcp.push_back(MessageId::sandbox_no_tcp);
+    if (box.landlock >= 6) signals.push_back(MessageId::sandbox_no_signals);
+    parts.push_back({MessageId::sandbox_landlock, {{"abi", std::to_string(box.landlock)}, {"tcp", tcp}, {"signals", signals}}});
+  } else if (!box.as_root) {
+    parts.push_back(MessageId::sandbox_no_landlock);
+  }
+  return {MessageId::sandbox, {{"parts", parts}}};
 }
 
 struct StageProcess::Child {

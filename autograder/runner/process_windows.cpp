@@ -62,22 +62,23 @@ std::string last_error(const char* what) {
 }
 
 // An exception code that ended a process, named for a student.
-std::string exception_description(DWORD code) {
+Message exception_description(DWORD code) {
   char hex[16];
   std::snprintf(hex, sizeof hex, "0x%08lX", static_cast<unsigned long>(code));
-  std::string text = std::string("exception ") + hex;
+  std::vector<Message> detail;
   switch (code) {
-    case 0xC0000005: return text + " (access violation): your code read or wrote memory it does not own (an index out of range? a null pointer?)";
-    case 0xC00000FD: return text + " (stack overflow): a recursion that never ends, or a very large local array?";
-    case 0xC0000094: return text + " (integer division by zero)";
-    case 0xC000008C: return text + " (array bounds exceeded)";
-    case 0xC000001D: return text + " (illegal instruction)";
-    case 0xC0000017: case 0xC000012D: return text + " (out of memory): probably over the memory limit";
-    case 0xC0000374: return text + " (heap corruption): a write past the end of an array, or a double delete?";
-    case 0xC0000409: return text + " (stack buffer overrun or fast fail): a write past a local array, or abort()?";
-    case 0xC0000420: return text + " (assertion failure)";
-    default: return text;
+    case 0xC0000005: detail.push_back(MessageId::crash_access_violation); break;
+    case 0xC00000FD: detail.push_back(MessageId::crash_stack_overflow); break;
+    case 0xC0000094: detail.push_back(MessageId::crash_integer_division); break;
+    case 0xC000008C: detail.push_back(MessageId::crash_array_bounds); break;
+    case 0xC000001D: detail.push_back(MessageId::crash_illegal_instruction); break;
+    case 0xC0000017: case 0xC000012D: detail.push_back(MessageId::crash_out_of_memory); break;
+    case 0xC0000374: detail.push_back(MessageId::crash_heap_corruption); break;
+    case 0xC0000409: detail.push_back(MessageId::crash_stack_buffer_overrun); break;
+    case 0xC0000420: detail.push_back(MessageId::crash_assertion_failure); break;
+    default: break;
   }
+  return {MessageId::crash_exception, {{"code", hex}, {"detail", detail}}};
 }
 
 // A pipe of which the child gets one end (inheritable) and the judge keeps the other (not).
@@ -187,10 +188,7 @@ std::string default_stage_server_path() {
   return program + "-stage-server.exe";
 }
 
-std::string sandbox_description() {
-  return "a Windows job object (memory and process limits; everything it starts is killed with its stage); "
-         "WARNING: Windows has no file-system confinement here: stage code runs with your rights and can write your files";
-}
+Message sandbox_description() { return MessageId::sandbox_windows_job; }
 
 StageProcess::StageProcess() = default;
 
@@ -371,15 +369,13 @@ ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
   ::GetExitCodeProcess(child_->process, &code);
   if (code == kMemoryExitCode || child_->over_memory) {
     end.crashed = true;
-    end.crash = "being stopped over the memory limit of " + std::to_string(child_->memory_limit_mb) +
-                " MiB (the memory kept by all the stage's processes): does it keep growing a container, or never free what "
-                "it allocates?";
+    end.crash = {MessageId::crash_memory_limit, {{"limit", std::to_string(child_->memory_limit_mb)}}};
   } else if (code == kKilledExitCode) {
     end.crashed = true;
-    end.crash = "being killed: probably over the memory or time limit";
+    end.crash = MessageId::crash_killed;
   } else if (code == 3) {  // what abort() leaves with the MinGW and MSVC runtimes
     end.crashed = true;
-    end.crash = "abort() (exit status 3): a failed assert or std::terminate";
+    end.crash = MessageId::crash_abort_status_3;
   } else if (code >= 0xC0000000u) {
     end.crashed = true;
     end.crash = exception_description(code);

@@ -197,7 +197,7 @@ std::string with_handout_links(const std::string& text, const std::string& kit_h
 
 const char* status_class(const StageResult& stage) {
   if (stage.not_attempted) return "not-attempted";
-  return stage.earned() == stage.max() && stage.problem.empty() ? "passed" : "failed";
+  return stage.earned() == stage.max() && !stage.problem ? "passed" : "failed";
 }
 
 const char* test_class(Status status) {

@@ -3,6 +3,7 @@
 
 #include "grading.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,7 @@ struct TestResult {
 struct StageResult {
   const StageInfo* stage = nullptr;
   std::vector<TestResult> tests;
-  std::string problem;  // crash / time-out, for the table (the stage session's English)
+  std::optional<Message> problem;  // crash / time-out, for the table (stage_session.h)
   bool not_attempted = false;
   std::string output;   // what the stage code printed (never parsed, only shown)
   int earned() const;

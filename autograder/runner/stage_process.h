@@ -6,6 +6,8 @@
 // object); the judge, the stage server and the protocol are the same on both.
 #pragma once
 
+#include "messages.h"
+
 #include <chrono>
 #include <memory>
 #include <string>
@@ -24,8 +26,8 @@ struct SandboxLimits {
 // How a stage server ended.
 struct ProcessEnd {
   bool crashed = false;  // killed by a signal (Linux) or ended by an exception (Windows)
-  std::string crash;     // then: what it was, named for a student ("signal 11 (Segmentation
-                         // fault): your code read or wrote memory it does not own ...")
+  Message crash{MessageId::crash_killed};  // then: what it was, named for a student ("signal 11
+                         // (Segmentation fault): your code read or wrote memory it does not own ...")
   int exit_code = 0;     // else: its exit status
 };
 
@@ -38,8 +40,8 @@ void prepare_judge();
 // raylab_add_autograder builds a judge's stage server.
 std::string default_stage_server_path();
 
-// What confines stage code on this machine, in one sentence, for the report.
-std::string sandbox_description();
+// What confines stage code on this machine, in one sentence, for the report (sandbox_ messages).
+Message sandbox_description();
 
 class StageProcess {
  public:

@@ -22,46 +22,47 @@ void StageSession::begin_stage() {
   used_seconds_ = 0;
   losses_ = 0;
   test_.clear();
-  test_loss_.clear();
-  abandoned_.clear();
-  problem_.clear();
+  test_loss_.reset();
+  abandoned_.reset();
+  problem_.reset();
   output_.clear();
 }
 
 void StageSession::begin_test(const std::string& test) {
   test_ = test;
-  test_loss_.clear();
+  test_loss_.reset();
 }
 
-std::optional<std::string> StageSession::test_loss() const {
-  if (!test_loss_.empty()) return test_loss_;
-  return std::nullopt;
-}
+std::optional<Message> StageSession::test_loss() const { return test_loss_; }
 
 StageEnd StageSession::end_stage() {
   if (process_.running()) process_.stop(false, output_);
   return {problem_, output_};
 }
 
-std::string StageSession::where() const { return test_.empty() ? "before its first test" : "in " + test_; }
+Message StageSession::where() const {
+  if (test_.empty()) return MessageId::lost_before_first_test;
+  return {MessageId::lost_in_test, {{"test", test_}}};
+}
 
-void StageSession::lose(const std::string& reason, bool timed_out) {
-  if (problem_.empty()) problem_ = reason + ", " + where();
-  test_loss_ = reason + " during this test";
+void StageSession::lose(const Message& reason, bool timed_out) {
+  if (!problem_) problem_ = Message{MessageId::lost_problem, {{"reason", reason}, {"where", where()}}};
+  test_loss_ = Message{MessageId::lost_during_this_test, {{"reason", reason}}};
   ++losses_;
   if (timed_out)
-    abandoned_ = "not run: the stage's process " + reason + " " + where();
+    abandoned_ = Message{MessageId::lost_not_run, {{"reason", reason}, {"where", where()}}};
   else if (losses_ > options_.max_restarts)
-    abandoned_ = "not run: the stage's process failed " + std::to_string(losses_) + " times; the last time it " + reason + " " + where();
-  throw StageLost(reason);
+    abandoned_ = Message{MessageId::lost_not_run_after_failures,
+                         {{"count", std::to_string(losses_)}, {"reason", reason}, {"where", where()}}};
+  throw StageLost(render(reason, Language::English));
 }
 
 std::string StageSession::call(Function function, const Writer& arguments, const Callback& on_callback) {
-  if (!abandoned_.empty()) {
+  if (abandoned_) {
     test_loss_ = abandoned_;
-    throw StageLost(abandoned_);
+    throw StageLost(render(*abandoned_, Language::English));
   }
-  if (!test_loss_.empty()) throw StageLost(test_loss_);
+  if (test_loss_) throw StageLost(render(*test_loss_, Language::English));
   function_ = function;
   const auto started = Clock::now();
   auto deadline = started + std::chrono::duration_cast<Clock::duration>(
@@ -73,31 +74,27 @@ std::string StageSession::call(Function function, const Writer& arguments, const
     ~Account() { session.used_seconds_ += std::chrono::duration<double>(Clock::now() - started).count(); }
   } account{*this, started};
 
-  const std::string during = std::string(" during ") + protocol::function_name(function);
+  const Message during{MessageId::lost_during_function, {{"function", protocol::function_name(function)}}};
   auto timed_out = [&]() {
     process_.stop(true, output_);
-    std::ostringstream text;
-    if (deadline == options_.run_deadline) text << "ran past the time limit of the whole grading run";
-    else text << "timed out after " << options_.stage_seconds << " s (an endless loop?)";
-    lose(text.str(), true);
+    if (deadline == options_.run_deadline) lose(MessageId::lost_run_time_limit, true);
+    lose({MessageId::lost_timed_out, {{"seconds", stream_text(options_.stage_seconds)}}}, true);
   };
   auto ended = [&]() {
     const ProcessEnd end = process_.stop(false, output_);
-    if (end.crashed) lose("crashed with " + end.crash, false);
-    lose("exited (status " + std::to_string(end.exit_code) + ")" + during + ": do not call exit() in stage code", false);
+    if (end.crashed) lose({MessageId::lost_crashed, {{"crash", end.crash}}}, false);
+    lose({MessageId::lost_exited, {{"status", std::to_string(end.exit_code)}, {"during", during}}}, false);
   };
   auto garbled = [&](const std::string& what) {
     process_.stop(true, output_);
-    lose("sent the grader a malformed answer" + during + " (" + what +
-             "): stage code must not write to descriptors it did not open",
-         false);
+    lose({MessageId::lost_malformed_answer, {{"during", during}, {"what", what}}}, false);
   };
 
   if (!process_.running()) {
     try {
       process_.start(options_.server_path, options_.limits);
     } catch (const std::exception& e) {
-      lose(std::string("could not be started: ") + e.what(), false);
+      lose({MessageId::lost_not_started, {{"error", e.what()}}}, false);
     }
     ++generation_;
   }

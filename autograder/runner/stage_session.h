@@ -33,8 +33,8 @@ struct SessionOptions {
 };
 
 struct StageEnd {
-  std::string problem;  // the first loss, for the score table ("" when none)
-  std::string output;   // what the stage code printed
+  std::optional<Message> problem;  // the first loss, for the score table
+  std::string output;              // what the stage code printed
 };
 
 class StageSession {
@@ -47,8 +47,8 @@ class StageSession {
   void begin_stage();
   // test: "Suite.Name", or "" for the stage's probe before its tests.
   void begin_test(const std::string& test);
-  // The reason the current test lost its stage calls, if it did.
-  std::optional<std::string> test_loss() const;
+  // The reason the current test lost its stage calls, if it did (messages.def: lost_...).
+  std::optional<Message> test_loss() const;
   // Stops the stage's server and every process it started; only then is anything reported.
   StageEnd end_stage();
 
@@ -63,15 +63,18 @@ class StageSession {
   bool server_running() const { return process_.running(); }
 
  private:
-  [[noreturn]] void lose(const std::string& reason, bool timed_out);
-  std::string where() const;
+  // Ends the call: the test (and after a time-out or too many losses, the stage) is lost. `reason`
+  // says what the process did, a lost_... message ("timed out after 60 s (an endless loop?)").
+  [[noreturn]] void lose(const Message& reason, bool timed_out);
+  Message where() const;
 
   SessionOptions options_;
   StageProcess process_;
   unsigned generation_ = 0;
   double used_seconds_ = 0;
   int losses_ = 0;
-  std::string test_, test_loss_, abandoned_, problem_, output_;
+  std::string test_, output_;
+  std::optional<Message> test_loss_, abandoned_, problem_;
   protocol::Function function_ = protocol::Function::GenerateCameraRay;
 };
 

@@ -90,7 +90,7 @@ StageResult grade_stage(const StageInfo& stage) {
                            t.seconds = std::chrono::duration<double>(Clock::now() - test_started).count();
                            if (const auto loss = StageSession::instance().test_loss()) {
                              t.status = Status::Lost;  // whatever the test concluded without the stage's answers
-                             t.messages = {verbatim(*loss)};
+                             t.messages = {*loss};
                              t.hints.clear();
                              t.notes.clear();
                              t.images.clear();
