@@ -233,6 +233,18 @@ std::vector<Message> diagnose_mapping(const Camera& camera) {
   return hints;
 }
 
+// A camera as the failure texts name it: the framework's operator<< (raylab/camera.h), in words of
+// either language, each value as GoogleTest's stream writes it.
+Message camera_text(const Camera& camera) {
+  return {MessageId::camera_description,
+          {{"position", gtest_text(camera.position)},
+           {"look_at", gtest_text(camera.look_at)},
+           {"up", gtest_text(camera.up)},
+           {"fov_y", gtest_text(camera.fov_y_degrees)},
+           {"width", gtest_text(camera.width)},
+           {"height", gtest_text(camera.height)}}};
+}
+
 // Names the mistakes that make the student's ray `got` differ from `expected` on `camera`.
 void diagnose(const Camera& camera, const glm::vec3& got, const glm::vec3& expected) {
   if (hint_if_not_finite("direction", {got.x, got.y, got.z}, MessageId::camera_advice_division_by_zero)) return;
@@ -255,7 +267,7 @@ void expect_camera_ray(const Camera& camera, int pixel_x, int pixel_y, const glm
   if (!ok) diagnose(camera, ray.direction, expected);
   if (!ok)
     add_failure({MessageId::camera_failure_ray,
-                 {{"x", std::to_string(pixel_x)}, {"y", std::to_string(pixel_y)}, {"camera", gtest_text(camera)},
+                 {{"x", std::to_string(pixel_x)}, {"y", std::to_string(pixel_y)}, {"camera", camera_text(camera)},
                   {"expected", gtest_text(expected)}, {"tolerance", gtest_text(kDirectionTolerance)},
                   {"got", gtest_text(ray.direction)}}});
 }
@@ -342,7 +354,7 @@ GRADED_TEST(kStage, Stage01CameraRays, RaysThroughOtherPointsOfThePixel, 2) {
       add_hint(MessageId::camera_position_in_pixel_ignored);
     add_failure({MessageId::camera_failure_point_in_pixel,
                  {{"point", gtest_text(c.position_in_pixel)}, {"x", std::to_string(c.pixel_x)},
-                  {"y", std::to_string(c.pixel_y)}, {"camera", gtest_text(camera)}, {"expected", gtest_text(expected)},
+                  {"y", std::to_string(c.pixel_y)}, {"camera", camera_text(camera)}, {"expected", gtest_text(expected)},
                   {"tolerance", gtest_text(kDirectionTolerance)}, {"got", gtest_text(got)}}});
   }
 }
@@ -367,7 +379,7 @@ GRADED_TEST(kStage, Stage01CameraRays, MatchesReferenceRays, 3) {
       diagnose(camera, got, expected);
       add_failure({MessageId::camera_failure_reference,
                    {{"id", c.at("id").dump()}, {"x", std::to_string(x)}, {"y", std::to_string(y)},
-                    {"camera", gtest_text(camera)}, {"expected", gtest_text(expected)}, {"got", gtest_text(got)}}});
+                    {"camera", camera_text(camera)}, {"expected", gtest_text(expected)}, {"got", gtest_text(got)}}});
     }
   }
   EXPECT_EQ(failures, 0)

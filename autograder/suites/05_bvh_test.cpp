@@ -38,7 +38,7 @@ void expect_valid_trees(Builder build, const char* builder_name) {
 }
 
 void expect_same_hits_as_brute_force(Builder build, const char* builder_name, bool any_hit, bool axis_aligned,
-                                     const char* what) {
+                                     const Message& what) {
   int differences = 0, rays_tested = 0;
   std::uint32_t seed = 7000;
   for (const TestMesh& mesh : bvh_test_meshes()) {
@@ -90,15 +90,15 @@ GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
 }
 
 GRADED_TEST(kStage, Stage05Bvh, ClosestHitsMatchBruteForce, 5) {
-  expect_same_hits_as_brute_force(build_bvh, "build_bvh", false, false, "closest hit");
+  expect_same_hits_as_brute_force(build_bvh, "build_bvh", false, false, MessageId::bvh_what_closest_hit);
 }
 
 GRADED_TEST(kStage, Stage05Bvh, AnyHitAgreesWithBruteForce, 2) {
-  expect_same_hits_as_brute_force(build_bvh, "build_bvh", true, false, "any hit");
+  expect_same_hits_as_brute_force(build_bvh, "build_bvh", true, false, MessageId::bvh_what_any_hit);
 }
 
 GRADED_TEST(kStage, Stage05Bvh, AxisAlignedRaysFindTheirHits, 2) {
-  expect_same_hits_as_brute_force(build_bvh, "build_bvh", false, true, "closest hit, axis-aligned ray");
+  expect_same_hits_as_brute_force(build_bvh, "build_bvh", false, true, MessageId::bvh_what_closest_hit_axis_aligned);
 }
 
 // The work limits, against the grader's traversal of the same tree with the same rays (the
@@ -197,7 +197,7 @@ GRADED_TEST(kStage, Stage05Bvh, BunnyImageMatchesReference, 2) {
 GRADED_TEST(kBonusStage, Stage05bBvhSah, BuildsAValidTree, 3) { expect_valid_trees(build_bvh_sah, "build_bvh_sah"); }
 
 GRADED_TEST(kBonusStage, Stage05bBvhSah, ClosestHitsMatchBruteForce, 3) {
-  expect_same_hits_as_brute_force(build_bvh_sah, "build_bvh_sah", false, false, "closest hit through the SAH tree");
+  expect_same_hits_as_brute_force(build_bvh_sah, "build_bvh_sah", false, false, MessageId::bvh_what_closest_hit_sah);
 }
 
 GRADED_TEST(kBonusStage, Stage05bBvhSah, SahCostNearTheReference, 4) {

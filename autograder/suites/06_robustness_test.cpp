@@ -159,17 +159,21 @@ GRADED_TEST(kStage, Stage06Robustness, WatertightMatchesStage03Answers, 3) {
 }
 
 // The closed meshes of the leak tests (raylab/testkit/leaks.h), named for the report.
-testkit::ClosedMesh named(testkit::ClosedMesh mesh, const std::string& description) {
-  mesh.name = description + " of " + std::to_string(mesh.triangle_count()) + " triangles";
-  return mesh;
+struct NamedMesh {
+  testkit::ClosedMesh mesh;
+  Message name;  // "a sphere of 1280 triangles", in either language
+};
+NamedMesh named(testkit::ClosedMesh mesh, MessageId description) {
+  const std::string triangles = std::to_string(mesh.triangle_count());
+  return {std::move(mesh), {description, {{"triangles", triangles}}}};
 }
 
-testkit::ClosedMesh icosphere(int levels, float radius, glm::vec3 center) {
-  return named(testkit::closed_icosphere(levels, radius, center), "a sphere");
+NamedMesh icosphere(int levels, float radius, glm::vec3 center) {
+  return named(testkit::closed_icosphere(levels, radius, center), MessageId::robust_mesh_sphere);
 }
 
-testkit::ClosedMesh grid_cube(int n, float half, glm::vec3 center) {
-  return named(testkit::closed_grid_cube(n, half, center), "a cube");
+NamedMesh grid_cube(int n, float half, glm::vec3 center) {
+  return named(testkit::closed_grid_cube(n, half, center), MessageId::robust_mesh_cube);
 }
 
 // testkit::count_leaks with your triangle test, called in the stage server in batches
@@ -194,9 +198,9 @@ constexpr int kLeakRays = 100000;
 
 GRADED_TEST(kStage, Stage06Robustness, NoRayLeaksThroughClosedMeshes, 6) {
   constexpr int kRays = kLeakRays;
-  const testkit::ClosedMesh meshes[] = {icosphere(3, 1.0f, glm::vec3(0.1f, -0.2f, 0.3f)), grid_cube(8, 1.0f, glm::vec3(0.0f))};
-  for (const testkit::ClosedMesh& mesh : meshes) {
-    const testkit::LeakCount count = count_leaks(mesh, &intersect_ray_triangle_watertight, kRays, 6);
+  const NamedMesh meshes[] = {icosphere(3, 1.0f, glm::vec3(0.1f, -0.2f, 0.3f)), grid_cube(8, 1.0f, glm::vec3(0.0f))};
+  for (const NamedMesh& mesh : meshes) {
+    const testkit::LeakCount count = count_leaks(mesh.mesh, &intersect_ray_triangle_watertight, kRays, 6);
     const std::uint64_t leaks = count.leaks;
     const Ray first_leak = count.first_leak.value_or(Ray());
     add_note({MessageId::note_watertight_leaks,
@@ -362,9 +366,9 @@ GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
 // For information only (0 points), and last, so that a stage 03 that crashes or hangs costs
 // nothing here: how many of the same rays your stage 03 intersect_ray_triangle lets through.
 GRADED_TEST(kStage, Stage06Robustness, ForComparisonYourStage03Leaks, 0) {
-  for (const testkit::ClosedMesh& mesh : {icosphere(3, 1.0f, glm::vec3(0.1f, -0.2f, 0.3f)), grid_cube(8, 1.0f, glm::vec3(0.0f))}) {
+  for (const NamedMesh& mesh : {icosphere(3, 1.0f, glm::vec3(0.1f, -0.2f, 0.3f)), grid_cube(8, 1.0f, glm::vec3(0.0f))}) {
     try {
-      const std::uint64_t leaks = count_leaks(mesh, &intersect_ray_triangle, kLeakRays, 6).leaks;
+      const std::uint64_t leaks = count_leaks(mesh.mesh, &intersect_ray_triangle, kLeakRays, 6).leaks;
       add_note({MessageId::note_stage03_leaks,
                 {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kLeakRays)}}});
     } catch (const NotImplemented&) {

@@ -20,7 +20,7 @@ std::optional<float> test_triangle(const TestMesh& mesh, const Ray& ray, std::ui
   return grader_triangle_test(const_cast<std::vector<std::array<glm::vec3, 3>>*>(&mesh.triangles), ray, primitive);
 }
 
-TestMesh make_mesh(std::string name, std::vector<std::array<glm::vec3, 3>> triangles) {
+TestMesh make_mesh(Message name, std::vector<std::array<glm::vec3, 3>> triangles) {
   TestMesh mesh{std::move(name), std::move(triangles), {}};
   for (const auto& t : mesh.triangles) {
     Bounds3 box;
@@ -37,7 +37,7 @@ std::vector<TestMesh> make_meshes() {
   for (std::size_t i = 0; i + 2 < bunny.indices.size(); i += 3)
     triangles.push_back({bunny.positions[bunny.indices[i]], bunny.positions[bunny.indices[i + 1]],
                          bunny.positions[bunny.indices[i + 2]]});
-  meshes.push_back(make_mesh("the bunny", triangles));
+  meshes.push_back(make_mesh(MessageId::bvh_mesh_bunny, triangles));
 
   Pcg32 random(505, testkit::stream_of("bvh triangle soup"));
   triangles.clear();
@@ -45,7 +45,7 @@ std::vector<TestMesh> make_meshes() {
     const glm::vec3 center = testkit::random_vec3(random, -10, 10);
     triangles.push_back({center + testkit::random_vec3(random, -1, 1), center + testkit::random_vec3(random, -1, 1), center + testkit::random_vec3(random, -1, 1)});
   }
-  meshes.push_back(make_mesh("a random triangle soup", triangles));
+  meshes.push_back(make_mesh(MessageId::bvh_mesh_soup, triangles));
 
   triangles.clear();
   for (int z = 0; z < 20; ++z)
@@ -54,10 +54,10 @@ std::vector<TestMesh> make_meshes() {
       triangles.push_back({a, b, c});
       triangles.push_back({a, c, d});
     }
-  meshes.push_back(make_mesh("a flat grid (boxes of zero height)", triangles));
+  meshes.push_back(make_mesh(MessageId::bvh_mesh_flat_grid, triangles));
 
   triangles.assign(64, {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)});
-  meshes.push_back(make_mesh("64 copies of one triangle (equal centroids)", triangles));
+  meshes.push_back(make_mesh(MessageId::bvh_mesh_copies, triangles));
 
   // Large triangles that all overlap, each moved a little: every split leaves both children
   // about as large as the node, so the SAH prefers one leaf of all 100 -- which must still be
@@ -67,7 +67,7 @@ std::vector<TestMesh> make_meshes() {
     const glm::vec3 shift = 0.01f * testkit::random_vec3(random, -1, 1);
     triangles.push_back({glm::vec3(-5, -5, 0) + shift, glm::vec3(5, -5, 1) + shift, glm::vec3(0, 5, -1) + shift});
   }
-  meshes.push_back(make_mesh("100 overlapping triangles (the SAH prefers one big leaf)", triangles));
+  meshes.push_back(make_mesh(MessageId::bvh_mesh_overlapping, triangles));
   return meshes;
 }
 
@@ -366,7 +366,7 @@ std::string describe_ray(const Ray& ray) {
 }  // namespace
 
 int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
-                             const char* what) {
+                             const Message& what) {
   const PrimitiveIntersector intersector = intersector_for(mesh);
   int differences = 0;
   for (std::size_t r = 0; r < rays.size(); ++r) {

@@ -13,7 +13,7 @@
 namespace raylab::grading {
 
 struct TestMesh {
-  std::string name;
+  Message name;  // "the bunny", in either language
   std::vector<std::array<glm::vec3, 3>> triangles;
   std::vector<Bounds3> bounds;  // one per triangle, for the builders
 };
@@ -79,6 +79,6 @@ inline bool children_in_range(const Bvh& bvh, const BvhNode& node) {
 // Compares intersect_bvh with the oracle on `rays`; reports up to 3 differences with hints.
 // Returns the number of rays that differ.
 int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
-                             const char* what);
+                             const Message& what);
 
 }  // namespace raylab::grading
