@@ -185,7 +185,7 @@ struct Expectation {
 void expect_means(const DirectLightScene& scene, const std::vector<Expectation>& expectations, int light_count) {
   std::vector<DirectLightQuery> queries;
   for (const Expectation& e : expectations) queries.push_back(e.query);
-  const std::vector<glm::vec3> samples = direct_light_samples(scene, queries, 8);
+  const std::vector<glm::vec3> samples = direct_light_samples(scene, queries, test_seed(8));
   std::size_t offset = 0;
   bool failed = false;
   for (const Expectation& e : expectations) {
@@ -284,7 +284,7 @@ GRADED_TEST(kStage, Stage08DirectLight, ShadowRaysAndBackFaces, 3) {
   scene.triangles.push_back({glm::vec3(-3, 2, -3), glm::vec3(3, 2, 3), glm::vec3(3, 2, -3), glm::vec3(0.0f)});
   const DirectLightQuery hidden{glm::vec3(0, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), glm::vec3(0.8f), 2000};
   const DirectLightQuery facing_away{glm::vec3(0, 6, 0), glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), glm::vec3(0.8f), 2000};
-  const std::vector<glm::vec3> samples = direct_light_samples(scene, {hidden, facing_away}, 9);
+  const std::vector<glm::vec3> samples = direct_light_samples(scene, {hidden, facing_away}, test_seed(9));
   std::size_t lit_hidden = 0, lit_behind = 0;
   for (std::size_t i = 0; i < samples.size(); ++i)
     if (samples[i] != glm::vec3(0.0f)) ++(i < hidden.sample_count ? lit_hidden : lit_behind);
@@ -304,7 +304,7 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorPointLightExact, 1) {
   scene.point_lights.push_back({glm::vec3(1, 3, 2), glm::vec3(6.0f, 3.0f, 1.5f)});
   const glm::vec3 normal = glm::normalize(glm::vec3(0.1f, 1.0f, 0.2f));
   const DirectLightQuery query{glm::vec3(0.0f), normal, normal, glm::vec3(0.5f, 0.6f, 0.7f), 16};
-  const std::vector<glm::vec3> samples = direct_light_samples(scene, {query}, 10);
+  const std::vector<glm::vec3> samples = direct_light_samples(scene, {query}, test_seed(10));
   const glm::dvec3 to_light(1, 3, 2);
   const double d = glm::length(to_light);
   const glm::dvec3 expected = glm::dvec3(0.5, 0.6, 0.7) / kPiD * glm::dvec3(6.0, 3.0, 1.5) *

@@ -61,6 +61,19 @@ const ReferenceData* reference_data_of(const std::string& stage_id) {
   return found == reference_data_registry().end() ? nullptr : &found->second;
 }
 
+namespace {
+std::uint64_t test_seed_round = 0;
+}
+
+std::uint64_t test_seed(std::uint64_t graded_seed) {
+  if (test_seed_round == 0) return graded_seed;
+  // A seed no grading uses: the round and the graded seed hashed together (Pcg32's output).
+  Pcg32 mix(graded_seed, test_seed_round);
+  return (static_cast<std::uint64_t>(mix.next_uint32()) << 32) | mix.next_uint32();
+}
+
+void set_test_seed_round(std::uint64_t round) { test_seed_round = round; }
+
 std::string reference_image_name(const std::string& stage_id) { return stage_id + ".png"; }
 
 void expect_image_matches_reference(const std::string& stage_id, float channel_threshold, double max_fraction) {

@@ -58,6 +58,13 @@ bool register_reference_data(const char* stage_id, ReferenceData data);
 // The registered generator of a stage, or nullptr.
 const ReferenceData* reference_data_of(const std::string& stage_id);
 
+// The seed of a Monte Carlo test's random numbers (stages 08 and 09): `graded_seed` whenever a
+// student is graded (round 0), another independent seed in each later round. Only
+// autograder-false-failures sets a round: it grades the reference again and again to count how
+// often a correct program fails by bad luck. A suite that caches a result keys it by the seed.
+std::uint64_t test_seed(std::uint64_t graded_seed);
+void set_test_seed_round(std::uint64_t round);
+
 // The size of each stage's picture (render_stage_image in stage_calls.h): small so grading stays fast.
 constexpr int kImageWidth = 320, kImageHeight = 240;
 std::string reference_image_name(const std::string& stage_id);  // "<id>.png"

@@ -4,7 +4,6 @@
 // of how long that will take.
 #include "geometry_query.h"
 
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
