@@ -80,6 +80,7 @@ struct ImageComparison {
   std::string yours, reference, difference;
   Message yours_label{MessageId::report_yours};
   Message reference_label{MessageId::report_reference};
+  Message difference_label{MessageId::report_difference};
 };
 void add_image(const ImageComparison& images);
 

@@ -237,7 +237,7 @@ std::string pictures_html(const ImageComparison& images, Language language) {
   const std::string reference = escape_html(text_of(images.reference_label, language));
   std::string html = "<div class=\"row\">" + figure(images.yours, yours) + figure(images.reference, reference);
   if (!images.difference.empty())
-    html += figure(images.difference, escape_html(text_of(MessageId::report_difference, language)));
+    html += figure(images.difference, escape_html(text_of(images.difference_label, language)));
   html += "</div>\n";
   const std::string slider_text =
       escape_html(text_of({MessageId::report_slider, {{"yours", images.yours_label}, {"reference", images.reference_label}}},

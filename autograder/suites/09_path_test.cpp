@@ -243,8 +243,22 @@ void expect_cornell(int scene_index) {
     }
   const std::string directory = output_directory();
   std::filesystem::create_directories(directory);
-  const std::string path = directory + "/" + kStage + "-" + std::filesystem::path(scene).stem().string() + ".png";
+  const std::string name = std::string(kStage) + "-" + std::filesystem::path(scene).stem().string();
+  const std::string path = directory + "/" + name + ".png";
   write_image(picture, path);
+  // Each of the three on its own, for the HTML report (yours | reference | z-scores, and the slider).
+  auto part = [&](int index) {
+    Image image(side, side);
+    for (int y = 0; y < side; ++y)
+      for (int x = 0; x < side; ++x) image.at(x, y) = picture.at(x + index * side, y);
+    return image;
+  };
+  write_image(part(0), directory + "/" + name + "-yours.png");
+  write_image(part(1), directory + "/" + name + "-reference.png");
+  write_image(part(2), directory + "/" + name + "-z.png");
+  ImageComparison images{name + "-yours.png", name + "-reference.png", name + "-z.png"};
+  images.difference_label = Message{MessageId::report_z_scores};
+  add_image(images);
   add_note({MessageId::path_note_picture, {{"scene", scene}, {"path", path}}});
   if (test.failures == 0) return;
   add_failure({MessageId::path_failure_regions,
