@@ -9,7 +9,6 @@
 
 namespace raylab::grading {
 
-using protocol::Function;
 using protocol::Reader;
 using protocol::Writer;
 
@@ -56,13 +55,12 @@ void StageSession::lose(const std::string& reason, bool timed_out) {
   throw StageLost(reason);
 }
 
-std::string StageSession::call(Function function, const Writer& arguments, const Callback& on_callback) {
+std::string StageSession::call(const StageCall& stage_call, const Writer& arguments, const Callback& on_callback) {
   if (!abandoned_.empty()) {
     test_loss_ = abandoned_;
     throw StageLost(abandoned_);
   }
   if (!test_loss_.empty()) throw StageLost(test_loss_);
-  function_ = function;
   const auto started = Clock::now();
   auto deadline = started + std::chrono::duration_cast<Clock::duration>(
                                 std::chrono::duration<double>(options_.stage_seconds - used_seconds_));
@@ -73,7 +71,7 @@ std::string StageSession::call(Function function, const Writer& arguments, const
     ~Account() { session.used_seconds_ += std::chrono::duration<double>(Clock::now() - started).count(); }
   } account{*this, started};
 
-  const std::string during = std::string(" during ") + protocol::function_name(function);
+  const std::string during = std::string(" during ") + stage_call.description;
   auto timed_out = [&]() {
     process_.stop(true, output_);
     std::ostringstream text;
@@ -103,7 +101,7 @@ std::string StageSession::call(Function function, const Writer& arguments, const
   }
   Writer request;
   request.put(protocol::kCall);
-  request.put(function);
+  request.put_string(stage_call.name);
   request.bytes() += arguments.bytes();
   try {
     protocol::write_frame(process_.request_fd(), request.bytes());
