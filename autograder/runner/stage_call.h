@@ -9,7 +9,7 @@
 //     calls the stage code and writes its result.
 // Both sides name the call by one StageCall, so the file holds the whole of each call's format:
 //
-//   const StageCall kIntersectRaySphere{"intersect_ray_sphere", "intersect_ray_sphere"};
+//   constexpr StageCall kIntersectRaySphere{"intersect_ray_sphere", "intersect_ray_sphere"};
 //   #if RAYLAB_JUDGE
 //   std::optional<float> intersect_ray_sphere(const Ray& ray, const glm::vec3& c, float r) {
 //     return call_remote<decltype(intersect_ray_sphere)>(kIntersectRaySphere, ray, c, r);
@@ -20,7 +20,9 @@
 //
 // call_remote and call_local send the arguments and the result as the function's declared types
 // (plain values, std::optional, std::vector, std::string); a call that does more (a batch, a
-// tree, a picture) writes and reads its own format with protocol::Writer and protocol::Reader.
+// tree, a picture) writes and reads its own format with protocol::Writer and protocol::Reader. A
+// stage function whose arguments cannot be sent (a RenderContext) is reached only through such a
+// batch call, and the judge's definition of it throws std::logic_error (08_direct_light_calls.cpp).
 #pragma once
 
 #include "protocol.h"
