@@ -3,6 +3,8 @@
 #   RAYLAB_STAGE_IDS          the ids, in teaching order
 #   RAYLAB_STAGE_FILES        the stage files, relative to assignments/ or solutions/
 #   RAYLAB_SUITE_FILES        the autograder's suite files, relative to autograder/suites/
+#   RAYLAB_CALL_FILES         the stages' calls between judge and stage server, relative to
+#                             autograder/suites/ (autograder/runner/stage_call.h)
 #   RAYLAB_STAGE_TABLE_SOURCE a generated C++ file holding the table for raylab/stage_table.h
 #
 # The stage contract in the build: every stage's functions are declared once in
@@ -79,6 +81,7 @@ math(EXPR raylab_last_stage "${raylab_stage_count} - 1")
 set(RAYLAB_STAGE_IDS "")
 set(RAYLAB_STAGE_FILES "")
 set(RAYLAB_SUITE_FILES "")
+set(RAYLAB_CALL_FILES "")
 set(raylab_short_ids "")
 set(raylab_table_entries "")
 foreach(index RANGE ${raylab_last_stage})
@@ -111,6 +114,7 @@ foreach(index RANGE ${raylab_last_stage})
   raylab_table_string_list(files "${where}: \"files\"" stages ${index} files)
   raylab_table_string_list(functions "${where}: \"functions\"" stages ${index} functions)
   raylab_table_string_list(suite "${where}: \"suite\"" stages ${index} suite)
+  raylab_table_string_list(calls "${where}: \"calls\"" stages ${index} calls)
   raylab_table_string_list(needs "${where}: \"needs\"" stages ${index} needs)
   raylab_table_get(points "${where}" stages ${index} points)
   raylab_table_get(bonus "${where}" stages ${index} bonus)
@@ -125,7 +129,7 @@ foreach(index RANGE ${raylab_last_stage})
     endif()
     if(NOT image_shows MATCHES "^(ray_directions|spheres|everything)$")
       message(FATAL_ERROR "stages.json: ${where}: image \"shows\" is \"${image_shows}\"; expected ray_directions, "
-                          "spheres or everything (autograder/suites/support.cpp renders these)")
+                          "spheres or everything (autograder/suites/stage_image_calls.cpp renders these)")
     endif()
   elseif(NOT image_type STREQUAL "NULL")
     message(FATAL_ERROR "stages.json: ${where}: \"image\" must be null or {\"scene\": ..., \"shows\": ...}")
@@ -165,6 +169,18 @@ foreach(index RANGE ${raylab_last_stage})
     endif()
     if(NOT file IN_LIST RAYLAB_SUITE_FILES)
       list(APPEND RAYLAB_SUITE_FILES ${file})
+    endif()
+  endforeach()
+  if(NOT calls)
+    message(FATAL_ERROR "stages.json: ${where}: \"calls\" lists no file (how the judge calls its functions in the "
+                        "stage server, autograder/suites/NN_name_calls.cpp: see autograder/runner/stage_call.h)")
+  endif()
+  foreach(file IN LISTS calls)
+    if(NOT EXISTS ${CMAKE_SOURCE_DIR}/autograder/suites/${file})
+      message(FATAL_ERROR "stages.json: ${where}: autograder/suites/${file} does not exist")
+    endif()
+    if(NOT file IN_LIST RAYLAB_CALL_FILES)
+      list(APPEND RAYLAB_CALL_FILES ${file})
     endif()
   endforeach()
   foreach(needed IN LISTS needs)

@@ -45,30 +45,6 @@ std::size_t read_fully(int fd, char* data, std::size_t size) {
 
 }  // namespace
 
-const char* function_name(Function function) {
-  switch (function) {
-    case Function::GenerateCameraRay: return "generate_camera_ray";
-    case Function::IntersectRaySphere: return "intersect_ray_sphere";
-    case Function::IntersectRayTriangle: return "intersect_ray_triangle";
-    case Function::IntersectRayTriangleWatertight: return "intersect_ray_triangle_watertight";
-    case Function::IntersectRayBox: return "intersect_ray_box";
-    case Function::BuildBvh: return "build_bvh";
-    case Function::BuildBvhSah: return "build_bvh_sah";
-    case Function::IntersectBvh: return "intersect_bvh";
-    case Function::RenderStageImage: return "rendering the stage's picture";
-    case Function::TrianglesHit: return "intersect_ray_triangle";
-    case Function::WarpSamples: return "a stage-07 warp (sample_...)";
-    case Function::WarpPdfs: return "a stage-07 density (..._pdf)";
-    case Function::PointLightIntensity: return "point_light_intensity";
-    case Function::PointLightIrradiance: return "point_light_irradiance";
-    case Function::LambertianF: return "lambertian_f";
-    case Function::AreaPdfToSolidAngle: return "area_pdf_to_solid_angle";
-    case Function::DirectLightSamples: return "estimate_direct_light";
-    case Function::PathRender: return "path_radiance (rendering)";
-  }
-  return "a stage function";
-}
-
 bool read_frame(int fd, std::string& payload) {
   unsigned char header[4];
   const std::size_t got = read_fully(fd, reinterpret_cast<char*>(header), 4);

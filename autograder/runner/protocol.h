@@ -3,23 +3,21 @@
 // answers one call at a time). See docs/instructors.md, "The grader's trust model".
 //
 // Frames on a pipe: a 4-byte little-endian payload length, then the payload. A request is
-//   [kCall] [Function] [arguments...]
-// and the stage server answers with one of
+//   [kCall] [call name] [arguments...]
+// where the name is one of the stages' calls (stage_call.h: each stage's calls file in
+// autograder/suites/ writes its arguments and reads its result), and the stage server answers
+// with one of
 //   [kReturn] [result...]                                   the function returned
 //   [kThrow] [ExceptionKind] [message] [stage id] [function]  it threw
-//   [kCallback] [Ray] [primitive]                           intersect_bvh asks the judge to test
-//                                                           one primitive (judge answers kReturn)
+//   [kCallback] [question...]                               the call asks the judge something
+//                                                           (stage_call.h: ask_judge); the judge
+//                                                           answers [kReturn] [answer...]
 // The judge treats everything it reads as untrusted: a malformed frame is an error of the call
 // (ProtocolError), never a result. Values are the framework's plain structs, copied bytewise
 // (both ends are the same build on the same machine).
 #pragma once
 
-#include "raylab/bounds.h"
-#include "raylab/camera.h"
-#include "raylab/image.h"
-#include "raylab/ray.h"
-#include "raylab/stages/03_triangle.h"
-#include "raylab/stages/05_bvh.h"
+#include <glm/glm.hpp>
 
 #include <array>
 #include <cstdint>
@@ -41,29 +39,6 @@ void adopt_channels(int argc, char** argv);
 constexpr std::uint32_t kMaxFrameBytes = 512u << 20;
 
 enum Kind : std::uint8_t { kCall = 1, kReturn = 2, kThrow = 3, kCallback = 4 };
-
-enum class Function : std::uint8_t {
-  GenerateCameraRay = 1,
-  IntersectRaySphere,
-  IntersectRayTriangle,
-  IntersectRayTriangleWatertight,
-  IntersectRayBox,
-  BuildBvh,
-  BuildBvhSah,
-  IntersectBvh,         // the judge's intersector: the grader's triangle test on shipped triangles,
-                        // or any other intersector through kCallback
-  RenderStageImage,     // a whole picture, rendered by the stage code in the server
-  TrianglesHit,         // a batch of stage-03 or stage-03b calls on one mesh (stage_calls.h)
-  WarpSamples,          // a batch of one stage-07 warp's samples (stage_calls.h)
-  WarpPdfs,             // a batch of one stage-07 density's values (stage_calls.h)
-  PointLightIntensity,  // stage 08's radiometry, one call each
-  PointLightIrradiance,
-  LambertianF,
-  AreaPdfToSolidAngle,
-  DirectLightSamples,   // a batch of stage-08 estimate_direct_light calls in a test scene (stage_calls.h)
-  PathRender,           // a picture of stage 09's path_radiance, with its variance (stage_calls.h)
-};
-const char* function_name(Function function);
 
 enum class ExceptionKind : std::uint8_t { NotImplemented = 1, InvalidArgument, Other };
 

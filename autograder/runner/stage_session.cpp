@@ -9,7 +9,6 @@
 
 namespace raylab::grading {
 
-using protocol::Function;
 using protocol::Reader;
 using protocol::Writer;
 
@@ -57,13 +56,12 @@ void StageSession::lose(const Message& reason, bool timed_out) {
   throw StageLost(render(reason, Language::English));
 }
 
-std::string StageSession::call(Function function, const Writer& arguments, const Callback& on_callback) {
+std::string StageSession::call(const StageCall& stage_call, const Writer& arguments, const Callback& on_callback) {
   if (abandoned_) {
     test_loss_ = abandoned_;
     throw StageLost(render(*abandoned_, Language::English));
   }
   if (test_loss_) throw StageLost(render(*test_loss_, Language::English));
-  function_ = function;
   const auto started = Clock::now();
   auto deadline = started + std::chrono::duration_cast<Clock::duration>(
                                 std::chrono::duration<double>(options_.stage_seconds - used_seconds_));
@@ -74,7 +72,7 @@ std::string StageSession::call(Function function, const Writer& arguments, const
     ~Account() { session.used_seconds_ += std::chrono::duration<double>(Clock::now() - started).count(); }
   } account{*this, started};
 
-  const Message during{MessageId::lost_during_function, {{"function", protocol::function_name(function)}}};
+  const Message during{MessageId::lost_during_function, {{"function", stage_call.description}}};
   auto timed_out = [&]() {
     process_.stop(true, output_);
     if (deadline == options_.run_deadline) lose(MessageId::lost_run_time_limit, true);
@@ -100,7 +98,7 @@ std::string StageSession::call(Function function, const Writer& arguments, const
   }
   Writer request;
   request.put(protocol::kCall);
-  request.put(function);
+  request.put_string(stage_call.name);
   request.bytes() += arguments.bytes();
   try {
     protocol::write_frame(process_.request_fd(), request.bytes());

@@ -19,6 +19,13 @@
 
 namespace raylab::grading {
 
+// One kind of request to the stage server: a stage function, or a batch of calls of one. Each
+// stage's calls file defines its own (stage_call.h).
+struct StageCall {
+  const char* name;         // what the request carries; unique among all stages' calls
+  const char* description;  // what the judge's messages name: "... during <description>"
+};
+
 // A call into stage code that delivered no result: the process died, timed out or misbehaved.
 struct StageLost : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -52,11 +59,12 @@ class StageSession {
   // Stops the stage's server and every process it started; only then is anything reported.
   StageEnd end_stage();
 
-  // One request; returns the payload of the kReturn reply (its first byte is the kind). Stage
-  // exceptions are rethrown here (NotImplemented, std::invalid_argument, std::runtime_error);
-  // on_callback answers intersect_bvh's primitive tests.
+  // One request (stage_call.h: remote() sends it and reads the reply); returns the payload of
+  // the kReturn reply (its first byte is the kind). Stage exceptions are rethrown here
+  // (NotImplemented, std::invalid_argument, std::runtime_error); on_callback answers the
+  // server's questions during the call (kCallback frames: stage_call.h, ask_judge).
   using Callback = std::function<void(protocol::Reader& request, protocol::Writer& answer)>;
-  std::string call(protocol::Function function, const protocol::Writer& arguments, const Callback& on_callback = {});
+  std::string call(const StageCall& stage_call, const protocol::Writer& arguments, const Callback& on_callback = {});
 
   // Increases whenever a fresh server starts (what it was sent before is gone).
   unsigned server_generation() const { return generation_; }
@@ -75,7 +83,6 @@ class StageSession {
   int losses_ = 0;
   std::string test_, output_;
   std::optional<Message> test_loss_, abandoned_, problem_;
-  protocol::Function function_ = protocol::Function::GenerateCameraRay;
 };
 
 }  // namespace raylab::grading

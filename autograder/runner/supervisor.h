@@ -1,5 +1,5 @@
 // The judge: runs each stage's GoogleTest suite in its own process, where every stage function
-// is a request to a sandboxed stage server (remote_stages.cpp, stage_session.h). It never links
+// is a request to a sandboxed stage server (stage_call.h, stage_session.h). It never links
 // stage code, decides every score from values it received, and writes the reports itself.
 #pragma once
 

@@ -12,6 +12,7 @@
 //     (Moller-Trumbore) leak count is shown as a note, for comparison (0 points);
 //   - intersect_ray_box (stage 04) on rays aimed exactly at box edges, against the exact answer:
 //     without Ize's conservative exit factor, rounding loses boxes the ray touches.
+#include "06_robustness_calls.h"
 #include "grading.h"
 #include "support.h"
 
@@ -177,7 +178,7 @@ NamedMesh grid_cube(int n, float half, glm::vec3 center) {
 }
 
 // testkit::count_leaks with your triangle test, called in the stage server in batches
-// (stage_calls.h): every ray against the triangles around the two vertices of its edge, then
+// (06_robustness_calls.h): every ray against the triangles around the two vertices of its edge, then
 // each ray that none of those hits against every triangle.
 testkit::LeakCount count_leaks(const testkit::ClosedMesh& mesh, TriangleFunction test, int rays, std::uint32_t seed) {
   std::vector<protocol::Triangle> triangles;

@@ -2,16 +2,16 @@
 //
 // The radiometry functions are judged against exact formulas (float tolerance), each wrong value
 // checked against the mistakes that explain it. The one-sample estimator runs in the stage
-// server, in test scenes the judge describes (stage_calls.h: direct_light_samples), and the judge
-// t-tests the mean of its samples against the direct light in closed form: Lambert's formula for
-// a polygon light, pi L (r / d)^2 cos for a sphere light above the horizon, I cos / d^2 for a
-// point light, 0 behind an occluder.
+// server, in test scenes the judge describes (08_direct_light_calls.h: direct_light_samples), and
+// the judge t-tests the mean of its samples against the direct light in closed form: Lambert's
+// formula for a polygon light, pi L (r / d)^2 cos for a sphere light above the horizon,
+// I cos / d^2 for a point light, 0 behind an occluder.
 //
 // False failures: the estimator's mean tests (kMeanTests of them, one per query and channel)
 // share kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected); the exact checks
 // have tolerances for float rounding that a correct implementation never exceeds.
+#include "08_direct_light_calls.h"
 #include "grading.h"
-#include "stage_calls.h"
 #include "support.h"
 
 #include "raylab/error.h"

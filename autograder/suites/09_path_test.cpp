@@ -1,6 +1,6 @@
 // Autograder suite for stage 09_path (40 points).
 //
-// path_radiance runs in the stage server, which renders whole pictures with it (stage_calls.h:
+// path_radiance runs in the stage server, which renders whole pictures with it (09_path_calls.h:
 // path_render) and returns each pixel's mean and variance of the mean; the judge decides.
 //   Furnaces (scenes/furnace.json, every wall emitting 1 with albedo a): every pixel's
 //   expectation is known exactly, sum over the vertices a path reaches of a^k (see
@@ -20,7 +20,6 @@
 // many seeds.
 #include "grading.h"
 #include "path_support.h"
-#include "stage_calls.h"
 #include "support.h"
 
 #include "raylab/error.h"

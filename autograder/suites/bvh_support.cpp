@@ -1,5 +1,6 @@
 #include "bvh_support.h"
 
+#include "grader_geometry.h"
 #include "grading.h"
 
 #include "raylab/scene_loader.h"
@@ -15,7 +16,7 @@
 namespace raylab::grading {
 namespace {
 
-// The grader's own test (stage_calls.h) on the mesh's triangles.
+// The grader's own test (grader_geometry.h) on the mesh's triangles.
 std::optional<float> test_triangle(const TestMesh& mesh, const Ray& ray, std::uint32_t primitive) {
   return grader_triangle_test(const_cast<std::vector<std::array<glm::vec3, 3>>*>(&mesh.triangles), ray, primitive);
 }

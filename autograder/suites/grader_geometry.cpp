@@ -1,9 +1,9 @@
-// The grader's own geometry (stage_calls.h): a triangle test shared by the judge's brute-force
+// The grader's own geometry (grader_geometry.h): a triangle test shared by the judge's brute-force
 // oracle and the stage server's BVH traversal requests, so both see exactly the same hits; and
 // the camera rays, sphere and triangle tests that stages 08 and 09 trace their scenes with, so
 // that a mistake in stages 01-05 costs points in its own stage only. All in double precision,
 // with the conventions of stages 01-03 (their headers).
-#include "stage_calls.h"
+#include "grader_geometry.h"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 // (autograder/tools/path_false_failures.cpp) share: the renders' settings and the tests' statistics.
 #pragma once
 
-#include "stage_calls.h"
+#include "09_path_calls.h"
 
 #include "raylab/image.h"
 

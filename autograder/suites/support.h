@@ -6,7 +6,7 @@
 #include "raylab/scene.h"
 #include "raylab/testkit/random_values.h"
 #include "messages.h"
-#include "stage_calls.h"
+#include "stage_image.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -65,8 +65,6 @@ const ReferenceData* reference_data_of(const std::string& stage_id);
 std::uint64_t test_seed(std::uint64_t graded_seed);
 void set_test_seed_round(std::uint64_t round);
 
-// The size of each stage's picture (render_stage_image in stage_calls.h): small so grading stays fast.
-constexpr int kImageWidth = 320, kImageHeight = 240;
 std::string reference_image_name(const std::string& stage_id);  // "<id>.png"
 
 // The image test: renders the stage's picture with the linked stage code, compares it with

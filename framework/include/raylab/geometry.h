@@ -57,9 +57,9 @@ enum class TriangleTest {
 // The functions that trace a render's rays. Each left nullptr is the stage's own: stage 01's
 // generate_camera_ray, stage 02's intersect_ray_sphere, stage 03's intersect_ray_triangle (or
 // 03b's, by TriangleTest), from whichever stage library the program links. The autograder's
-// Monte Carlo stages (08, 09) give the grader's own (autograder/runner/stage_calls.h), so that
-// a mistake in stages 01-05 costs points only in its own stage. A geometry given its own sphere
-// or triangle test tests every primitive: the trees of stages 04-05 are stage code too.
+// Monte Carlo stages (08, 09) give the grader's own (autograder/suites/grader_geometry.h), so
+// that a mistake in stages 01-05 costs points only in its own stage. A geometry given its own
+// sphere or triangle test tests every primitive: the trees of stages 04-05 are stage code too.
 struct TracingFunctions {
   Ray (*camera_ray)(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) = nullptr;
   std::optional<float> (*sphere)(const Ray& ray, const glm::vec3& center, float radius) = nullptr;

@@ -1,0 +1,181 @@
+// How a stage's calls between the judge and the stage server are written. Each stage has its
+// own file of calls in autograder/suites/ (stages.json: "calls", e.g. 02_sphere_calls.cpp),
+// compiled twice:
+//   - into the judge, with RAYLAB_JUDGE 1: the stage's functions defined as requests to the
+//     stage server (call_remote, or remote with a reader that checks every size and index of
+//     the reply: a malformed reply is a protocol::ProtocolError, never a result);
+//   - into the programs that link stage code (the stage server, autograder-regenerate), with
+//     RAYLAB_JUDGE 0: a handler per call, registered with serve(), that reads the arguments,
+//     calls the stage code and writes its result.
+// Both sides name the call by one StageCall, so the file holds the whole of each call's format:
+//
+//   constexpr StageCall kIntersectRaySphere{"intersect_ray_sphere", "intersect_ray_sphere"};
+//   #if RAYLAB_JUDGE
+//   std::optional<float> intersect_ray_sphere(const Ray& ray, const glm::vec3& c, float r) {
+//     return call_remote<decltype(intersect_ray_sphere)>(kIntersectRaySphere, ray, c, r);
+//   }
+//   #else
+//   const bool kServed = serve(kIntersectRaySphere, call_local<&intersect_ray_sphere>);
+//   #endif
+//
+// call_remote and call_local send the arguments and the result as the function's declared types
+// (plain values, std::optional, std::vector, std::string); a call that does more (a batch, a
+// tree, a picture) writes and reads its own format with protocol::Writer and protocol::Reader. A
+// stage function whose arguments cannot be sent (a RenderContext) is reached only through such a
+// batch call, and the judge's definition of it throws std::logic_error (08_direct_light_calls.cpp).
+#pragma once
+
+#include "protocol.h"
+#include "stage_session.h"
+
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#ifndef RAYLAB_JUDGE
+#error "a stage's calls file is compiled with RAYLAB_JUDGE 1 (the judge) or 0 (programs that link stage code)"
+#endif
+
+namespace raylab::grading {
+
+// ---- The values of a call: plain values copied bytewise, optional, vector and string.
+
+template <class T>
+struct IsOptional : std::false_type {};
+template <class T>
+struct IsOptional<std::optional<T>> : std::true_type {};
+template <class T>
+struct IsVector : std::false_type {};
+template <class T, class Allocator>
+struct IsVector<std::vector<T, Allocator>> : std::true_type {};
+
+template <class T>
+void put_value(protocol::Writer& out, const T& value) {
+  if constexpr (IsOptional<T>::value) out.put_optional(value);
+  else if constexpr (IsVector<T>::value) out.put_vector(value);
+  else if constexpr (std::is_same_v<T, std::string>) out.put_string(value);
+  else out.put(value);
+}
+
+template <class T>
+T get_value(protocol::Reader& in) {
+  if constexpr (IsOptional<T>::value) return in.get_optional<typename T::value_type>();
+  else if constexpr (IsVector<T>::value) return in.get_vector<typename T::value_type, typename T::allocator_type>();
+  else if constexpr (std::is_same_v<T, std::string>) return in.get_string();
+  else return in.get<T>();
+}
+
+// A function type's result and its parameters as values.
+template <class Function>
+struct Signature;
+template <class Result, class... Parameters>
+struct Signature<Result(Parameters...)> {
+  using ResultType = Result;
+  using Arguments = std::tuple<std::decay_t<Parameters>...>;
+};
+
+template <class T, class Allocator>
+bool same_bytes(const std::vector<T, Allocator>& a, const std::vector<T, Allocator>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// ---- The judge's side (RAYLAB_JUDGE 1).
+
+// One request to the current stage server (StageSession::call: a lost server throws StageLost,
+// a stage exception is rethrown). `read(reply)` reads the result from the reply and checks it;
+// every byte of the reply must be read. on_callback answers the server's questions during the
+// call (ask_judge below). A reader that checks the result's sizes and indices calls
+// in.expect_end() first, so that a reply with extra bytes is reported as such.
+template <class Read>
+auto remote(const StageCall& call, const protocol::Writer& arguments, Read read,
+            const StageSession::Callback& on_callback = {}) {
+  const std::string reply = StageSession::instance().call(call, arguments, on_callback);
+  protocol::Reader in(reply);
+  in.get<std::uint8_t>();  // kReturn
+  auto result = read(in);
+  in.expect_end();
+  return result;
+}
+
+// A stage function of plain values, as a request: call_remote<decltype(f)>(call, arguments...).
+template <class Function, class... Values>
+typename Signature<Function>::ResultType call_remote(const StageCall& call, const Values&... arguments) {
+  using Result = typename Signature<Function>::ResultType;
+  const typename Signature<Function>::Arguments values{arguments...};
+  protocol::Writer out;
+  std::apply([&](const auto&... value) { (put_value(out, value), ...); }, values);
+  return remote(call, out, [](protocol::Reader& in) { return get_value<Result>(in); });
+}
+
+// A list that the stage server keeps between calls, sent only when the current server does not
+// hold an equal one (stage 05's tree and mesh go once, not with each of thousands of rays). The
+// server reads it with receive().
+template <class T, class Allocator = std::allocator<T>>
+class SentList {
+ public:
+  // Writes the list, or that the server holds it already.
+  void put(protocol::Writer& out, const std::vector<T, Allocator>& values) {
+    const StageSession& session = StageSession::instance();
+    // A server that is not running yet starts fresh during the call, holding nothing.
+    sending_ = !(held_ && session.server_running() && generation_ == session.server_generation() &&
+                 same_bytes(sent_, values));
+    out.put<std::uint8_t>(sending_);
+    if (sending_) out.put_vector(values);
+  }
+  // After the call returned: the server holds what put() wrote.
+  void returned(const std::vector<T, Allocator>& values) {
+    generation_ = StageSession::instance().server_generation();
+    if (sending_) {
+      sent_ = values;
+      held_ = true;
+    }
+  }
+
+ private:
+  std::vector<T, Allocator> sent_;
+  unsigned generation_ = 0;
+  bool held_ = false, sending_ = false;
+};
+
+// ---- The stage server's side (RAYLAB_JUDGE 0).
+
+// Reads a call's arguments from `arguments` and writes its result to `result`; throws what the
+// stage code throws.
+using Handler = void (*)(protocol::Reader& arguments, protocol::Writer& result);
+
+// Registers the handler of `call`, at static initialisation: const bool kServed = serve(...).
+// Throws std::logic_error when another call has the same name.
+bool serve(const StageCall& call, Handler handler);
+// The handler of a call's name, or nullptr (the stage server's main loop).
+Handler find_handler(const std::string& name);
+
+template <class... T>
+std::tuple<T...> get_values(protocol::Reader& in, std::tuple<T...>*) {
+  return std::tuple<T...>{get_value<T>(in)...};  // a braced list: read in order
+}
+
+// The handler of a stage function of plain values: serve(call, call_local<&function>).
+template <auto function>
+void call_local(protocol::Reader& in, protocol::Writer& out) {
+  using Arguments = typename Signature<std::remove_pointer_t<decltype(function)>>::Arguments;
+  const Arguments arguments = get_values(in, static_cast<Arguments*>(nullptr));
+  put_value(out, std::apply(function, arguments));
+}
+
+// During a call, in the stage server: sends the judge a question (answered by the on_callback
+// of the judge's remote()) and returns the answer. Ends the server when the judge has gone.
+std::string ask_judge(const protocol::Writer& question);
+
+// The server's side of a SentList: `held` becomes the list the judge sent, if it sent it again.
+template <class T, class Allocator>
+void receive(protocol::Reader& in, std::vector<T, Allocator>& held) {
+  if (in.get<std::uint8_t>()) held = in.get_vector<T, Allocator>();
+}
+
+}  // namespace raylab::grading

@@ -1,0 +1,152 @@
+// Stages 05 and 05b's calls between the judge and the stage server (autograder/runner/stage_call.h):
+// the two builders, whose trees come back whole (the suites check every node), and
+// intersect_bvh. A traversal's primitive tests are either the grader's own triangle test, run in
+// the server on a copy of the mesh (a round trip per primitive would make a traversal that tests
+// every triangle take minutes), or any other intersector, called back in the judge per primitive.
+// The tree and the mesh go to the server only when they differ from what it holds.
+#include "grader_geometry.h"
+#include "stage_call.h"
+
+#include "raylab/stages/05_bvh.h"
+
+namespace raylab {
+namespace {
+
+using grading::protocol::Reader;
+using grading::protocol::Triangle;
+using grading::protocol::Writer;
+
+constexpr grading::StageCall kBuildBvh{"build_bvh", "build_bvh"};
+constexpr grading::StageCall kBuildBvhSah{"build_bvh_sah", "build_bvh_sah"};
+constexpr grading::StageCall kIntersectBvh{"intersect_bvh", "intersect_bvh"};
+
+}  // namespace
+
+#if RAYLAB_JUDGE
+namespace {
+
+Bvh remote_build(const grading::StageCall& call, const std::vector<Bounds3>& primitive_bounds, int max_leaf_size) {
+  Writer arguments;
+  arguments.put_vector(primitive_bounds);
+  arguments.put(max_leaf_size);
+  return grading::remote(call, arguments, [](Reader& in) {
+    Bvh bvh;
+    bvh.nodes = in.get_vector<BvhNode, BvhNodeAllocator<BvhNode>>();
+    bvh.primitive_order = in.get_vector<std::uint32_t>();
+    return bvh;
+  });
+}
+
+struct TraversalReply {
+  std::optional<BvhHit> hit;
+  std::uint64_t nodes_visited = 0, primitives_tested = 0;
+};
+
+}  // namespace
+
+Bvh build_bvh(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size) {
+  return remote_build(kBuildBvh, primitive_bounds, max_leaf_size);
+}
+
+Bvh build_bvh_sah(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size) {
+  return remote_build(kBuildBvhSah, primitive_bounds, max_leaf_size);
+}
+
+std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
+                                    bool any_hit, BvhTraversalStats& stats) {
+  static grading::SentList<BvhNode, BvhNodeAllocator<BvhNode>> sent_nodes;
+  static grading::SentList<std::uint32_t> sent_order;
+  static grading::SentList<Triangle> sent_triangles;
+  Writer arguments;
+  sent_nodes.put(arguments, bvh.nodes);
+  sent_order.put(arguments, bvh.primitive_order);
+  const bool grader_test = intersector.test == &grading::grader_triangle_test;
+  const auto* triangles = static_cast<const std::vector<Triangle>*>(intersector.context);
+  arguments.put<std::uint8_t>(grader_test);
+  if (grader_test) sent_triangles.put(arguments, *triangles);
+  arguments.put(ray);
+  arguments.put<std::uint8_t>(any_hit);
+
+  std::uint64_t judged_tests = 0;
+  const TraversalReply reply = grading::remote(
+      kIntersectBvh, arguments,
+      [](Reader& in) {
+        TraversalReply read;
+        read.hit = in.get_optional<BvhHit>();
+        read.nodes_visited = in.get<std::uint64_t>();
+        read.primitives_tested = in.get<std::uint64_t>();
+        return read;
+      },
+      [&](Reader& question, Writer& answer) {  // one primitive test of another intersector
+        const Ray asked = question.get<Ray>();
+        const auto primitive = question.get<std::uint32_t>();
+        question.expect_end();
+        ++judged_tests;
+        answer.put_optional(intersector.test(intersector.context, asked, primitive));
+      });
+  sent_nodes.returned(bvh.nodes);
+  sent_order.returned(bvh.primitive_order);
+  if (grader_test) sent_triangles.returned(*triangles);
+  stats.nodes_visited += reply.nodes_visited;
+  stats.primitives_tested += grader_test ? reply.primitives_tested : judged_tests;
+  return reply.hit;
+}
+
+#else
+namespace {
+
+template <Bvh (*builder)(const std::vector<Bounds3>&, int)>
+void serve_build(Reader& in, Writer& out) {
+  const auto boxes = in.get_vector<Bounds3>();
+  const auto max_leaf_size = in.get<int>();
+  const Bvh bvh = builder(boxes, max_leaf_size);
+  out.put_vector(bvh.nodes);
+  out.put_vector(bvh.primitive_order);
+}
+
+// The judge's intersector when it is not the grader's triangle test: each test is a round trip.
+std::optional<float> test_through_judge(void*, const Ray& ray, std::uint32_t primitive) {
+  Writer question;
+  question.put(ray);
+  question.put(primitive);
+  const std::string answer = grading::ask_judge(question);
+  Reader in(answer);
+  return in.get_optional<float>();
+}
+
+struct CountingContext {
+  PrimitiveIntersector inner;
+  std::uint64_t tests = 0;
+};
+std::optional<float> counting_test(void* context, const Ray& ray, std::uint32_t primitive) {
+  auto* counting = static_cast<CountingContext*>(context);
+  ++counting->tests;
+  return counting->inner.test(counting->inner.context, ray, primitive);
+}
+
+void serve_intersect_bvh(Reader& in, Writer& out) {
+  static Bvh bvh;                          // what the judge sent for earlier calls
+  static std::vector<Triangle> triangles;
+  grading::receive(in, bvh.nodes);
+  grading::receive(in, bvh.primitive_order);
+  const bool grader_test = in.get<std::uint8_t>() != 0;
+  if (grader_test) grading::receive(in, triangles);
+  const auto ray = in.get<Ray>();
+  const bool any_hit = in.get<std::uint8_t>() != 0;
+  CountingContext counting{grader_test ? PrimitiveIntersector{grading::grader_triangle_test, &triangles}
+                                       : PrimitiveIntersector{test_through_judge, nullptr}};
+  BvhTraversalStats stats;
+  const std::optional<BvhHit> hit = intersect_bvh(bvh, ray, PrimitiveIntersector{counting_test, &counting}, any_hit, stats);
+  out.put_optional(hit);
+  out.put<std::uint64_t>(stats.nodes_visited);
+  out.put<std::uint64_t>(counting.tests);
+}
+
+const bool kServed = grading::serve(kBuildBvh, serve_build<&build_bvh>) &&
+                     grading::serve(kBuildBvhSah, serve_build<&build_bvh_sah>) &&
+                     grading::serve(kIntersectBvh, serve_intersect_bvh);
+
+}  // namespace
+#endif
+
+}  // namespace raylab

@@ -1,0 +1,108 @@
+// Stage 09's calls between the judge and the stage server (autograder/runner/stage_call.h): only
+// whole pictures rendered with path_radiance (path_render), each pixel's mean and its variance.
+#include "09_path_calls.h"
+#include "grader_geometry.h"
+#include "stage_call.h"
+
+#include "raylab/render.h"
+#include "raylab/scene_loader.h"
+#include "raylab/stages/09_path.h"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace raylab {
+namespace {
+
+using grading::PathRenderRequest;
+using grading::PathRenderResult;
+using grading::protocol::Reader;
+using grading::protocol::Writer;
+
+constexpr grading::StageCall kPathRender{"path_render", "path_radiance (rendering)"};
+
+}  // namespace
+
+#if RAYLAB_JUDGE
+glm::vec3 path_radiance(const RenderContext&, const Ray&, Sampler&) {
+  throw std::logic_error("the judge calls path_radiance only through grading::path_render");
+}
+
+namespace grading {
+
+PathRenderResult path_render(const std::string& scene_path, const PathRenderRequest& request) {
+  Writer arguments;
+  arguments.put_string(scene_path);
+  arguments.put(request);
+  return remote(kPathRender, arguments, [&](Reader& in) {
+    const int width = in.get<int>(), height = in.get<int>();
+    const auto mean = in.get_vector<glm::vec3>();
+    const auto variance = in.get_vector<glm::vec3>();
+    in.expect_end();
+    const int expected_width = request.probe_only ? 1 : request.width;
+    const int expected_height = request.probe_only ? 1 : request.height;
+    const std::size_t pixels = static_cast<std::size_t>(expected_width) * static_cast<std::size_t>(expected_height);
+    if (width != expected_width || height != expected_height || mean.size() != pixels || variance.size() != pixels)
+      throw protocol::ProtocolError("a picture of the wrong size");
+    PathRenderResult result{Image(width, height), Image(width, height)};
+    std::memcpy(result.mean.data(), mean.data(), pixels * sizeof(glm::vec3));
+    std::memcpy(result.variance_of_mean.data(), variance.data(), pixels * sizeof(glm::vec3));
+    return result;
+  });
+}
+
+}  // namespace grading
+
+#else
+namespace grading {
+
+PathRenderResult path_render(const std::string& scene_path, const PathRenderRequest& request) {
+  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + scene_path);
+  scene.camera.width = request.width;
+  scene.camera.height = request.height;
+  if (request.albedo >= 0.0f)
+    for (Material& material : scene.materials) material.diffuse_color = glm::vec3(request.albedo);
+  if (request.probe_only) {
+    const SceneGeometry geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, grader_tracing());
+    const RenderContext context(scene, geometry, request.max_depth, Skips{}, request.roulette_probability);
+    Ray ray;
+    ray.origin = scene.camera.position;
+    ray.direction = glm::normalize(scene.camera.look_at - scene.camera.position);
+    Sampler sampler(1, request.seed);
+    sampler.start_pixel_sample(0, 0, 0);
+    PathRenderResult result{Image(1, 1), Image(1, 1)};
+    result.mean.at(0, 0) = path_radiance(context, ray, sampler);
+    return result;
+  }
+  RenderSettings settings;
+  settings.integrator = IntegratorKind::Path;
+  settings.samples_per_pixel = request.samples_per_pixel;
+  settings.max_depth = request.max_depth;
+  settings.roulette_probability = request.roulette_probability;
+  settings.seed = request.seed;
+  settings.track_variance = true;
+  settings.tracing = grader_tracing();
+  RenderOutput output = render_with_variance(scene, settings);
+  return PathRenderResult{std::move(output.mean), std::move(output.variance_of_mean)};
+}
+
+}  // namespace grading
+
+namespace {
+
+void serve_path_render(Reader& in, Writer& out) {
+  const std::string scene_path = in.get_string();
+  const auto request = in.get<PathRenderRequest>();
+  const PathRenderResult result = grading::path_render(scene_path, request);
+  out.put<int>(result.mean.width());
+  out.put<int>(result.mean.height());
+  out.put_vector(result.mean.pixels());
+  out.put_vector(result.variance_of_mean.pixels());
+}
+
+const bool kServed = grading::serve(kPathRender, serve_path_render);
+
+}  // namespace
+#endif
+
+}  // namespace raylab

@@ -1,0 +1,27 @@
+// Stage 09's batch call (09_path_calls.cpp): a picture rendered with path_radiance.
+#pragma once
+
+#include "raylab/image.h"
+
+#include <cstdint>
+#include <string>
+
+namespace raylab::grading {
+
+// A scene file of the kit rendered with the path integrator (path_radiance), with changes for
+// the test: each pixel's mean and its variance of the mean (film.h).
+struct PathRenderRequest {
+  int width = 32, height = 32, samples_per_pixel = 4, max_depth = 5;
+  float roulette_probability = 1.0f;
+  float albedo = -1.0f;  // >= 0: every material's diffuse colour becomes this grey (furnaces)
+  std::uint64_t seed = 0;
+  // 1: no picture, one path_radiance call along the camera's view direction (the stage's probe:
+  // it reaches path_radiance before any other stage's function), returned as a 1x1 picture.
+  int probe_only = 0;
+};
+struct PathRenderResult {
+  Image mean, variance_of_mean;
+};
+PathRenderResult path_render(const std::string& scene_path, const PathRenderRequest& request);
+
+}  // namespace raylab::grading

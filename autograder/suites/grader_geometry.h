@@ -1,0 +1,25 @@
+// The grader's own geometry (grader_geometry.cpp), linked into the judge and the stage server
+// alike, in double precision with the conventions of stages 01-03 (their headers).
+#pragma once
+
+#include "protocol.h"
+
+#include "raylab/geometry.h"
+#include "raylab/ray.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace raylab::grading {
+
+// The grader's own triangle test (Cramer's rule in double), as a PrimitiveIntersector test over
+// `triangles` (a const std::vector<protocol::Triangle>*), so that BVH grades do not depend on
+// your stage 3.
+std::optional<float> grader_triangle_test(void* triangles, const Ray& ray, std::uint32_t primitive);
+
+// The grader's own camera rays, sphere and triangle tests (in double, with stages 01-03's
+// conventions), which stages 08 and 09 trace their scenes with: so their grades do not depend on
+// your stages 01-05, only on the stages they build on (stages.json: "needs").
+TracingFunctions grader_tracing();
+
+}  // namespace raylab::grading

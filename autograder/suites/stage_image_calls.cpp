@@ -1,0 +1,78 @@
+// The image test's call between the judge and the stage server (autograder/runner/stage_call.h),
+// for every stage with an image in stages.json: the stage's picture (stage_image.h), rendered by
+// the stage code in the server, its pixels sent back whole.
+#include "stage_call.h"
+#include "stage_image.h"
+
+#include "raylab/render.h"
+#include "raylab/scene_loader.h"
+#include "raylab/stage_table.h"
+#include "raylab/stages/01_camera_rays.h"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace raylab::grading {
+namespace {
+
+using protocol::Reader;
+using protocol::Writer;
+
+constexpr StageCall kRenderStageImage{"render_stage_image", "rendering the stage's picture"};
+
+}  // namespace
+
+#if RAYLAB_JUDGE
+Image render_stage_image(const std::string& stage_id) {
+  Writer arguments;
+  arguments.put_string(stage_id);
+  return remote(kRenderStageImage, arguments, [](Reader& in) {
+    const int width = in.get<int>(), height = in.get<int>();
+    const auto pixels = in.get_vector<glm::vec3>();
+    in.expect_end();
+    if (width != kImageWidth || height != kImageHeight ||
+        pixels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+      throw protocol::ProtocolError("a picture of the wrong size");
+    Image image(width, height);
+    std::memcpy(image.data(), pixels.data(), pixels.size() * sizeof(glm::vec3));
+    return image;
+  });
+}
+
+#else
+Image render_stage_image(const std::string& stage_id) {
+  const StageDescription* stage = find_stage_description(stage_id);
+  if (!stage || stage->image_scene.empty())
+    throw std::logic_error("stages.json gives the stage " + stage_id + " no image test");
+  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + std::string(stage->image_scene));
+  scene.camera.width = kImageWidth;
+  scene.camera.height = kImageHeight;
+  if (stage->image_shows == "ray_directions") {
+    // Only camera rays: each pixel shows its ray's direction, (d + 1) / 2, as a colour.
+    Image image(kImageWidth, kImageHeight);
+    for (int y = 0; y < kImageHeight; ++y)
+      for (int x = 0; x < kImageWidth; ++x)
+        image.at(x, y) = 0.5f * (generate_camera_ray(scene.camera, x, y).direction + 1.0f);
+    return image;
+  }
+  if (stage->image_shows == "spheres") scene.meshes.clear();
+  RenderSettings settings;
+  settings.max_depth = scene.max_depth;
+  return render(scene, settings);
+}
+
+namespace {
+
+void serve_render_stage_image(Reader& in, Writer& out) {
+  const Image image = render_stage_image(in.get_string());
+  out.put<int>(image.width());
+  out.put<int>(image.height());
+  out.put_vector(image.pixels());
+}
+
+const bool kServed = serve(kRenderStageImage, serve_render_stage_image);
+
+}  // namespace
+#endif
+
+}  // namespace raylab::grading
