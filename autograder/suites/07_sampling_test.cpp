@@ -1,7 +1,7 @@
 // Autograder suite for stage 07_sampling (30 points: 6 per warp).
 //
 // The judge chooses the uniform inputs (fixed seeds: the same verdict on every run), the stage
-// server returns the student's samples and densities in bulk (stage_calls.h), and the judge
+// server returns the student's samples and densities in bulk (07_sampling_calls.h), and the judge
 // decides with the kit's statistics (raylab/testkit/statistics.h): a chi-square test of the
 // samples against the density they should have, and one against the student's own pdf
 // (expected counts from the pdf integrated over each cell), the pdf's integral, and every
@@ -13,7 +13,7 @@
 // whole stage, Sidak-corrected); the other tests are exact checks with tolerances for float
 // rounding, which a correct implementation never fails.
 #include "grading.h"
-#include "stage_calls.h"
+#include "07_sampling_calls.h"
 #include "support.h"
 
 #include "raylab/error.h"
