@@ -45,6 +45,7 @@
 #include "raylab/shading.h"
 #include "raylab/stages/01_camera_rays.h"
 #include "raylab/stages/07_sampling.h"
+#include "raylab/stages/09b_mis.h"
 
 #include <CLI/CLI.hpp>
 
@@ -83,19 +84,8 @@ constexpr StrategyInfo kStrategies[] = {
     {Strategy::Mis, "mis", true, false, true, true},
 };
 
-float power_heuristic(float pdf_a, float pdf_b) {
-  const float a = pdf_a * pdf_a, b = pdf_b * pdf_b;
-  return a + b > 0.0f ? a / (a + b) : 0.0f;
-}
-
-// The density with which one light sample (a light chosen uniformly, then a point on it) gives
-// `direction` from `point`.
-float light_pdf(const LightSet& lights, const glm::vec3& point, const glm::vec3& direction) {
-  float pdf = 0.0f;
-  for (const Light& light : lights.lights()) pdf += pdf_li(light, point, direction);
-  return lights.empty() ? 0.0f : pdf / static_cast<float>(lights.size());
-}
-
+// The mis strategy weighs with stage 09b's power_heuristic (the reference's, linked here) and the
+// light strategy's density LightSet::pdf_li.
 // One sample of the light at a diffuse vertex, with its shadow ray; with MIS, weighted against
 // the BSDF sampling of the same direction.
 glm::vec3 sample_one_light(const RenderContext& context, const SurfaceHit& hit, const Bsdf& bsdf, const glm::vec3& wo,
@@ -117,7 +107,8 @@ glm::vec3 sample_one_light(const RenderContext& context, const SurfaceHit& hit, 
   if (context.geometry.occluded(shadow)) return glm::vec3(0.0f);
   const float pdf = sample->pdf * choice_probability;
   const float weight =
-      mis && !sample->is_delta ? power_heuristic(pdf, bsdf_pdf(bsdf, hit.geometric_normal, wo, sample->direction)) : 1.0f;
+      mis && !sample->is_delta ? power_heuristic(1, pdf, 1, bsdf_pdf(bsdf, hit.geometric_normal, wo, sample->direction))
+                               : 1.0f;
   return f * sample->radiance * (weight * std::fabs(glm::dot(hit.geometric_normal, sample->direction)) / pdf);
 }
 
@@ -152,8 +143,8 @@ glm::vec3 strategy_li(const RenderContext& context, const StrategyInfo& strategy
     if (count_emission) {
       radiance += throughput * emitted;
     } else if (strategy.mis && emitted != glm::vec3(0.0f)) {
-      const float pdf_light = light_pdf(context.lights, previous_point, -wo);
-      radiance += throughput * emitted * power_heuristic(previous_bsdf_pdf, pdf_light);
+      const float pdf_light = context.lights.pdf_li(previous_point, -wo);
+      radiance += throughput * emitted * power_heuristic(1, previous_bsdf_pdf, 1, pdf_light);
     }
     const Bsdf bsdf = bsdf_of(material, diffuse_color_at(material, *hit));
     if (strategy.light_sampling && !bsdf.is_specular())

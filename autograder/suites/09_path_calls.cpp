@@ -1,5 +1,6 @@
 // Stage 09's calls between the judge and the stage server (autograder/runner/stage_call.h): only
-// whole pictures rendered with path_radiance (path_render), each pixel's mean and its variance.
+// whole pictures rendered with path_radiance (path_render), each pixel's mean and its variance;
+// the bonus stage 09b renders with path_radiance_mis through the same call (request.mis).
 #include "09_path_calls.h"
 #include "grader_geometry.h"
 #include "stage_call.h"
@@ -7,6 +8,7 @@
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
 #include "raylab/stages/09_path.h"
+#include "raylab/stages/09b_mis.h"
 
 #include <cstring>
 #include <stdexcept>
@@ -20,6 +22,7 @@ using grading::protocol::Reader;
 using grading::protocol::Writer;
 
 constexpr grading::StageCall kPathRender{"path_render", "path_radiance (rendering)"};
+constexpr grading::StageCall kPathMisRender{"path_mis_render", "path_radiance_mis (rendering)"};
 
 }  // namespace
 
@@ -34,7 +37,7 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
   Writer arguments;
   arguments.put_string(scene_path);
   arguments.put(request);
-  return remote(kPathRender, arguments, [&](Reader& in) {
+  return remote(request.mis ? kPathMisRender : kPathRender, arguments, [&](Reader& in) {
     const int width = in.get<int>(), height = in.get<int>();
     const auto mean = in.get_vector<glm::vec3>();
     const auto variance = in.get_vector<glm::vec3>();
@@ -71,11 +74,11 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
     Sampler sampler(1, request.seed);
     sampler.start_pixel_sample(0, 0, 0);
     PathRenderResult result{Image(1, 1), Image(1, 1)};
-    result.mean.at(0, 0) = path_radiance(context, ray, sampler);
+    result.mean.at(0, 0) = request.mis ? path_radiance_mis(context, ray, sampler) : path_radiance(context, ray, sampler);
     return result;
   }
   RenderSettings settings;
-  settings.integrator = IntegratorKind::Path;
+  settings.integrator = request.mis ? IntegratorKind::PathMis : IntegratorKind::Path;
   settings.samples_per_pixel = request.samples_per_pixel;
   settings.max_depth = request.max_depth;
   settings.roulette_probability = request.roulette_probability;
@@ -100,7 +103,7 @@ void serve_path_render(Reader& in, Writer& out) {
   out.put_vector(result.variance_of_mean.pixels());
 }
 
-const bool kServed = grading::serve(kPathRender, serve_path_render);
+const bool kServed = grading::serve(kPathRender, serve_path_render) && grading::serve(kPathMisRender, serve_path_render);
 
 }  // namespace
 #endif

@@ -1,4 +1,5 @@
-// Stage 09's batch call (09_path_calls.cpp): a picture rendered with path_radiance.
+// Stage 09's batch call (09_path_calls.cpp): a picture rendered with path_radiance (or, for the
+// bonus stage 09b, with path_radiance_mis).
 #pragma once
 
 #include "raylab/image.h"
@@ -8,8 +9,9 @@
 
 namespace raylab::grading {
 
-// A scene file of the kit rendered with the path integrator (path_radiance), with changes for
-// the test: each pixel's mean and its variance of the mean (film.h).
+// A scene file of the kit rendered with the path integrator (path_radiance, or path_radiance_mis
+// when `mis` is 1), with changes for the test: each pixel's mean and its variance of the mean
+// (film.h).
 struct PathRenderRequest {
   int width = 32, height = 32, samples_per_pixel = 4, max_depth = 5;
   float roulette_probability = 1.0f;
@@ -18,6 +20,7 @@ struct PathRenderRequest {
   // 1: no picture, one path_radiance call along the camera's view direction (the stage's probe:
   // it reaches path_radiance before any other stage's function), returned as a 1x1 picture.
   int probe_only = 0;
+  int mis = 0;  // 1: stage 09b's path_radiance_mis instead of path_radiance
 };
 struct PathRenderResult {
   Image mean, variance_of_mean;

@@ -189,88 +189,10 @@ GRADED_TEST(kStage, Stage09Path, FurnaceLowAlbedo, 6) { expect_furnace(2); }
 
 // ---- Cornell boxes -------------------------------------------------------------------------
 
-glm::vec3 z_colour(double z, double limit) {
-  // Pale grey within the noise, shading to full blue (below the reference) or red (above) at the
-  // test's limit; NaN is magenta.
-  if (std::isnan(z)) return glm::vec3(1.0f, 0.0f, 1.0f);
-  const float t = static_cast<float>(std::min(1.0, std::fabs(z) / limit));
-  const glm::vec3 grey(0.8f), full = z < 0 ? glm::vec3(0.0f, 0.1f, 1.0f) : glm::vec3(1.0f, 0.05f, 0.0f);
-  return grey * (1.0f - t) + full * t;
-}
-
 void expect_cornell(int scene_index) {
-  const std::string scene = kCornellScenes[scene_index];
-  const nlohmann::json cases = load_reference_cases(kStage);
-  const nlohmann::json& reference = cases.at(scene);
-  const int reference_spp = reference.at("samples_per_pixel").get<int>();
-  const PathRenderResult render = path_render(scene, cornell_request(kStudentSamples, test_seed(kStudentSeed)));
-  std::size_t not_finite = 0;
-  for (const glm::vec3& v : render.mean.pixels())
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) ++not_finite;
-  const std::size_t total = render.mean.pixels().size();
-  if (not_finite) {
-    add_failure({MessageId::path_failure_not_finite, {{"count", std::to_string(not_finite)}, {"total", std::to_string(total)}}});
-    hint_not_finite(not_finite, total);
-    return;
-  }
-  Image reference_mean(kCornellSize, kCornellSize), reference_variance(kCornellSize, kCornellSize);
-  for (int y = 0; y < kCornellSize; ++y)
-    for (int x = 0; x < kCornellSize; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * kCornellSize + static_cast<std::size_t>(x);
-      reference_mean.at(x, y) = vec3_from_json(reference.at("mean").at(i));
-      reference_variance.at(x, y) = vec3_from_json(reference.at("variance_of_mean").at(i));
-    }
-  const RegionTest test = region_z_test(render, kStudentSamples, reference_mean, reference_variance, reference_spp);
-  Image z_picture(kRegionsPerSide, kRegionsPerSide);
-  for (int ry = 0; ry < kRegionsPerSide; ++ry)
-    for (int rx = 0; rx < kRegionsPerSide; ++rx) {
-      double z_shown = 0;
-      for (int c = 0; c < 3; ++c) {
-        const double z = test.z_scores[static_cast<std::size_t>((ry * kRegionsPerSide + rx) * 3 + c)];
-        if (!(std::fabs(z) <= std::fabs(z_shown))) z_shown = z;
-      }
-      z_picture.at(rx, ry) = z_colour(z_shown, test.z_limit);
-    }
-  // yours | reference | z-scores, each kCornellSize pixels scaled 4x.
-  const int scale = 4, side = kCornellSize * scale;
-  Image picture(3 * side, side);
-  for (int y = 0; y < side; ++y)
-    for (int x = 0; x < side; ++x) {
-      picture.at(x, y) = render.mean.at(x / scale, y / scale);
-      picture.at(x + side, y) = reference_mean.at(x / scale, y / scale);
-      picture.at(x + 2 * side, y) = z_picture.at(x / scale / kRegion, y / scale / kRegion);
-    }
-  const std::string directory = output_directory();
-  std::filesystem::create_directories(directory);
-  const std::string name = std::string(kStage) + "-" + std::filesystem::path(scene).stem().string();
-  const std::string path = directory + "/" + name + ".png";
-  write_image(picture, path);
-  // Each of the three on its own, for the HTML report (yours | reference | z-scores, and the slider).
-  auto part = [&](int index) {
-    Image image(side, side);
-    for (int y = 0; y < side; ++y)
-      for (int x = 0; x < side; ++x) image.at(x, y) = picture.at(x + index * side, y);
-    return image;
-  };
-  write_image(part(0), directory + "/" + name + "-yours.png");
-  write_image(part(1), directory + "/" + name + "-reference.png");
-  write_image(part(2), directory + "/" + name + "-z.png");
-  ImageComparison images{name + "-yours.png", name + "-reference.png", name + "-z.png"};
-  images.difference_label = Message{MessageId::report_z_scores};
-  add_image(images);
-  add_note({MessageId::path_note_picture, {{"scene", scene}, {"path", path}}});
-  if (test.failures == 0) return;
-  add_failure({MessageId::path_failure_regions,
-               {{"scene", scene},
-                {"failures", std::to_string(test.failures)},
-                {"tests", std::to_string(kRegionTestsPerScene)},
-                {"limit", gtest_text(test.z_limit)},
-                {"x", std::to_string(test.worst_x)},
-                {"y", std::to_string(test.worst_y)},
-                {"channel", std::to_string(test.worst_channel)},
-                {"mean", gtest_text(test.worst_mean)},
-                {"expected", gtest_text(test.worst_expected)},
-                {"z", gtest_text(test.worst_z)}}});
+  const std::optional<RegionTest> test =
+      expect_cornell_matches_reference(kStage, scene_index, false, test_seed(kStudentSeed), kLevel);
+  if (!test || test->failures == 0) return;
   // The furnaces name the mistake when they can.
   for (const Mistake& mistake : mistakes())
     if (fits(mistake)) add_hint({mistake.hint, {}});

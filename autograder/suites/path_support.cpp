@@ -1,9 +1,13 @@
 #include "path_support.h"
 
+#include "grading.h"
+#include "support.h"
+
 #include "raylab/testkit/statistics.h"
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace raylab::grading {
 
@@ -30,10 +34,15 @@ double path_test_level() {
   return level;
 }
 
+double mis_test_level() {
+  static const double level = testkit::sidak_level(testkit::kGraderFalseFailureRate, kMisStatisticalTests);
+  return level;
+}
+
 RegionTest region_z_test(const PathRenderResult& yours, int your_samples, const Image& reference_mean,
-                         const Image& reference_variance_of_mean, int reference_samples) {
+                         const Image& reference_variance_of_mean, int reference_samples, double level) {
   RegionTest result;
-  result.z_limit = testkit::normal_quantile(1.0 - path_test_level() / 2.0);
+  result.z_limit = testkit::normal_quantile(1.0 - level / 2.0);
   const double n = kRegion * kRegion;
   for (int ry = 0; ry < kRegionsPerSide; ++ry)
     for (int rx = 0; rx < kRegionsPerSide; ++rx)
@@ -66,6 +75,99 @@ RegionTest region_z_test(const PathRenderResult& yours, int your_samples, const 
         }
       }
   return result;
+}
+
+namespace {
+
+glm::vec3 z_colour(double z, double limit) {
+  // Pale grey within the noise, shading to full blue (below the reference) or red (above) at the
+  // test's limit; NaN is magenta.
+  if (std::isnan(z)) return glm::vec3(1.0f, 0.0f, 1.0f);
+  const float t = static_cast<float>(std::min(1.0, std::fabs(z) / limit));
+  const glm::vec3 grey(0.8f), full = z < 0 ? glm::vec3(0.0f, 0.1f, 1.0f) : glm::vec3(1.0f, 0.05f, 0.0f);
+  return grey * (1.0f - t) + full * t;
+}
+
+}  // namespace
+
+std::optional<RegionTest> expect_cornell_matches_reference(const std::string& stage_id, int scene_index, bool mis,
+                                                           std::uint64_t seed, double level) {
+  const std::string scene = kCornellScenes[scene_index];
+  const nlohmann::json cases = load_reference_cases("09_path");
+  const nlohmann::json& reference = cases.at(scene);
+  const int reference_spp = reference.at("samples_per_pixel").get<int>();
+  PathRenderRequest request = cornell_request(kStudentSamples, seed);
+  request.mis = mis ? 1 : 0;
+  const PathRenderResult render = path_render(scene, request);
+  std::size_t not_finite = 0;
+  for (const glm::vec3& v : render.mean.pixels())
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) ++not_finite;
+  const std::size_t total = render.mean.pixels().size();
+  if (not_finite) {
+    add_failure({MessageId::path_failure_not_finite, {{"count", std::to_string(not_finite)}, {"total", std::to_string(total)}}});
+    add_hint({MessageId::path_not_finite, {{"count", std::to_string(not_finite)}, {"total", std::to_string(total)}}});
+    return std::nullopt;
+  }
+  Image reference_mean(kCornellSize, kCornellSize), reference_variance(kCornellSize, kCornellSize);
+  for (int y = 0; y < kCornellSize; ++y)
+    for (int x = 0; x < kCornellSize; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * kCornellSize + static_cast<std::size_t>(x);
+      reference_mean.at(x, y) = vec3_from_json(reference.at("mean").at(i));
+      reference_variance.at(x, y) = vec3_from_json(reference.at("variance_of_mean").at(i));
+    }
+  const RegionTest test =
+      region_z_test(render, kStudentSamples, reference_mean, reference_variance, reference_spp, level);
+  Image z_picture(kRegionsPerSide, kRegionsPerSide);
+  for (int ry = 0; ry < kRegionsPerSide; ++ry)
+    for (int rx = 0; rx < kRegionsPerSide; ++rx) {
+      double z_shown = 0;
+      for (int c = 0; c < 3; ++c) {
+        const double z = test.z_scores[static_cast<std::size_t>((ry * kRegionsPerSide + rx) * 3 + c)];
+        if (!(std::fabs(z) <= std::fabs(z_shown))) z_shown = z;
+      }
+      z_picture.at(rx, ry) = z_colour(z_shown, test.z_limit);
+    }
+  // yours | reference | z-scores, each kCornellSize pixels scaled 4x.
+  const int scale = 4, side = kCornellSize * scale;
+  Image picture(3 * side, side);
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      picture.at(x, y) = render.mean.at(x / scale, y / scale);
+      picture.at(x + side, y) = reference_mean.at(x / scale, y / scale);
+      picture.at(x + 2 * side, y) = z_picture.at(x / scale / kRegion, y / scale / kRegion);
+    }
+  const std::string directory = output_directory();
+  std::filesystem::create_directories(directory);
+  const std::string name = stage_id + "-" + std::filesystem::path(scene).stem().string();
+  const std::string path = directory + "/" + name + ".png";
+  write_image(picture, path);
+  // Each of the three on its own, for the HTML report (yours | reference | z-scores, and the slider).
+  auto part = [&](int index) {
+    Image image(side, side);
+    for (int y = 0; y < side; ++y)
+      for (int x = 0; x < side; ++x) image.at(x, y) = picture.at(x + index * side, y);
+    return image;
+  };
+  write_image(part(0), directory + "/" + name + "-yours.png");
+  write_image(part(1), directory + "/" + name + "-reference.png");
+  write_image(part(2), directory + "/" + name + "-z.png");
+  ImageComparison images{name + "-yours.png", name + "-reference.png", name + "-z.png"};
+  images.difference_label = Message{MessageId::report_z_scores};
+  add_image(images);
+  add_note({MessageId::path_note_picture, {{"scene", scene}, {"path", path}}});
+  if (test.failures == 0) return test;
+  add_failure({MessageId::path_failure_regions,
+               {{"scene", scene},
+                {"failures", std::to_string(test.failures)},
+                {"tests", std::to_string(kRegionTestsPerScene)},
+                {"limit", gtest_text(test.z_limit)},
+                {"x", std::to_string(test.worst_x)},
+                {"y", std::to_string(test.worst_y)},
+                {"channel", std::to_string(test.worst_channel)},
+                {"mean", gtest_text(test.worst_mean)},
+                {"expected", gtest_text(test.worst_expected)},
+                {"z", gtest_text(test.worst_z)}}});
+  return test;
 }
 
 }  // namespace raylab::grading

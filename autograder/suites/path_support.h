@@ -1,5 +1,7 @@
 // What stage 09's suite, its reference data and the false-failure measurement
 // (autograder/tools/path_false_failures.cpp) share: the renders' settings and the tests' statistics.
+// The bonus stage 09b (09b_mis_test.cpp) grades its MIS path tracer with the same furnaces and
+// against the same converged Cornell references.
 #pragma once
 
 #include "09_path_calls.h"
@@ -7,6 +9,8 @@
 #include "raylab/image.h"
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace raylab::grading {
@@ -46,6 +50,9 @@ double furnace_exact(const Furnace& furnace);
 // The stage's statistical tests: 3 furnace t-tests and the region z-tests of both boxes.
 constexpr int kPathStatisticalTests = 3 + 2 * kRegionTestsPerScene;
 double path_test_level();  // each test's level: the stage's 1 in 1,000, Sidak-corrected
+// Stage 09b's: 2 furnace t-tests (kFurnaces[0] and [1]) and the region z-tests of both boxes.
+constexpr int kMisStatisticalTests = 2 + 2 * kRegionTestsPerScene;
+double mis_test_level();
 
 // The region z-tests of a Cornell render: per 4x4 region and channel, z = (yours - reference) /
 // sqrt(variance), the variance the larger of yours and the reference's (scaled to your sample
@@ -57,7 +64,19 @@ struct RegionTest {
   int worst_x = 0, worst_y = 0, worst_channel = 0;
   std::vector<double> z_scores;  // region by region (row-major), channel by channel
 };
+// `level`: each z-test's significance level (path_test_level() for stage 09, mis_test_level() for 09b).
 RegionTest region_z_test(const PathRenderResult& yours, int your_samples, const Image& reference_mean,
-                         const Image& reference_variance_of_mean, int reference_samples);
+                         const Image& reference_variance_of_mean, int reference_samples,
+                         double level = path_test_level());
+
+
+// The image test of a path tracer: renders kCornellScenes[scene_index] kCornellSize square at
+// kStudentSamples spp with the student's path_radiance (or path_radiance_mis when `mis`) and seed
+// `seed`, z-tests it region by region against stage 09's converged reference
+// (autograder/reference/09_path_cases.json) at `level`, writes <stage_id>-<scene>.png (yours |
+// reference | z-scores) and each part for the HTML report, and adds the note and, when regions
+// fail, the failure. nullopt when pixels are not finite (the failure and the hint are added).
+std::optional<RegionTest> expect_cornell_matches_reference(const std::string& stage_id, int scene_index, bool mis,
+                                                           std::uint64_t seed, double level);
 
 }  // namespace raylab::grading

@@ -58,7 +58,7 @@ bool register_reference_data(const char* stage_id, ReferenceData data);
 // The registered generator of a stage, or nullptr.
 const ReferenceData* reference_data_of(const std::string& stage_id);
 
-// The seed of a Monte Carlo test's random numbers (stages 08 and 09): `graded_seed` whenever a
+// The seed of a Monte Carlo test's random numbers (stages 08, 09 and 09b): `graded_seed` whenever a
 // student is graded (round 0), another independent seed in each later round. Only
 // autograder-false-failures sets a round: it grades the reference again and again to count how
 // often a correct program fails by bad luck. A suite that caches a result keys it by the seed.

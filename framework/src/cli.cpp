@@ -42,7 +42,7 @@ int run_render(const RenderOptions& options) {
   check_image_extension(options.output_path);
   if (!options.variance_path.empty()) check_image_extension(options.variance_path);
   if (!options.integrator.empty() && !integrator_from_name(options.integrator))
-    throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct, path)");
+    throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct, path, mis)");
   Scene scene = load_scene(options.scene_path);
   const std::optional<IntegratorKind> integrator =
       integrator_from_name(options.integrator.empty() ? scene.integrator : options.integrator);
@@ -98,8 +98,8 @@ int run_cli(int argc, char** argv) {
                              "Samples per pixel (default 1: one ray through each pixel's centre)")
       ->check(CLI::Range(1, kMaxSamplesPerPixel));
   render_command->add_option("--integrator", options.integrator,
-                             "How light is computed (default: the scene's, else whitted): whitted, direct (area and point lights, BSDFs) or path "
-                             "(path tracing, stage 09)");
+                             "How light is computed (default: the scene's, else whitted): whitted, direct (area and point lights, BSDFs), path "
+                             "(path tracing, stage 09) or mis (path tracing with multiple importance sampling, stage 09b)");
   render_command->add_option("--roulette", options.roulette,
                              "path: the chance that a path goes on at each bounce, in (0, 1] (default 1: no Russian "
                              "roulette, paths end at --max-depth)")

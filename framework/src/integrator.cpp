@@ -16,6 +16,7 @@ std::optional<IntegratorKind> integrator_from_name(const std::string& name) {
   if (name == "whitted") return IntegratorKind::Whitted;
   if (name == "direct") return IntegratorKind::DirectLight;
   if (name == "path") return IntegratorKind::Path;
+  if (name == "mis") return IntegratorKind::PathMis;
   return std::nullopt;
 }
 
@@ -24,6 +25,7 @@ const char* integrator_name(IntegratorKind kind) {
     case IntegratorKind::Whitted: return "whitted";
     case IntegratorKind::DirectLight: return "direct";
     case IntegratorKind::Path: return "path";
+    case IntegratorKind::PathMis: return "mis";
   }
   return "unknown";
 }

@@ -154,4 +154,11 @@ std::size_t LightSet::choose(float u, float* probability) const {
   return std::min(count - 1, static_cast<std::size_t>(u * static_cast<float>(count)));
 }
 
+float LightSet::pdf_li(const glm::vec3& reference_point, const glm::vec3& direction) const {
+  if (lights_.empty()) return 0.0f;
+  float sum = 0.0f;
+  for (const Light& light : lights_) sum += raylab::pdf_li(light, reference_point, direction);
+  return sum / static_cast<float>(lights_.size());  // each light is chosen with probability 1 / size()
+}
+
 }  // namespace raylab

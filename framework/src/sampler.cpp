@@ -47,6 +47,17 @@ Sampler::Sampler(int samples_per_pixel, std::uint64_t seed) : samples_per_pixel_
   grid_rows_ = (samples_per_pixel + grid_columns_ - 1) / grid_columns_;
 }
 
+Sampler Sampler::constant(float u1, glm::vec2 u2) {
+  for (const float u : {u1, u2.x, u2.y})
+    if (!(u >= 0.0f && u < 1.0f))
+      throw std::invalid_argument("a constant sampler's numbers must be in [0, 1), got " + std::to_string(u));
+  Sampler sampler(1);
+  sampler.constant_ = true;
+  sampler.constant_1d_ = u1;
+  sampler.constant_2d_ = u2;
+  return sampler;
+}
+
 std::uint64_t Sampler::dimension_key() {
   if (!pixel_key_ready_) {
     pixel_key_ = mix_bits(pixel_ ^ mix_bits(seed_ + 0x9e3779b97f4a7c15ULL));
@@ -56,6 +67,10 @@ std::uint64_t Sampler::dimension_key() {
 }
 
 float Sampler::get_1d() {
+  if (constant_) {
+    ++dimension_;
+    return constant_1d_;
+  }
   const std::uint64_t key = dimension_key();
   const auto count = static_cast<std::uint32_t>(samples_per_pixel_);
   const std::uint32_t stratum = permute(sample_index_ % count, count, key);
@@ -64,6 +79,10 @@ float Sampler::get_1d() {
 }
 
 glm::vec2 Sampler::get_2d() {
+  if (constant_) {
+    ++dimension_;
+    return constant_2d_;
+  }
   // Correlated multi-jitter: sample s sits in column s % m, row s / m of the m x n grid; its
   // offset inside the cell is itself a stratum of the cell's finer n x m grid, shuffled per
   // column and row, so that the x and y projections are stratified into m n intervals each.

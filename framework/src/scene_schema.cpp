@@ -147,8 +147,9 @@ Scene read_scene(const JsonReader& r, const json& root, const std::string& base_
   if (root.contains("max_depth")) scene.max_depth = r.integer(root["max_depth"], "/max_depth", 0, 64);
   if (root.contains("integrator")) {
     scene.integrator = r.string(root["integrator"], "/integrator");
-    if (scene.integrator != "whitted" && scene.integrator != "direct" && scene.integrator != "path")
-      r.fail("/integrator", "unknown integrator '" + scene.integrator + "' (expected whitted, direct or path)");
+    if (scene.integrator != "whitted" && scene.integrator != "direct" && scene.integrator != "path" &&
+        scene.integrator != "mis")
+      r.fail("/integrator", "unknown integrator '" + scene.integrator + "' (expected whitted, direct, path or mis)");
   }
 
   std::map<std::string, std::uint32_t> material_index;

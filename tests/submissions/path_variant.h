@@ -26,41 +26,8 @@ struct PathVariant {
   bool pdf_from_bsdf_pdf = false;         // true: divides by bsdf_pdf (0 for mirrors and glass)
   // Correct variants.
   bool uniform_hemisphere = false;        // diffuse bounces sampled uniformly (pdf 1 / (2 pi))
-  bool mis = false;                       // light and BSDF sampling combined (power heuristic)
   bool throughput_roulette = false;       // roulette by the throughput, p = min(1, max channel)
 };
-
-// The density with which estimate_direct_light's light sampling reaches direction wi from x.
-inline float light_pdf(const RenderContext& context, const glm::vec3& x, const glm::vec3& wi) {
-  float sum = 0.0f;
-  for (const Light& light : context.lights.lights()) sum += pdf_li(light, x, wi);
-  return sum / static_cast<float>(context.lights.size());
-}
-
-inline float power_heuristic(float a, float b) { return a * a / (a * a + b * b); }
-
-// Direct light by light sampling weighted for MIS (delta lights keep weight 1).
-inline glm::vec3 direct_light_mis(const RenderContext& context, const SurfaceHit& hit, const Bsdf& bsdf,
-                                  const glm::vec3& wo, Sampler& sampler) {
-  if (context.lights.empty()) return glm::vec3(0.0f);
-  float choice = 0.0f;
-  const Light& light = context.lights[context.lights.choose(sampler.get_1d(), &choice)];
-  const std::optional<LightSample> s = sample_li(light, hit.point, sampler.get_2d());
-  if (!s) return glm::vec3(0.0f);
-  const glm::vec3 f = bsdf_f(bsdf, hit.geometric_normal, wo, s->direction);
-  if (f == glm::vec3(0.0f)) return glm::vec3(0.0f);
-  Ray shadow;
-  shadow.origin = offset_ray_origin(hit, s->direction);
-  shadow.direction = s->point - shadow.origin;
-  shadow.t_max = 1.0f - 1e-4f;
-  if (context.geometry.occluded(shadow)) return glm::vec3(0.0f);
-  const float cosine = std::fabs(glm::dot(hit.geometric_normal, s->direction));
-  float weight = 1.0f;
-  if (!s->is_delta)
-    weight = power_heuristic(light_pdf(context, hit.point, s->direction),
-                             bsdf_pdf(bsdf, hit.geometric_normal, wo, s->direction));
-  return weight * f * s->radiance * (cosine / (s->pdf * choice));
-}
 
 inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& camera_ray, Sampler& sampler,
                                        const PathVariant& v) {
@@ -68,8 +35,6 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
   glm::vec3 radiance(0.0f), throughput(1.0f);
   Ray ray = camera_ray;
   bool previous_specular = true;  // the camera counts as specular: its hit's emission is seen
-  float previous_bsdf_pdf = 0.0f;
-  glm::vec3 previous_point(0.0f);
   for (int depth = 0;; ++depth) {
     const std::optional<SurfaceHit> hit = context.geometry.intersect(ray);
     if (!hit) return radiance + throughput * scene.background;
@@ -80,16 +45,11 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
       if (v.emission_at_camera_hit) radiance += throughput * emitted;
     } else if (previous_specular || v.emission_after_diffuse) {
       radiance += throughput * emitted;
-    } else if (v.mis && emitted != glm::vec3(0.0f)) {
-      // The BSDF sample found a light: its share of the power heuristic.
-      const float light_density = light_pdf(context, previous_point, glm::normalize(ray.direction));
-      radiance += throughput * emitted * power_heuristic(previous_bsdf_pdf, light_density);
     }
     const Bsdf bsdf = bsdf_of(material, diffuse_color_at(material, *hit));
     const glm::vec3& normal = hit->geometric_normal;
     if (!bsdf.is_specular())
-      radiance += throughput * (v.mis ? direct_light_mis(context, *hit, bsdf, wo, sampler)
-                                      : estimate_direct_light(context, *hit, bsdf, wo, sampler));
+      radiance += throughput * estimate_direct_light(context, *hit, bsdf, wo, sampler);
     if (depth >= context.max_depth) return radiance;
     float p = context.roulette_probability;
     if (v.throughput_roulette) p = std::min(1.0f, std::max({throughput.x, throughput.y, throughput.z, 0.05f}));
@@ -121,8 +81,6 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
     throughput *= f * (cosine / pdf);
     if (throughput == glm::vec3(0.0f)) return radiance;
     previous_specular = specular;
-    previous_bsdf_pdf = pdf;
-    previous_point = hit->point;
     ray = spawn_ray(*hit, wi);
   }
 }

@@ -46,9 +46,11 @@ enum class IntegratorKind {
   DirectLight,  // emission + light straight from point and area lights at the first diffuse
                 // surface (through mirrors and glass), with BSDFs (bsdf.h); no indirect light
   Path,         // GAMES101 assignment 7: Monte Carlo path tracing (stage 09's path_radiance)
+  PathMis,      // the same with multiple importance sampling (stage 09b's path_radiance_mis)
 };
 
-// "whitted" -> Whitted, "direct" -> DirectLight, "path" -> Path; nullopt for an unknown name.
+// "whitted" -> Whitted, "direct" -> DirectLight, "path" -> Path, "mis" -> PathMis; nullopt for an
+// unknown name.
 std::optional<IntegratorKind> integrator_from_name(const std::string& name);
 const char* integrator_name(IntegratorKind kind);
 
@@ -78,6 +80,9 @@ glm::vec3 direct_light_li(const RenderContext& context, const Ray& ray, Sampler&
 // Path tracing (path.cpp): stage 09's path_radiance, with the camera ray counted.
 glm::vec3 path_li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats);
 
+// Path tracing with multiple importance sampling (path.cpp): stage 09b's path_radiance_mis.
+glm::vec3 path_mis_li(const RenderContext& context, const Ray& ray, Sampler& sampler, ShadingStats& stats);
+
 // One switch per camera ray (inline: the renderer calls it for every sample).
 inline glm::vec3 Integrator::li(const RenderContext& context, const Ray& ray, Sampler& sampler,
                                 ShadingStats& stats) const {
@@ -85,6 +90,7 @@ inline glm::vec3 Integrator::li(const RenderContext& context, const Ray& ray, Sa
     case IntegratorKind::Whitted: return whitted_li(context, ray, sampler, stats);
     case IntegratorKind::DirectLight: return direct_light_li(context, ray, sampler, stats);
     case IntegratorKind::Path: return path_li(context, ray, sampler, stats);
+    case IntegratorKind::PathMis: return path_mis_li(context, ray, sampler, stats);
   }
   return glm::vec3(0.0f);
 }

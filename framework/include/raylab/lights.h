@@ -72,6 +72,12 @@ class LightSet {
   // The light for u in [0, 1), and the probability of choosing it. Requires !empty().
   std::size_t choose(float u, float* probability) const;
 
+  // The solid-angle density with which one light sample (a light chosen by choose(), then
+  // sample_li on it) gives the unit `direction` from `reference_point`: the sum over the lights
+  // of (probability of choosing it) * pdf_li. 0 when no light lies along `direction` (and for
+  // point lights, which no direction hits). For multiple importance sampling (stage 09b).
+  float pdf_li(const glm::vec3& reference_point, const glm::vec3& direction) const;
+
  private:
   std::vector<Light> lights_;
 };

@@ -29,6 +29,12 @@ class Sampler {
   // seed: changes every number (different seeds give independent renders).
   explicit Sampler(int samples_per_pixel, std::uint64_t seed = 0);
 
+  // A sampler of one sample per pixel that gives the same numbers at every dimension: every
+  // get_1d() returns u1 and every get_2d() returns u2 (get_pixel_2d() the pixel's centre). The
+  // grader's scripted paths (stage 09b) use it to know which light point and which BSDF direction
+  // a path takes, whatever order the code draws them in. u1 and u2's coordinates in [0, 1).
+  static Sampler constant(float u1, glm::vec2 u2);
+
   // Starts sample `sample_index` (0 .. samples_per_pixel - 1) of pixel (pixel_x, pixel_y), at
   // dimension 0.
   void start_pixel_sample(int pixel_x, int pixel_y, int sample_index) {
@@ -66,6 +72,9 @@ class Sampler {
   bool pixel_key_ready_ = false;
   std::uint32_t sample_index_ = 0;
   int dimension_ = 0;
+  bool constant_ = false;  // Sampler::constant: the numbers below at every dimension
+  float constant_1d_ = 0.0f;
+  glm::vec2 constant_2d_{0.0f};
 };
 
 }  // namespace raylab

@@ -75,7 +75,7 @@ struct Scene {
   Camera camera;
   glm::vec3 background{0.0f};
   int max_depth = 5;   // the default for --max-depth
-  std::string integrator = "whitted";  // the default for --integrator: whitted, direct or path
+  std::string integrator = "whitted";  // the default for --integrator: whitted, direct, path or mis
   std::vector<Material> materials;
   std::vector<Sphere> spheres;
   std::vector<TriangleMesh> meshes;

@@ -1,0 +1,422 @@
+// Autograder suite for the bonus stage 09b_mis (30 points).
+//
+// power_heuristic is judged against exact values, each wrong value checked against the mistakes
+// that explain it. path_radiance_mis is judged twice:
+//   Is it MIS? Scripted paths (09b_mis_calls.h: mis_scripted_paths): the stage server traces
+//   chosen rays in a small test scene (a floor under a quad light, or under a point light) with a
+//   constant sampler, so the judge knows the light point and the BSDF direction each path takes.
+//   The judge computes both samples itself, with the framework's sample_li, bsdf_sample_f, pdf_li
+//   and bsdf_pdf (which call your stages 07 and 08, as your path does), and the value a correct
+//   MIS path tracer returns: each sample's contribution times its power-heuristic weight. The
+//   models of the common mistakes (no MIS, the balance heuristic, an area density in the weight,
+//   the emission unweighted, a weighted point light, a weighted last vertex) are fitted to every
+//   path: a model that explains every value is named. These tests are exact (float tolerance).
+//   Is it unbiased? Two furnaces t-tested against their exact answer and the two Cornell boxes
+//   z-tested region by region against stage 09's converged reference (path_support.h), as in
+//   stage 09: an ordinary path tracer without MIS passes these and loses the scripted tests.
+//
+// False failures: the 2 furnace t-tests and the 2 x 64 x 3 region z-tests share
+// kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected: mis_test_level()); the
+// exact tests have tolerances that a correct implementation never exceeds.
+// autograder-false-failures --stage 09b_mis measures it.
+#include "09b_mis_calls.h"
+#include "grader_geometry.h"
+#include "grading.h"
+#include "path_support.h"
+#include "support.h"
+
+#include "raylab/bsdf.h"
+#include "raylab/error.h"
+#include "raylab/geometry.h"
+#include "raylab/lights.h"
+#include "raylab/shading.h"
+#include "raylab/stages/09b_mis.h"
+#include "raylab/testkit/statistics.h"
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace raylab::grading {
+namespace {
+
+constexpr const char* kStage = "09b_mis";
+const double kLevel = mis_test_level();
+
+// Not attempted only when both functions are the stub: a stub of stage 07 or 08 that the path
+// samples with costs the tests, which name that stage.
+const bool kRegistered = register_stage(kStage, [] {
+  std::optional<NotImplemented> first;
+  int stubs = 0;
+  auto probe = [&](auto call) {
+    try {
+      call();
+    } catch (const NotImplemented& e) {
+      if (e.stage_id() != kStage) return;
+      ++stubs;
+      if (!first) first = e;
+    }
+  };
+  probe([] { (void)power_heuristic(1, 1.0f, 1, 1.0f); });
+  probe([] {
+    MisScene scene;
+    scene.triangles.push_back({glm::vec3(-1, 0, -1), glm::vec3(-1, 0, 1), glm::vec3(1, 0, 0), glm::vec3(0.0f), glm::vec3(0.5f)});
+    (void)mis_scripted_paths(scene, {MisScriptedPath{glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), 0.5f, glm::vec2(0.5f), 0}});
+  });
+  if (stubs == 2 && first) throw *first;
+});
+
+// ---- power_heuristic -----------------------------------------------------------------------
+
+double exact_power(double count_f, double pdf_f, double count_g, double pdf_g) {
+  const double f = count_f * pdf_f, g = count_g * pdf_g;
+  if (std::isinf(f)) return 1.0;
+  if (!(f > 0.0)) return 0.0;
+  return f * f / (f * f + g * g);
+}
+
+struct HeuristicCase {
+  int count_f;
+  float pdf_f;
+  int count_g;
+  float pdf_g;
+};
+
+std::string call_text(const HeuristicCase& c) {
+  return "power_heuristic(" + std::to_string(c.count_f) + ", " + gtest_text(c.pdf_f) + ", " + std::to_string(c.count_g) +
+         ", " + gtest_text(c.pdf_g) + ")";
+}
+
+bool close(double got, double expected, double relative) {
+  return std::fabs(got - expected) <= relative * std::fabs(expected) + 1e-7;
+}
+
+// Checks the cases; on the first wrong value adds the failure and the hints that explain it.
+void expect_heuristic(const std::vector<HeuristicCase>& cases) {
+  for (const HeuristicCase& c : cases) {
+    const float got = power_heuristic(c.count_f, c.pdf_f, c.count_g, c.pdf_g);
+    const double expected = exact_power(c.count_f, c.pdf_f, c.count_g, c.pdf_g);
+    if (close(got, expected, 1e-5)) continue;
+    add_failure({MessageId::mis_failure_value,
+                 {{"call", call_text(c)}, {"got", gtest_text(got)}, {"expected", gtest_text(expected)}}});
+    const double f = static_cast<double>(c.count_f) * c.pdf_f, g = static_cast<double>(c.count_g) * c.pdf_g;
+    if (!std::isfinite(got)) {
+      if (std::isinf(f) || std::isinf(g)) add_hint({MessageId::mis_heuristic_infinite, {}});
+      else if (f == 0.0 && g == 0.0) add_hint({MessageId::mis_heuristic_zero_nan, {}});
+      return;
+    }
+    if (!(f > 0.0) || std::isinf(f) || std::isinf(g)) return;  // the edge cases: the failure says enough
+    const double pf = c.pdf_f, pg = c.pdf_g, nf = c.count_f, ng = c.count_g;
+    if (close(got, f / (f + g), 1e-4)) add_hint({MessageId::mis_heuristic_balance, {}});
+    else if (close(got, pf * pf / (pf * pf + pg * pg), 1e-4)) add_hint({MessageId::mis_heuristic_counts_ignored, {}});
+    else if (close(got, nf * pf * pf / (nf * pf * pf + ng * pg * pg), 1e-4))
+      add_hint({MessageId::mis_heuristic_counts_outside, {}});
+    else if (close(got, g * g / (f * f + g * g), 1e-4)) add_hint({MessageId::mis_heuristic_other_weight, {}});
+    return;
+  }
+}
+
+GRADED_TEST(kStage, Stage09bMis, PowerHeuristicValues, 4) {
+  // The handout's worked number first (1 and 3: 0.9), then uneven densities and counts.
+  expect_heuristic({{1, 3.0f, 1, 1.0f},
+                    {1, 1.0f, 1, 1.0f},
+                    {1, 1.0f, 1, 3.0f},
+                    {1, 0.05f, 1, 0.318f},
+                    {2, 1.0f, 1, 1.0f},
+                    {1, 2.0f, 3, 1.0f},
+                    {4, 0.25f, 1, 12.5f}});
+}
+
+GRADED_TEST(kStage, Stage09bMis, PowerHeuristicEdgeCases, 3) {
+  // A density of 0 (the other strategy cannot make this sample), both 0 (0, not 0 / 0), and an
+  // infinite density (a delta: only it can make the sample).
+  const float infinity = std::numeric_limits<float>::infinity();
+  expect_heuristic({{1, 2.0f, 1, 0.0f},
+                    {1, 0.0f, 1, 2.0f},
+                    {1, 0.0f, 1, 0.0f},
+                    {1, infinity, 1, 0.5f},
+                    {1, 0.5f, 1, infinity},
+                    {1, 1e-20f, 1, 1e-20f}});
+}
+
+// ---- Scripted paths -------------------------------------------------------------------------
+
+// The test scenes: a floor (y = 0, facing up) under a quad light (two triangles facing down,
+// black: a path that reaches it ends there), or under a point light. Nothing else: a BSDF sample
+// that misses the light leaves the scene.
+const glm::vec3 kFloorAlbedo(0.5f, 0.6f, 0.7f);
+const glm::vec3 kLightRadiance(4.0f, 3.0f, 2.0f);
+
+MisScene quad_light_scene() {
+  MisScene scene;
+  scene.triangles.push_back({glm::vec3(-8, 0, -8), glm::vec3(-8, 0, 8), glm::vec3(8, 0, 8), glm::vec3(0.0f), kFloorAlbedo});
+  scene.triangles.push_back({glm::vec3(-8, 0, -8), glm::vec3(8, 0, 8), glm::vec3(8, 0, -8), glm::vec3(0.0f), kFloorAlbedo});
+  const glm::vec3 a(1, 1.5f, -1), b(1, 1.5f, 1), c(-1, 1.5f, 1), d(-1, 1.5f, -1);
+  scene.triangles.push_back({a, b, c, kLightRadiance, glm::vec3(0.0f)});  // wound to face down
+  scene.triangles.push_back({a, c, d, kLightRadiance, glm::vec3(0.0f)});
+  return scene;
+}
+
+MisScene point_light_scene() {
+  MisScene scene = quad_light_scene();
+  scene.triangles.resize(2);  // the floor only
+  scene.point_lights.push_back({glm::vec3(0.3f, 2.0f, -0.2f), glm::vec3(5.0f, 4.0f, 3.0f)});
+  return scene;
+}
+
+// Paths from a camera in front of the floor to points on it, for every pair of numbers of a grid.
+// Points and numbers are off every symmetry of the light, so that no BSDF direction meets the edge
+// the light's two triangles share (where "the light it hits" would be either).
+std::vector<MisScriptedPath> scripted_paths(int max_depth) {
+  const glm::vec3 camera(0.0f, 1.0f, -4.0f);
+  const glm::vec3 targets[] = {{0.07f, 0.0f, -0.11f}, {0.6f, 0.0f, 0.3f}, {-0.9f, 0.0f, -0.7f}, {1.6f, 0.0f, 1.2f}};
+  const float grid_x[] = {0.1f, 0.35f, 0.6f, 0.85f}, grid_y[] = {0.13f, 0.41f, 0.66f, 0.92f};
+  std::vector<MisScriptedPath> paths;
+  for (const glm::vec3& target : targets)
+    for (const float u1 : {0.25f, 0.75f})
+      for (const float ux : grid_x)
+        for (const float uy : grid_y)
+          paths.push_back({camera, glm::normalize(target - camera), u1, glm::vec2(ux, uy), max_depth});
+  return paths;
+}
+
+// What a path of the test scenes is made of, computed by the judge: the light sample at the floor
+// point and the light the BSDF sample finds, each before its weight, with the densities the
+// weights compare. Computed with the framework's light and BSDF sampling, which call the student's
+// stages 07 and 08 (as the student's path does): this stage is judged on its weights only.
+struct PathParts {
+  glm::vec3 light{0.0f};  // f L |cos| / pdf of the light sample (0: none, or blocked)
+  bool light_is_delta = false;
+  double light_pdf = 0, light_pdf_area = 0, bsdf_pdf_of_light = 0;
+  bool bsdf_follows = false;
+  glm::vec3 bsdf{0.0f};  // f |cos| / pdf times the emission the BSDF sample finds (0: none)
+  double bsdf_pdf = 0, light_pdf_of_bsdf = 0, light_pdf_area_of_bsdf = 0;
+};
+
+PathParts parts_of(const Scene& scene, const SceneGeometry& geometry, const LightSet& lights, const MisScriptedPath& path) {
+  PathParts parts;
+  Ray ray;
+  ray.origin = path.origin;
+  ray.direction = path.direction;
+  const std::optional<SurfaceHit> hit = geometry.intersect(ray);
+  if (!hit) return parts;
+  const Material& material = scene.materials[hit->material];
+  const glm::vec3 wo = -glm::normalize(ray.direction);
+  const Bsdf bsdf = bsdf_of(material, material.diffuse_color);
+  const glm::vec3& normal = hit->geometric_normal;
+  if (!lights.empty()) {
+    float choice = 0.0f;
+    const Light& light = lights[lights.choose(path.u1, &choice)];
+    const std::optional<LightSample> sample = sample_li(light, hit->point, path.u2);
+    if (sample) {
+      const glm::vec3 f = bsdf_f(bsdf, normal, wo, sample->direction);
+      Ray shadow;
+      shadow.origin = offset_ray_origin(*hit, sample->direction);
+      shadow.direction = sample->point - shadow.origin;
+      shadow.t_max = 1.0f - 1e-4f;
+      if (f != glm::vec3(0.0f) && !geometry.occluded(shadow)) {
+        parts.light_pdf = static_cast<double>(sample->pdf) * choice;
+        parts.light = f * sample->radiance * static_cast<float>(std::fabs(glm::dot(normal, sample->direction)) / parts.light_pdf);
+        parts.light_is_delta = sample->is_delta;
+        parts.light_pdf_area = sample->is_delta ? 0.0 : choice / static_cast<double>(light.area);
+        parts.bsdf_pdf_of_light = bsdf_pdf(bsdf, normal, wo, sample->direction);
+      }
+    }
+  }
+  parts.bsdf_follows = path.max_depth > 0;
+  if (!parts.bsdf_follows) return parts;
+  const std::optional<BsdfSample> sample = bsdf_sample_f(bsdf, normal, wo, path.u1, path.u2);
+  if (!sample) return parts;
+  const std::optional<SurfaceHit> next = geometry.intersect(spawn_ray(*hit, sample->wi));
+  if (!next) return parts;
+  const glm::vec3 emitted = emitted_radiance(scene.materials[next->material], *next, sample->wi);
+  if (emitted == glm::vec3(0.0f)) return parts;
+  parts.bsdf = sample->f * emitted * static_cast<float>(std::fabs(glm::dot(normal, sample->wi)) / sample->pdf);
+  parts.bsdf_pdf = sample->pdf;
+  parts.light_pdf_of_bsdf = lights.pdf_li(hit->point, sample->wi);
+  // The same density per unit area of the light: pdf_solid_angle cos_light / distance^2.
+  const double distance = glm::length(next->point - hit->point);
+  const double cos_light = std::fabs(glm::dot(next->geometric_normal, sample->wi));
+  parts.light_pdf_area_of_bsdf = parts.light_pdf_of_bsdf * cos_light / (distance * distance);
+  return parts;
+}
+
+// A correct path tracer, and the common mistakes: how each weighs the two samples.
+enum class Model { Correct, NoMis, Balance, AreaPdf, EmissionTwice, DeltaWeighted, LastVertexWeighted };
+
+double balance(double f, double g) { return f + g > 0.0 ? f / (f + g) : 0.0; }
+
+// The values `model` may give for the path (a mistake can be made in more than one way).
+std::vector<glm::dvec3> model_values(const PathParts& p, Model model) {
+  const glm::dvec3 light(p.light), bsdf(p.bsdf);
+  const bool light_alone = p.light_is_delta || !p.bsdf_follows;  // no BSDF sample can make it
+  const double w_light = light_alone ? 1.0 : exact_power(1, p.light_pdf, 1, p.bsdf_pdf_of_light);
+  const double w_bsdf = exact_power(1, p.bsdf_pdf, 1, p.light_pdf_of_bsdf);
+  switch (model) {
+    case Model::Correct: return {w_light * light + w_bsdf * bsdf};
+    case Model::NoMis: return {light};
+    case Model::Balance:
+      return {(light_alone ? 1.0 : balance(p.light_pdf, p.bsdf_pdf_of_light)) * light +
+              balance(p.bsdf_pdf, p.light_pdf_of_bsdf) * bsdf};
+    case Model::AreaPdf: {
+      // The light's density per unit area in the BSDF sample's weight, or in both.
+      const double w_bsdf_area = exact_power(1, p.bsdf_pdf, 1, p.light_pdf_area_of_bsdf);
+      const double w_light_area = light_alone ? 1.0 : exact_power(1, p.light_pdf_area, 1, p.bsdf_pdf_of_light);
+      return {w_light * light + w_bsdf_area * bsdf, w_light_area * light + w_bsdf_area * bsdf};
+    }
+    case Model::EmissionTwice: return {w_light * light + bsdf, light + bsdf};
+    case Model::DeltaWeighted: {
+      if (!p.light_is_delta) return {w_light * light + w_bsdf * bsdf};
+      // Weighted with the sample's pdf (1 by convention) or with pdf_li (0 for a point light).
+      return {exact_power(1, p.light_pdf, 1, p.bsdf_pdf_of_light) * light + w_bsdf * bsdf, w_bsdf * bsdf};
+    }
+    case Model::LastVertexWeighted: {
+      const double w = p.light_is_delta ? 1.0 : exact_power(1, p.light_pdf, 1, p.bsdf_pdf_of_light);
+      return {w * light + w_bsdf * bsdf};
+    }
+  }
+  return {};
+}
+
+bool close(const glm::vec3& got, const glm::dvec3& expected) {
+  for (int c = 0; c < 3; ++c)
+    if (!(std::fabs(got[c] - expected[c]) <= 2e-3 * std::fabs(expected[c]) + 1e-5)) return false;
+  return true;
+}
+
+bool fits(const std::vector<glm::vec3>& got, const std::vector<PathParts>& parts, Model model) {
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    bool any = false;
+    for (const glm::dvec3& value : model_values(parts[i], model)) any = any || close(got[i], value);
+    if (!any) return false;
+  }
+  return true;
+}
+
+// Traces the paths with the student's path_radiance_mis and compares every value with the judge's;
+// names the first that differs and the mistakes whose model explains every value.
+void expect_scripted(const std::string& what, const MisScene& test_scene, const std::vector<MisScriptedPath>& paths,
+                     const std::vector<std::pair<Model, MessageId>>& mistakes) {
+  const std::vector<glm::vec3> got = mis_scripted_paths(test_scene, paths);
+  const Scene scene = scene_of(test_scene);
+  const SceneGeometry geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, grader_tracing());
+  const LightSet lights(scene);
+  std::vector<PathParts> parts;
+  for (const MisScriptedPath& path : paths) parts.push_back(parts_of(scene, geometry, lights, path));
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const glm::vec3& v = got[i];
+    if (hint_if_not_finite("path_radiance_mis (" + what + ")", {v.x, v.y, v.z}, {MessageId::mis_advice_division, {}})) {
+      add_failure({MessageId::mis_failure_not_finite, {{"what", what}}});
+      return;
+    }
+  }
+  std::size_t wrong = got.size();
+  for (std::size_t i = 0; i < got.size() && wrong == got.size(); ++i)
+    if (!close(got[i], model_values(parts[i], Model::Correct)[0])) wrong = i;
+  if (wrong == got.size()) return;
+  const MisScriptedPath& path = paths[wrong];
+  const PathParts& p = parts[wrong];
+  add_failure({MessageId::mis_failure_path,
+               {{"what", what},
+                {"origin", gtest_text(path.origin)},
+                {"direction", gtest_text(path.direction)},
+                {"u1", gtest_text(path.u1)},
+                {"u2", gtest_text(path.u2)},
+                {"depth", std::to_string(path.max_depth)},
+                {"expected", gtest_text(glm::vec3(model_values(p, Model::Correct)[0]))},
+                {"got", gtest_text(got[wrong])},
+                {"light", gtest_text(p.light)},
+                {"light_pdf", gtest_text(p.light_pdf)},
+                {"light_bsdf_pdf", gtest_text(p.bsdf_pdf_of_light)},
+                {"bsdf", gtest_text(p.bsdf)},
+                {"bsdf_pdf", gtest_text(p.bsdf_pdf)},
+                {"bsdf_light_pdf", gtest_text(p.light_pdf_of_bsdf)}}});
+  bool named = false;
+  for (const auto& [model, hint] : mistakes)
+    if (fits(got, parts, model)) {
+      add_hint({hint, {}});
+      named = true;
+    }
+  if (!named) add_hint({MessageId::mis_weights_unexplained, {}});
+}
+
+const std::vector<std::pair<Model, MessageId>> kWeightMistakes = {
+    {Model::NoMis, MessageId::mis_no_mis},
+    {Model::Balance, MessageId::mis_balance_weights},
+    {Model::AreaPdf, MessageId::mis_area_pdf_in_weight},
+    {Model::EmissionTwice, MessageId::mis_emission_twice},
+};
+
+GRADED_TEST(kStage, Stage09bMis, LightAndBsdfSamplesWeighted, 8) {
+  // A floor under a quad light: every path's light sample, and its BSDF sample when that hits the
+  // light, must count with their power-heuristic weights.
+  expect_scripted("a floor under a quad light", quad_light_scene(), scripted_paths(2), kWeightMistakes);
+}
+
+GRADED_TEST(kStage, Stage09bMis, PointLightKeepsWeightOne, 3) {
+  // No direction hits a point: its light sample is the only way to find it, weight 1.
+  expect_scripted("a floor under a point light", point_light_scene(), scripted_paths(2),
+                  {{Model::DeltaWeighted, MessageId::mis_delta_weighted}});
+}
+
+GRADED_TEST(kStage, Stage09bMis, LastVertexKeepsWeightOne, 2) {
+  // max_depth 0: no BSDF sample follows the camera's hit, so its light sample has weight 1.
+  expect_scripted("a floor under a quad light, max depth 0", quad_light_scene(), scripted_paths(0),
+                  {{Model::LastVertexWeighted, MessageId::mis_last_vertex_weighted}});
+}
+
+// ---- Unbiased: furnaces and Cornell boxes ---------------------------------------------------
+
+void hint_biased() { add_hint({MessageId::mis_biased, {}}); }
+
+void expect_furnace(int index) {
+  const Furnace& f = kFurnaces[index];
+  PathRenderRequest request = furnace_request(index, test_seed(200 + static_cast<std::uint64_t>(index)));
+  request.mis = 1;
+  const PathRenderResult render = path_render("scenes/furnace.json", request);
+  std::vector<double> values;
+  std::size_t not_finite = 0;
+  for (const glm::vec3& v : render.mean.pixels()) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) ++not_finite;
+    else values.push_back(v.x);  // a grey furnace: the channels are alike
+  }
+  const std::size_t total = render.mean.pixels().size();
+  if (not_finite) {
+    add_failure({MessageId::path_failure_not_finite, {{"count", std::to_string(not_finite)}, {"total", std::to_string(total)}}});
+    add_hint({MessageId::path_not_finite, {{"count", std::to_string(not_finite)}, {"total", std::to_string(total)}}});
+    return;
+  }
+  const double expected = furnace_exact(f);
+  const testkit::MeanTestResult result = testkit::mean_test(values, expected, kLevel);
+  if (result.passed) return;
+  add_failure({MessageId::path_failure_furnace,
+               {{"albedo", gtest_text(f.albedo)},
+                {"roulette", gtest_text(f.roulette)},
+                {"depth", std::to_string(f.max_depth)},
+                {"count", std::to_string(result.count)},
+                {"mean", gtest_text(result.mean)},
+                {"error", gtest_text(result.standard_error)},
+                {"expected", gtest_text(expected)},
+                {"p_value", gtest_text(result.p_value)},
+                {"level", gtest_text(result.significance_level)}}});
+  hint_biased();
+}
+
+GRADED_TEST(kStage, Stage09bMis, FurnaceWithoutRoulette, 2) { expect_furnace(0); }
+GRADED_TEST(kStage, Stage09bMis, FurnaceWithRoulette, 2) { expect_furnace(1); }
+
+void expect_cornell(int scene_index) {
+  const std::optional<RegionTest> test =
+      expect_cornell_matches_reference(kStage, scene_index, true, test_seed(210 + static_cast<std::uint64_t>(scene_index)), kLevel);
+  if (test && test->failures > 0) hint_biased();
+}
+
+GRADED_TEST(kStage, Stage09bMis, CornellBoxImageMatchesReference, 3) { expect_cornell(0); }
+GRADED_TEST(kStage, Stage09bMis, SpecularCornellBoxImageMatchesReference, 3) { expect_cornell(1); }
+
+}  // namespace
+}  // namespace raylab::grading

@@ -1,0 +1,139 @@
+// Grader self-test submissions of stage 09b_mis share this MIS path tracer: each one sets the flags
+// of one common mistake (or of a correct variant) and defines power_heuristic and
+// path_radiance_mis with it, so that a submission file says only what it changes.
+#pragma once
+
+#include "raylab/bsdf.h"
+#include "raylab/lights.h"
+#include "raylab/shading.h"
+#include "raylab/stages/08_direct_light.h"
+#include "raylab/stages/09b_mis.h"
+
+#include <cmath>
+#include <optional>
+
+namespace raylab::submission {
+
+struct MisVariant {
+  // Mistakes.
+  bool balance = false;                 // power_heuristic computes the balance heuristic
+  bool area_pdf_in_bsdf_weight = false;  // the BSDF sample's weight takes the light's density per area
+  bool delta_weighted = false;          // a point light's sample weighted like an area light's
+  bool emission_unweighted = false;     // the BSDF sample's emission after a diffuse bounce: weight 1
+  bool last_vertex_weighted = false;    // the light sample at depth == max_depth weighted
+  // Correct variants.
+  bool ratio_form = false;              // power_heuristic as 1 / (1 + (g / f)^2); light densities summed here
+};
+
+inline float heuristic(const MisVariant& v, float f, float g) {
+  if (std::isinf(f)) return 1.0f;
+  if (!(f > 0.0f)) return 0.0f;
+  if (v.balance) return f / (f + g);
+  if (v.ratio_form) {
+    const float r = g / f;
+    return 1.0f / (1.0f + r * r);
+  }
+  return f * f / (f * f + g * g);
+}
+
+// The light strategy's density of `wi` from x, per steradian (or, for the mistake, per unit area:
+// GAMES101's 1 / area of the light that wi hits, times the choice probability).
+inline float light_density(const RenderContext& context, const MisVariant& v, const glm::vec3& x, const glm::vec3& wi) {
+  const std::vector<Light>& lights = context.lights.lights();
+  if (lights.empty()) return 0.0f;
+  const float choice = 1.0f / static_cast<float>(lights.size());
+  if (v.area_pdf_in_bsdf_weight) {
+    for (const Light& light : lights)
+      if (pdf_li(light, x, wi) > 0.0f) return choice / light.area;
+    return 0.0f;
+  }
+  if (!v.ratio_form) return context.lights.pdf_li(x, wi);
+  float sum = 0.0f;
+  for (const Light& light : lights) sum += choice * pdf_li(light, x, wi);
+  return sum;
+}
+
+inline glm::vec3 light_sample(const RenderContext& context, const MisVariant& v, const SurfaceHit& hit, const Bsdf& bsdf,
+                              const glm::vec3& wo, Sampler& sampler, bool bsdf_sample_follows) {
+  if (context.lights.empty()) return glm::vec3(0.0f);
+  float choice = 0.0f;
+  const Light& light = context.lights[context.lights.choose(sampler.get_1d(), &choice)];
+  const std::optional<LightSample> s = sample_li(light, hit.point, sampler.get_2d());
+  if (!s) return glm::vec3(0.0f);
+  const glm::vec3 f = bsdf_f(bsdf, hit.geometric_normal, wo, s->direction);
+  if (f == glm::vec3(0.0f)) return glm::vec3(0.0f);
+  Ray shadow;
+  shadow.origin = offset_ray_origin(hit, s->direction);
+  shadow.direction = s->point - shadow.origin;
+  shadow.t_max = 1.0f - 1e-4f;
+  if (context.geometry.occluded(shadow)) return glm::vec3(0.0f);
+  const float pdf = s->pdf * choice;
+  float weight = 1.0f;
+  if ((!s->is_delta || v.delta_weighted) && (bsdf_sample_follows || v.last_vertex_weighted))
+    weight = heuristic(v, pdf, bsdf_pdf(bsdf, hit.geometric_normal, wo, s->direction));
+  return weight * f * s->radiance * (std::fabs(glm::dot(hit.geometric_normal, s->direction)) / pdf);
+}
+
+inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& camera_ray, Sampler& sampler,
+                                       const MisVariant& v) {
+  glm::vec3 radiance(0.0f), throughput(1.0f);
+  Ray ray = camera_ray;
+  bool previous_specular = true;
+  float previous_pdf = 0.0f;
+  glm::vec3 previous_point(0.0f);
+  for (int depth = 0;; ++depth) {
+    const std::optional<SurfaceHit> hit = context.geometry.intersect(ray);
+    if (!hit) return radiance + throughput * context.scene.background;
+    const Material& material = context.scene.materials[hit->material];
+    const glm::vec3 wo = -glm::normalize(ray.direction);
+    const glm::vec3 emitted = emitted_radiance(material, *hit, ray.direction);
+    if (emitted != glm::vec3(0.0f)) {
+      float weight = 1.0f;
+      if (!previous_specular && !v.emission_unweighted)
+        weight = heuristic(v, previous_pdf, light_density(context, v, previous_point, -wo));
+      radiance += throughput * emitted * weight;
+    }
+    const Bsdf bsdf = bsdf_of(material, diffuse_color_at(material, *hit));
+    const bool follows = depth < context.max_depth;
+    if (!bsdf.is_specular()) radiance += throughput * light_sample(context, v, *hit, bsdf, wo, sampler, follows);
+    if (!follows) return radiance;
+    const float p = context.roulette_probability;
+    if (p < 1.0f) {
+      if (sampler.get_1d() >= p) return radiance;
+      throughput /= p;
+    }
+    const float u_lobe = sampler.get_1d();
+    const glm::vec2 u = sampler.get_2d();
+    const std::optional<BsdfSample> sample = bsdf_sample_f(bsdf, hit->geometric_normal, wo, u_lobe, u);
+    if (!sample) return radiance;
+    throughput *= sample->f * (std::fabs(glm::dot(hit->geometric_normal, sample->wi)) / sample->pdf);
+    if (throughput == glm::vec3(0.0f)) return radiance;
+    previous_specular = sample->is_specular;
+    previous_pdf = sample->pdf;
+    previous_point = hit->point;
+    ray = spawn_ray(*hit, sample->wi);
+  }
+}
+
+}  // namespace raylab::submission
+
+// The submission's functions: `#define MIS_VARIANT(v) ...flags...` before including this.
+namespace raylab {
+namespace submission {
+inline const MisVariant& variant() {
+  static const MisVariant v = [] {
+    MisVariant flags;
+    MIS_VARIANT(flags);
+    return flags;
+  }();
+  return v;
+}
+}  // namespace submission
+float power_heuristic(int count_f, float pdf_f, int count_g, float pdf_g) {
+  return submission::heuristic(submission::variant(), static_cast<float>(count_f) * pdf_f,
+                               static_cast<float>(count_g) * pdf_g);
+}
+glm::vec3 path_radiance_mis(const RenderContext& context, const Ray& camera_ray, Sampler& sampler) {
+  return submission::path_radiance_variant(context, camera_ray, sampler, submission::variant());
+}
+}  // namespace raylab
