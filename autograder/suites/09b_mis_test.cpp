@@ -297,9 +297,15 @@ bool fits(const std::vector<glm::vec3>& got, const std::vector<PathParts>& parts
   return true;
 }
 
+// A test scene's name in the failure texts, in English and Chinese.
+struct SceneName {
+  std::string english, chinese;
+  MessageArg arg() const { return MessageArg::bilingual("what", english, chinese); }
+};
+
 // Traces the paths with the student's path_radiance_mis and compares every value with the judge's;
 // names the first that differs and the mistakes whose model explains every value.
-void expect_scripted(const std::string& what, const MisScene& test_scene, const std::vector<MisScriptedPath>& paths,
+void expect_scripted(const SceneName& what, const MisScene& test_scene, const std::vector<MisScriptedPath>& paths,
                      const std::vector<std::pair<Model, MessageId>>& mistakes) {
   const std::vector<glm::vec3> got = mis_scripted_paths(test_scene, paths);
   const Scene scene = scene_of(test_scene);
@@ -309,8 +315,8 @@ void expect_scripted(const std::string& what, const MisScene& test_scene, const 
   for (const MisScriptedPath& path : paths) parts.push_back(parts_of(scene, geometry, lights, path));
   for (std::size_t i = 0; i < got.size(); ++i) {
     const glm::vec3& v = got[i];
-    if (hint_if_not_finite("path_radiance_mis (" + what + ")", {v.x, v.y, v.z}, {MessageId::mis_advice_division, {}})) {
-      add_failure({MessageId::mis_failure_not_finite, {{"what", what}}});
+    if (hint_if_not_finite("path_radiance_mis", {v.x, v.y, v.z}, {MessageId::mis_advice_division, {}})) {
+      add_failure({MessageId::mis_failure_not_finite, {what.arg()}});
       return;
     }
   }
@@ -321,7 +327,7 @@ void expect_scripted(const std::string& what, const MisScene& test_scene, const 
   const MisScriptedPath& path = paths[wrong];
   const PathParts& p = parts[wrong];
   add_failure({MessageId::mis_failure_path,
-               {{"what", what},
+               {what.arg(),
                 {"origin", gtest_text(path.origin)},
                 {"direction", gtest_text(path.direction)},
                 {"u1", gtest_text(path.u1)},
@@ -354,18 +360,20 @@ const std::vector<std::pair<Model, MessageId>> kWeightMistakes = {
 GRADED_TEST(kStage, Stage09bMis, LightAndBsdfSamplesWeighted, 8) {
   // A floor under a quad light: every path's light sample, and its BSDF sample when that hits the
   // light, must count with their power-heuristic weights.
-  expect_scripted("a floor under a quad light", quad_light_scene(), scripted_paths(2), kWeightMistakes);
+  expect_scripted({"a floor under a quad light", "四边形光源下的地面"}, quad_light_scene(), scripted_paths(2),
+                  kWeightMistakes);
 }
 
 GRADED_TEST(kStage, Stage09bMis, PointLightKeepsWeightOne, 3) {
   // No direction hits a point: its light sample is the only way to find it, weight 1.
-  expect_scripted("a floor under a point light", point_light_scene(), scripted_paths(2),
+  expect_scripted({"a floor under a point light", "点光源下的地面"}, point_light_scene(), scripted_paths(2),
                   {{Model::DeltaWeighted, MessageId::mis_delta_weighted}});
 }
 
 GRADED_TEST(kStage, Stage09bMis, LastVertexKeepsWeightOne, 2) {
   // max_depth 0: no BSDF sample follows the camera's hit, so its light sample has weight 1.
-  expect_scripted("a floor under a quad light, max depth 0", quad_light_scene(), scripted_paths(0),
+  expect_scripted({"a floor under a quad light, max depth 0", "四边形光源下的地面，最大深度 0"}, quad_light_scene(),
+                  scripted_paths(0),
                   {{Model::LastVertexWeighted, MessageId::mis_last_vertex_weighted}});
 }
 
