@@ -316,6 +316,34 @@ TEST(TriangleLight, SampleLiAgreesWithPdfLiWhichIntegratesToOneOverDirections) {
   EXPECT_EQ(pdf_li(light, reference, glm::vec3(0, 0, 1)), 0.0f) << "a direction away from the light";
 }
 
+TEST(LightSet, PdfLiIsTheChoiceWeightedSumAndIntegratesToOne) {
+  // Two triangles of a quad light above the point and a point light: the light strategy's density
+  // of a direction is the sum over the lights of (1 / 3) pdf_li; the point light reaches no
+  // direction, so over the sphere it integrates to the chance of choosing an area light, 2 / 3.
+  Scene scene;
+  Material lamp;
+  lamp.kind = MaterialKind::Diffuse;
+  lamp.emission = glm::vec3(1.0f);
+  scene.materials.push_back(lamp);
+  TriangleMesh quad;
+  quad.positions = {glm::vec3(1, 1, -1), glm::vec3(1, 1, 1), glm::vec3(-1, 1, 1), glm::vec3(-1, 1, -1)};
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  scene.meshes.push_back(quad);
+  scene.lights.push_back(PointLight{glm::vec3(0, 2, 0), glm::vec3(1.0f)});
+  const LightSet lights(scene);
+  ASSERT_EQ(lights.size(), 3u);
+  const glm::vec3 reference(0.1f, 0.0f, -0.2f);
+  const glm::vec3 direction = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
+  float sum = 0.0f;
+  for (const Light& light : lights.lights()) sum += pdf_li(light, reference, direction);
+  EXPECT_FLOAT_EQ(lights.pdf_li(reference, direction), sum / 3.0f);
+  EXPECT_EQ(lights.pdf_li(reference, glm::vec3(0, -1, 0)), 0.0f) << "a direction away from every light";
+  const double integral =
+      integrate_over_sphere([&](const glm::vec3& d) { return lights.pdf_li(reference, d); }, 1200, 1200);
+  EXPECT_NEAR(integral, 2.0 / 3.0, 5e-3);
+  EXPECT_EQ(LightSet(Scene{}).pdf_li(reference, direction), 0.0f) << "no lights";
+}
+
 TEST(SphereLight, PdfLiCountsBothPointsOnTheLineAndIntegratesToOne) {
   Light light;
   light.kind = LightKind::Sphere;
