@@ -74,9 +74,13 @@ RegionTest region_z_test(const PathRenderResult& yours, int your_samples, const 
 // kStudentSamples spp with the student's path_radiance (or path_radiance_mis when `mis`) and seed
 // `seed`, z-tests it region by region against stage 09's converged reference
 // (autograder/reference/09_path_cases.json) at `level`, writes <stage_id>-<scene>.png (yours |
-// reference | z-scores) and each part for the HTML report, and adds the note and, when regions
-// fail, the failure. nullopt when pixels are not finite (the failure and the hint are added).
+// reference | z-scores), and adds the note and, when regions fail, the failure. The HTML report
+// shows the three parts (each also written on its own) always, or with `report_only_failures`
+// only when regions fail (stage 09b: the report tests check every picture of the page on one
+// screenshot, at most 16384 pixels tall, which a failing camera's page nearly fills). nullopt
+// when pixels are not finite (the failure and the hint are added).
 std::optional<RegionTest> expect_cornell_matches_reference(const std::string& stage_id, int scene_index, bool mis,
-                                                           std::uint64_t seed, double level);
+                                                           std::uint64_t seed, double level,
+                                                           bool report_only_failures = false);
 
 }  // namespace raylab::grading

@@ -21,6 +21,9 @@ struct MisVariant {
   bool delta_weighted = false;          // a point light's sample weighted like an area light's
   bool emission_unweighted = false;     // the BSDF sample's emission after a diffuse bounce: weight 1
   bool last_vertex_weighted = false;    // the light sample at depth == max_depth weighted
+  bool half_weights = false;            // both samples weighted 1/2: unbiased, but not the power heuristic
+  bool textbook_heuristic = false;      // power_heuristic: pdf_f^2 / (pdf_f^2 + pdf_g^2), counts ignored, no guard
+  bool counts_outside_square = false;   // power_heuristic: n_f pdf_f^2 / (...), no guard for an infinite pdf
   // Correct variants.
   bool ratio_form = false;              // power_heuristic as 1 / (1 + (g / f)^2); light densities summed here
 };
@@ -29,6 +32,7 @@ inline float heuristic(const MisVariant& v, float f, float g) {
   if (std::isinf(f)) return 1.0f;
   if (!(f > 0.0f)) return 0.0f;
   if (v.balance) return f / (f + g);
+  if (v.half_weights) return 0.5f;
   if (v.ratio_form) {
     const float r = g / f;
     return 1.0f / (1.0f + r * r);
@@ -130,8 +134,15 @@ inline const MisVariant& variant() {
 }
 }  // namespace submission
 float power_heuristic(int count_f, float pdf_f, int count_g, float pdf_g) {
-  return submission::heuristic(submission::variant(), static_cast<float>(count_f) * pdf_f,
-                               static_cast<float>(count_g) * pdf_g);
+  const submission::MisVariant& v = submission::variant();
+  const float n_f = static_cast<float>(count_f), n_g = static_cast<float>(count_g);
+  if (v.textbook_heuristic) return pdf_f * pdf_f / (pdf_f * pdf_f + pdf_g * pdf_g);
+  if (v.counts_outside_square) {
+    if (!(pdf_f > 0.0f)) return 0.0f;
+    return n_f * pdf_f * pdf_f / (n_f * pdf_f * pdf_f + n_g * pdf_g * pdf_g);
+  }
+  if (v.half_weights) return submission::heuristic(submission::MisVariant{}, n_f * pdf_f, n_g * pdf_g);
+  return submission::heuristic(v, n_f * pdf_f, n_g * pdf_g);
 }
 glm::vec3 path_radiance_mis(const RenderContext& context, const Ray& camera_ray, Sampler& sampler) {
   return submission::path_radiance_variant(context, camera_ray, sampler, submission::variant());
