@@ -120,6 +120,16 @@ std::vector<Message> name_non_finite(const std::vector<Message>& messages) {
   return out;
 }
 
+// A failure's message as the test wrote it: GoogleTest 1.16 (Debian 13) appends "\n", or an OS
+// stack trace after "\nStack trace:\n", to every message; 1.12 (Debian 12) appends nothing.
+std::string written_message(const ::testing::TestPartResult& result) {
+  std::string message = result.message();
+  const std::size_t stack_trace = message.find("\nStack trace:\n");
+  if (stack_trace != std::string::npos) message.erase(stack_trace);
+  while (!message.empty() && message.back() == '\n') message.pop_back();
+  return message;
+}
+
 // Hands each test's result to the judge's callbacks (in the judge's own process).
 class Recorder : public ::testing::EmptyTestEventListener {
  public:
@@ -135,12 +145,13 @@ class Recorder : public ::testing::EmptyTestEventListener {
 
   void OnTestPartResult(const ::testing::TestPartResult& result) override {
     if (!result.failed()) return;
-    const std::string message = result.message();
+    const std::string message = written_message(result);
     not_implemented_ = not_implemented_ || message.find("is not implemented yet") != std::string::npos;
     // add_failure's text, as GoogleTest recorded it ("Failed\n" + the English): shown in either language.
     std::vector<Message>& failures = current().failures;
     if (!failures.empty()) {
-      const std::string english = render(failures.front(), Language::English);
+      std::string english = render(failures.front(), Language::English);
+      while (!english.empty() && english.back() == '\n') english.pop_back();  // as written_message
       if (message.size() >= english.size() && message.compare(message.size() - english.size(), english.size(), english) == 0) {
         MessageArg prefix = MessageArg::bilingual("prefix", message.substr(0, message.size() - english.size()), "");
         messages_.push_back(name_non_finite(Message(MessageId::failure, {prefix, {"failure", failures.front()}})));
