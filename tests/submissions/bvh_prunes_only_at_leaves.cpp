@@ -5,22 +5,5 @@
 // process, and it counts them honestly in stats.nodes_visited. Expected: full marks (the work
 // test scores only what the grader observes itself, docs/instructors.md) and an unscored hint
 // naming the box tests it could skip. It is the honest twin of hostile_bvh_reports_lower_bound.
-#define intersect_bvh reference_intersect_bvh
-#include "../../solutions/05_bvh/bvh.cpp"
-#undef intersect_bvh
-
-#include "bvh_submission_traversal.h"
-
-namespace raylab {
-
-std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
-                                    bool any_hit, BvhTraversalStats& stats);
-
-std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
-                                    bool any_hit, BvhTraversalStats& stats) {
-  submission::TraversalMistakes mistakes;
-  mistakes.prunes_only_at_leaves = true;
-  return submission::traverse_bvh(bvh, ray, intersector, any_hit, stats, mistakes);
-}
-
-}  // namespace raylab
+#define BVH_SUBMISSION(mistakes, report) mistakes.prunes_only_at_leaves = true
+#include "bvh_submission.h"

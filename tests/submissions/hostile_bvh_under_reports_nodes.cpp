@@ -3,22 +3,5 @@
 // above the leaves whose triangles the grader saw it test. A count the grader can prove false
 // breaks the contract of stats (BvhTraversalStats) and loses DoesNoMoreWorkThanTheReference,
 // although its honest twin keeps it.
-#define intersect_bvh reference_intersect_bvh
-#include "../../solutions/05_bvh/bvh.cpp"
-#undef intersect_bvh
-
-#include "bvh_submission_traversal.h"
-
-namespace raylab {
-
-std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
-                                    bool any_hit, BvhTraversalStats& stats);
-
-std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
-                                    bool any_hit, BvhTraversalStats& stats) {
-  submission::TraversalMistakes mistakes;
-  mistakes.prunes_only_at_leaves = true;
-  return submission::traverse_bvh(bvh, ray, intersector, any_hit, stats, mistakes, submission::NodesReport::One);
-}
-
-}  // namespace raylab
+#define BVH_SUBMISSION(mistakes, report) (mistakes.prunes_only_at_leaves = true, report = submission::NodesReport::One)
+#include "bvh_submission.h"
