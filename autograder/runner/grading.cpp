@@ -86,8 +86,9 @@ std::set<int>& incomplete_dependencies() {
 
 // A value that is not a number reads as what it is in every failure text, hint and note of
 // every stage: the stream's and std::to_string's "nan", "-nan", "inf", "-inf" (whole words)
-// become "NaN" and "infinity" / "-infinity".
-std::string name_non_finite(const std::string& text) {
+// become "NaN" and "infinity" / "-infinity" (in Chinese: "NaN" and "无穷大" / "负无穷大", the
+// terms of docs/glossary.md).
+std::string name_non_finite(const std::string& text, Language language = Language::English) {
   auto is_word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   std::string out;
   out.reserve(text.size());
@@ -98,8 +99,10 @@ std::string name_non_finite(const std::string& text) {
     const std::string rest = starts_word ? text.substr(i + sign, 3) : std::string();
     const std::size_t end = i + sign + 3;
     if ((rest == "nan" || rest == "inf") && (end >= text.size() || !is_word_char(text[end]))) {
+      const bool chinese = language == Language::Chinese;
       if (rest == "nan") out += "NaN";
-      else out += (text[i] == '-' ? "-infinity" : "infinity");
+      else if (text[i] == '-') out += chinese ? "负无穷大" : "-infinity";
+      else out += chinese ? "无穷大" : "infinity";
       i = end;
       continue;
     }
@@ -109,6 +112,8 @@ std::string name_non_finite(const std::string& text) {
 }
 Message name_non_finite(Message message) {
   for (MessageArg& arg : message.args) {
+    const std::string chinese = name_non_finite(arg.chinese_text.value_or(arg.text), Language::Chinese);
+    if (arg.chinese_text || chinese != name_non_finite(arg.text)) arg.chinese_text = chinese;
     arg.text = name_non_finite(arg.text);
     for (Message& part : arg.parts) part = name_non_finite(part);
   }

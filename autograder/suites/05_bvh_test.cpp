@@ -85,7 +85,7 @@ GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
     add_hint(MessageId::bvh_split_axis_not_longest);
   EXPECT_TRUE(root.split_axis == longest_node || root.split_axis == longest_centroids)
       << failure_text({MessageId::bvh_failure_split_axis,
-                 {{"axis", std::to_string(int(root.split_axis))}, {"box", gtest_text(root.bounds)},
+                 {{"axis", std::to_string(int(root.split_axis))}, {"box", box_text(root.bounds)},
                   {"longest", std::to_string(longest_node)}}});
 }
 
