@@ -41,7 +41,7 @@ Message ray_text(const Ray& ray) {
 
 Message box_text(const Bounds3& box) {
   if (box.is_empty()) return MessageId::value_box_empty;
-  return verbatim(gtest_text(box));
+  return {MessageId::value_box, {{"min", gtest_text(box.min)}, {"max", gtest_text(box.max)}}};
 }
 
 nlohmann::json to_json(const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
