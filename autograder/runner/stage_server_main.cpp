@@ -21,7 +21,7 @@ using namespace raylab::grading::protocol;
 void answer(Reader& in, Writer& out) {
   const std::string name = in.get_string();
   const Handler handler = find_handler(name);
-  if (!handler) throw ProtocolError("unknown request");
+  if (!handler) throw ProtocolError(MessageId::protocol_unknown_request);
   handler(in, out);
 }
 
@@ -30,6 +30,9 @@ void answer(Reader& in, Writer& out) {
 int main(int argc, char** argv) {
   try {
     adopt_channels(argc, argv);
+  } catch (const ProtocolError& e) {
+    std::cerr << "stage server: " << render(e.problem) << "\n";  // run by hand: in the language of LANG
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "stage server: " << e.what() << "\n";
     return 2;
@@ -46,7 +49,7 @@ int main(int argc, char** argv) {
     out.put(kReturn);
     try {
       Reader in(request);
-      if (in.get<std::uint8_t>() != kCall) throw ProtocolError("expected a call");
+      if (in.get<std::uint8_t>() != kCall) throw ProtocolError(MessageId::protocol_expected_call);
       answer(in, out);
     } catch (const NotImplemented& e) {
       out = Writer{};
@@ -58,9 +61,8 @@ int main(int argc, char** argv) {
     } catch (const std::bad_alloc&) {
       out = Writer{};
       out.put(kThrow);
-      out.put(ExceptionKind::Other);
-      out.put_string("ran out of memory (std::bad_alloc): the stage's memory limit was reached "
-                     "(a container that grows without end? memory allocated in every call and never freed?)");
+      out.put(ExceptionKind::OutOfMemory);  // the judge words it (stage_out_of_memory)
+      out.put_string("");
       out.put_string("");
       out.put_string("");
     } catch (const std::invalid_argument& e) {

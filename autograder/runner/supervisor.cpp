@@ -22,20 +22,6 @@
 namespace raylab::grading {
 namespace {
 
-// "stage 01_camera_rays is not implemented yet: write generate_camera_ray in
-// assignments/01_camera_rays/camera_rays.cpp (handout: docs/01_camera_rays.md)", in either language:
-// the same sentence as NotImplemented's own (framework/src/error.cpp).
-Message not_implemented_message(const NotImplemented& e) {
-  const StageDescription* description = find_stage_description(e.stage_id());
-  const StageInfo* stage = find_stage(std::string_view(e.stage_id()));
-  if (!description || !stage) return verbatim(e.what());
-  MessageArg files("files", "assignments/" + std::string(description->files.front()));
-  for (std::size_t i = 1; i < description->files.size(); ++i)
-    files.parts.push_back({MessageId::stage_file_or, {{"file", "assignments/" + std::string(description->files[i])}}});
-  return {MessageId::stage_not_implemented,
-          {{"stage", stage->id}, {"function", e.function()}, files, {"handout", stage->handout_text}}};
-}
-
 // Runs the GoogleTest suites of one stage here, in the judge; their stage calls go to the
 // session's stage server.
 void run_stage_tests(StageResult& result) {

@@ -43,7 +43,7 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
     const int expected_height = request.probe_only ? 1 : request.height;
     const std::size_t pixels = static_cast<std::size_t>(expected_width) * static_cast<std::size_t>(expected_height);
     if (width != expected_width || height != expected_height || mean.size() != pixels || variance.size() != pixels)
-      throw protocol::ProtocolError("a picture of the wrong size");
+      throw protocol::ProtocolError(MessageId::protocol_wrong_picture_size);
     PathRenderResult result{Image(width, height), Image(width, height)};
     std::memcpy(result.mean.data(), mean.data(), pixels * sizeof(glm::vec3));
     std::memcpy(result.variance_of_mean.data(), variance.data(), pixels * sizeof(glm::vec3));
