@@ -74,7 +74,9 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
     ~Account() { session.used_seconds_ += std::chrono::duration<double>(Clock::now() - started).count(); }
   } account{*this, started};
 
-  const Message during{MessageId::lost_during_function, {{"function", stage_call.description}}};
+  const Message during = stage_call.during == MessageId::lost_during_function
+                             ? Message{MessageId::lost_during_function, {{"function", stage_call.description}}}
+                             : Message(stage_call.during);
   auto timed_out = [&]() {
     process_.stop(true, output_);
     if (deadline == options_.run_deadline) lose(MessageId::lost_run_time_limit, true);

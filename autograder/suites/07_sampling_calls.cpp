@@ -14,8 +14,9 @@ using grading::Warp;
 using grading::protocol::Reader;
 using grading::protocol::Writer;
 
-constexpr grading::StageCall kWarpSamples{"warp_samples", "a stage-07 warp (sample_...)"};
-constexpr grading::StageCall kWarpPdfs{"warp_pdfs", "a stage-07 density (..._pdf)"};
+constexpr grading::StageCall kWarpSamples{"warp_samples", "a stage-07 warp (sample_...)",
+                                          grading::MessageId::lost_during_warp};
+constexpr grading::StageCall kWarpPdfs{"warp_pdfs", "a stage-07 density (..._pdf)", grading::MessageId::lost_during_density};
 
 }  // namespace
 

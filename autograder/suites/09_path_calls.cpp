@@ -19,7 +19,8 @@ using grading::PathRenderResult;
 using grading::protocol::Reader;
 using grading::protocol::Writer;
 
-constexpr grading::StageCall kPathRender{"path_render", "path_radiance (rendering)"};
+constexpr grading::StageCall kPathRender{"path_render", "path_radiance (rendering)",
+                                         grading::MessageId::lost_during_path_rendering};
 
 }  // namespace
 

@@ -18,7 +18,8 @@ namespace {
 using protocol::Reader;
 using protocol::Writer;
 
-constexpr StageCall kRenderStageImage{"render_stage_image", "rendering the stage's picture"};
+constexpr StageCall kRenderStageImage{"render_stage_image", "rendering the stage's picture",
+                                      MessageId::lost_during_stage_picture};
 
 }  // namespace
 

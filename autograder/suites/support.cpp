@@ -15,17 +15,26 @@
 
 namespace raylab::grading {
 
-bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice) {
+namespace {
+bool hint_non_finite(const MessageArg& what, std::initializer_list<float> results, const Message& advice) {
   for (float value : results) {
     if (std::isfinite(value)) continue;
     const MessageArg name = std::isnan(value) ? MessageArg("value", "NaN")
                             : value > 0.0f  ? MessageArg::bilingual("value", "infinity", "无穷大")
                                             : MessageArg::bilingual("value", "-infinity", "负无穷大");
     add_hint({std::isnan(value) ? MessageId::not_finite_nan : MessageId::not_finite_infinity,
-              {{"what", what}, name, {"advice", advice}}});
+              {what, name, {"advice", advice}}});
     return true;
   }
   return false;
+}
+}  // namespace
+
+bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice) {
+  return hint_non_finite({"what", what}, results, advice);
+}
+bool hint_if_not_finite(const Message& what, std::initializer_list<float> results, const Message& advice) {
+  return hint_non_finite({"what", what}, results, advice);
 }
 
 Message hit_text(std::optional<float> t, bool fixed) {

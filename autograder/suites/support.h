@@ -30,6 +30,7 @@ namespace raylab::grading {
 // returns true, so no later hint reads a NaN as a wrong number ("a hit behind the ray").
 // Failure texts need nothing: the grader prints every non-finite value as NaN or infinity.
 bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice);
+bool hint_if_not_finite(const Message& what, std::initializer_list<float> results, const Message& advice);
 
 // A value as GoogleTest's message stream writes it (floats with all their digits): the format of a
 // value in a failure text, as when it was streamed into ADD_FAILURE() itself.
