@@ -257,6 +257,8 @@ TEST(Messages, BvhRulesMatchTheFrameworksWords) {
   for (const BvhViolation& v : cases) {
     const Message message = bvh_violation_message(v);
     EXPECT_EQ(render(message, Language::English), describe(v)) << "rule " << int(v.rule);
+    for (const std::optional<std::string>& mesh : {std::optional<std::string>("scenes/bunny.obj"), std::optional<std::string>()})
+      EXPECT_EQ(render(broken_tree_message(v, 42, mesh), Language::English), BrokenBvh(v, 42, mesh).what());
     const std::string chinese = render(message, Language::Chinese);
     EXPECT_FALSE(std::regex_search(chinese, english_word)) << "rule " << int(v.rule) << ": " << chinese;
   }

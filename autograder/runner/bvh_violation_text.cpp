@@ -53,4 +53,10 @@ Message bvh_violation_message(const BvhViolation& v) {
   return MessageId::bvh_rule_nodes_without_primitives;  // not reached: every rule is above
 }
 
+Message broken_tree_message(const BvhViolation& violation, std::uint64_t boxes, const std::optional<std::string>& mesh) {
+  const MessageArg mesh_arg = mesh ? MessageArg("mesh", *mesh) : MessageArg("mesh", Message(MessageId::stage_broken_tree_objects));
+  return {MessageId::stage_broken_tree,
+          {{"boxes", std::to_string(boxes)}, mesh_arg, {"violation", bvh_violation_message(violation)}}};
+}
+
 }  // namespace raylab::grading

@@ -7,8 +7,14 @@
 
 #include "raylab/bvh_tools.h"
 
+#include <cstdint>
+#include <optional>
+#include <string>
+
 namespace raylab::grading {
 
 Message bvh_violation_message(const BvhViolation& violation);
+// The renderer's BrokenBvh (its what() in English, word for word) from its fields.
+Message broken_tree_message(const BvhViolation& violation, std::uint64_t boxes, const std::optional<std::string>& mesh);
 
 }  // namespace raylab::grading

@@ -44,7 +44,9 @@ enum Kind : std::uint8_t { kCall = 1, kReturn = 2, kThrow = 3, kCallback = 4 };
 
 // What the stage code threw. OutOfMemory (std::bad_alloc) carries no text: the judge words it in
 // the run's language (stage_out_of_memory), never with text made by the stage process.
-enum class ExceptionKind : std::uint8_t { NotImplemented = 1, InvalidArgument, Other, OutOfMemory };
+// BrokenTree (raylab/bvh_tools.h: BrokenBvh) is followed by the mesh's name (or nothing: the scene's
+// objects), then the BvhViolation and the number of boxes: the judge words it.
+enum class ExceptionKind : std::uint8_t { NotImplemented = 1, InvalidArgument, Other, OutOfMemory, BrokenTree };
 
 // The reply was not a well-formed frame: what a child wrote is not a result. `problem` says
 // what was wrong (a protocol_... entry of messages.def); what() is its English text.

@@ -5,6 +5,7 @@
 #include "protocol.h"
 #include "stage_call.h"
 
+#include "raylab/bvh_tools.h"
 #include "raylab/error.h"
 
 #include <exception>
@@ -58,6 +59,16 @@ int main(int argc, char** argv) {
       out.put_string(e.what());
       out.put_string(e.stage_id());
       out.put_string(e.function());
+    } catch (const BrokenBvh& e) {  // the judge words it (stage_broken_tree)
+      out = Writer{};
+      out.put(kThrow);
+      out.put(ExceptionKind::BrokenTree);
+      out.put_string(e.mesh.value_or(""));
+      out.put_string("");
+      out.put_string("");
+      out.put(std::uint8_t(e.mesh.has_value()));
+      out.put(e.violation);
+      out.put(e.boxes);
     } catch (const std::bad_alloc&) {
       out = Writer{};
       out.put(kThrow);

@@ -1,5 +1,6 @@
 #include "stage_session.h"
 
+#include "bvh_violation_text.h"
 #include "grading.h"
 
 #include "raylab/error.h"
@@ -147,6 +148,9 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
     if (kind != protocol::kThrow) garbled(MessageId::protocol_unknown_frame);
     std::string message, stage_id, function_text;
     protocol::ExceptionKind exception{};
+    bool names_a_mesh = false;
+    BvhViolation broken_rule;
+    std::uint64_t boxes = 0;
     try {
       Reader in(reply);
       in.get<std::uint8_t>();
@@ -154,6 +158,11 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
       message = in.get_string();
       stage_id = in.get_string();
       function_text = in.get_string();
+      if (exception == protocol::ExceptionKind::BrokenTree) {
+        names_a_mesh = in.get<std::uint8_t>() != 0;
+        broken_rule = in.get<BvhViolation>();
+        boxes = in.get<std::uint64_t>();
+      }
       in.expect_end();
     } catch (const protocol::ProtocolError& e) {
       garbled(e.problem);
@@ -166,6 +175,10 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
         throw stub;
       }
       throw std::runtime_error(message);
+    }
+    if (exception == protocol::ExceptionKind::BrokenTree) {
+      const std::optional<std::string> mesh = names_a_mesh ? std::optional<std::string>(message) : std::nullopt;
+      throw std::runtime_error(exception_text(broken_tree_message(broken_rule, boxes, mesh)));
     }
     if (exception == protocol::ExceptionKind::OutOfMemory)
       throw std::runtime_error(exception_text(MessageId::stage_out_of_memory));

@@ -191,6 +191,15 @@ std::string describe(const BvhViolation& v) {
   return "";
 }
 
+BrokenBvh::BrokenBvh(const BvhViolation& broken_rule, std::uint64_t box_count,
+                     const std::optional<std::string>& mesh_name)
+    : std::logic_error("stage 05_bvh: build_bvh over " + std::to_string(box_count) + " boxes (" +
+                       mesh_name.value_or("the scene's objects") +
+                       ") returned a broken tree: " + describe(broken_rule) + " (the autograder's stage 5 tests say more)"),
+      violation(broken_rule),
+      boxes(box_count),
+      mesh(mesh_name) {}
+
 std::string bvh_invariant_violation(const Bvh& bvh, const std::vector<Bounds3>& primitive_bounds,
                                     int max_leaf_size) {
   const std::optional<BvhViolation> violation = find_bvh_violation(bvh, primitive_bounds, max_leaf_size);

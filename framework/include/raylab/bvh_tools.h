@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,17 @@ std::string describe(const BvhViolation& violation);
 // describe(*find_bvh_violation(...)), or "" when all rules hold.
 std::string bvh_invariant_violation(const Bvh& bvh, const std::vector<Bounds3>& primitive_bounds,
                                     int max_leaf_size);
+
+// What the renderer's geometry throws when the student's build_bvh returns a tree that breaks a
+// rule (a traversal could run off its arrays): the rule, the number of boxes, and the mesh (its
+// name, or nullopt for the tree over the scene's objects). what(): the same in English words.
+class BrokenBvh : public std::logic_error {
+ public:
+  BrokenBvh(const BvhViolation& broken_rule, std::uint64_t box_count, const std::optional<std::string>& mesh_name);
+  BvhViolation violation;
+  std::uint64_t boxes;
+  std::optional<std::string> mesh;  // nullopt: the tree over the scene's objects
+};
 
 std::ostream& operator<<(std::ostream& out, const BvhNode& node);
 
