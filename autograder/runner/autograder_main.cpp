@@ -142,7 +142,7 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
       options.server_path = default_stage_server_path();
     return run_supervisor(options);
   } catch (const std::exception& e) {
-    std::cerr << "autograder: grading could not run: " << e.what() << "\n";
+    std::cerr << render({MessageId::cli_could_not_run, {{"error", e.what()}}}) << "\n";
     return 1;
   }
 }

@@ -112,11 +112,11 @@ int run_supervisor(const SupervisorOptions& options) {
       selected.push_back(&stage);
   for (int number : options.stages)
     if (!find_stage(number)) {
-      std::cerr << "autograder: there is no stage " << number << " (see autograder --list)\n";
+      std::cerr << render({MessageId::cli_no_stage_number, {{"number", std::to_string(number)}}}) << "\n";
       return 1;
     }
   if (!std::filesystem::exists(options.server_path)) {
-    std::cerr << "autograder: the stage server " << options.server_path << " is missing (build it with the grader)\n";
+    std::cerr << render({MessageId::cli_server_missing, {{"path", options.server_path}}}) << "\n";
     return 1;
   }
   std::filesystem::create_directories(options.output_directory);
