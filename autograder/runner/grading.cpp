@@ -65,6 +65,7 @@ struct CurrentTest {
   std::vector<Message> hints, notes;
   std::vector<ImageComparison> images;
   std::vector<Message> failures;  // add_failure's, in order, until the listener has seen each
+  std::vector<Message> thrown;    // exception_text's: the exceptions the judge threw in the test
 };
 CurrentTest& current() {
   static CurrentTest test;
@@ -86,8 +87,9 @@ std::set<int>& incomplete_dependencies() {
 
 // A value that is not a number reads as what it is in every failure text, hint and note of
 // every stage: the stream's and std::to_string's "nan", "-nan", "inf", "-inf" (whole words)
-// become "NaN" and "infinity" / "-infinity".
-std::string name_non_finite(const std::string& text) {
+// become "NaN" and "infinity" / "-infinity" (in Chinese: "NaN" and "无穷大" / "负无穷大", the
+// terms of docs/glossary.md).
+std::string name_non_finite(const std::string& text, Language language = Language::English) {
   auto is_word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   std::string out;
   out.reserve(text.size());
@@ -98,8 +100,10 @@ std::string name_non_finite(const std::string& text) {
     const std::string rest = starts_word ? text.substr(i + sign, 3) : std::string();
     const std::size_t end = i + sign + 3;
     if ((rest == "nan" || rest == "inf") && (end >= text.size() || !is_word_char(text[end]))) {
+      const bool chinese = language == Language::Chinese;
       if (rest == "nan") out += "NaN";
-      else out += (text[i] == '-' ? "-infinity" : "infinity");
+      else if (text[i] == '-') out += chinese ? "负无穷大" : "-infinity";
+      else out += chinese ? "无穷大" : "infinity";
       i = end;
       continue;
     }
@@ -109,6 +113,8 @@ std::string name_non_finite(const std::string& text) {
 }
 Message name_non_finite(Message message) {
   for (MessageArg& arg : message.args) {
+    const std::string chinese = name_non_finite(arg.chinese_text.value_or(arg.text), Language::Chinese);
+    if (arg.chinese_text || chinese != name_non_finite(arg.text)) arg.chinese_text = chinese;
     arg.text = name_non_finite(arg.text);
     for (Message& part : arg.parts) part = name_non_finite(part);
   }
@@ -164,9 +170,11 @@ class Recorder : public ::testing::EmptyTestEventListener {
     const std::string thrown = "C++ exception with description \"", in_body = "\" thrown in the test body.";
     if (message.size() >= thrown.size() + in_body.size() && message.compare(0, thrown.size(), thrown) == 0 &&
         message.compare(message.size() - in_body.size(), in_body.size(), in_body) == 0) {
-      messages_.push_back(name_non_finite(Message(
-          MessageId::failure_exception,
-          {{"what", cut(message.substr(thrown.size(), message.size() - thrown.size() - in_body.size()))}})));
+      const std::string what = message.substr(thrown.size(), message.size() - thrown.size() - in_body.size());
+      MessageArg described("what", cut(what));
+      for (const Message& worded : current().thrown)  // the judge's own exception: in the run's language
+        if (render(worded, Language::English) == what) described = {"what", worded};
+      messages_.push_back(name_non_finite(Message(MessageId::failure_exception, {described})));
       return;
     }
     if (message == "Unknown C++ exception thrown in the test body.") {
@@ -262,6 +270,22 @@ void add_hint(const Message& hint) {
 void add_note(const Message& note) { current().notes.push_back(note); }
 
 void add_image(const ImageComparison& images) { current().images.push_back(images); }
+
+Message not_implemented_message(const NotImplemented& e) {
+  const StageDescription* description = find_stage_description(e.stage_id());
+  const StageInfo* stage = find_stage(std::string_view(e.stage_id()));
+  if (!description || !stage) return verbatim(e.what());
+  MessageArg files("files", "assignments/" + std::string(description->files.front()));
+  for (std::size_t i = 1; i < description->files.size(); ++i)
+    files.parts.push_back({MessageId::stage_file_or, {{"file", "assignments/" + std::string(description->files[i])}}});
+  return {MessageId::stage_not_implemented,
+          {{"stage", stage->id}, {"function", e.function()}, files, {"handout", stage->handout_text}}};
+}
+
+std::string exception_text(const Message& what) {
+  current().thrown.push_back(what);
+  return render(what, Language::English);
+}
 
 void add_failure(const Message& failure) { ADD_FAILURE() << failure_text(failure); }
 

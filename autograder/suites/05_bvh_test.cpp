@@ -1,5 +1,6 @@
 // Autograder suites for stage 05_bvh (20 points) and the bonus stage 05b_bvh_sah (10 points).
 #include "bvh_support.h"
+#include "bvh_violation_text.h"
 #include "grading.h"
 
 #include "raylab/bvh_tools.h"
@@ -26,8 +27,8 @@ void expect_valid_trees(Builder build, const char* builder_name) {
   bool hinted = false;
   for (const TestMesh& mesh : bvh_test_meshes()) {
     const Bvh bvh = build(mesh.bounds, kLeafSize);
-    const std::string violation = bvh_invariant_violation(bvh, mesh.bounds, kLeafSize);
-    if (!violation.empty()) {
+    if (const std::optional<BvhViolation> broken = find_bvh_violation(bvh, mesh.bounds, kLeafSize)) {
+      const Message violation = bvh_violation_message(*broken);
       if (!hinted) add_hint({MessageId::bvh_breaks_invariant, {{"violation", violation}}});  // each mesh's rule is below
       hinted = true;
       add_failure({MessageId::bvh_failure_invariant,
@@ -43,7 +44,7 @@ void expect_same_hits_as_brute_force(Builder build, const char* builder_name, bo
   std::uint32_t seed = 7000;
   for (const TestMesh& mesh : bvh_test_meshes()) {
     Bvh bvh = build(mesh.bounds, kLeafSize);
-    if (!bvh_invariant_violation(bvh, mesh.bounds, kLeafSize).empty()) {
+    if (find_bvh_violation(bvh, mesh.bounds, kLeafSize)) {
       // A broken tree costs BuildsAValidTree; a traversal of it could run off its arrays.
       // Here your intersect_bvh is tested on the grader's own tree instead.
       add_note({MessageId::note_bvh_tree_broken, {{"builder", builder_name}, {"mesh", mesh.name}}});
@@ -85,7 +86,7 @@ GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
     add_hint(MessageId::bvh_split_axis_not_longest);
   EXPECT_TRUE(root.split_axis == longest_node || root.split_axis == longest_centroids)
       << failure_text({MessageId::bvh_failure_split_axis,
-                 {{"axis", std::to_string(int(root.split_axis))}, {"box", gtest_text(root.bounds)},
+                 {{"axis", std::to_string(int(root.split_axis))}, {"box", box_text(root.bounds)},
                   {"longest", std::to_string(longest_node)}}});
 }
 
