@@ -2,6 +2,7 @@
 // Simplified Chinese with the same placeholders and the twin handout's sections, every stage
 // title in both languages, and no hint that bypasses the catalogue. The ctest messages_are_paired.
 #include "messages.h"
+#include "bvh_violation_text.h"
 
 #include "raylab/stage_table.h"
 
@@ -231,6 +232,36 @@ TEST(Messages, AssertionCheckFindsTextsOutsideTheCatalogue) {
   EXPECT_EQ(found[1].rfind("7: ADD_FAILURE()", 0), 0u) << found[1];
   EXPECT_EQ(found[2].rfind("8: EXPECT_LT(p(i, j), k)", 0), 0u) << found[2];
   EXPECT_EQ(found[3].rfind("9: FAIL()", 0), 0u) << found[3];
+}
+
+// A broken BVH rule reads in English exactly as the framework writes it (raylab/bvh_tools.h:
+// describe), and in Chinese without the English words: every rule, boxes empty and not, the
+// push_back note with it and without.
+TEST(Messages, BvhRulesMatchTheFrameworksWords) {
+  using Rule = BvhViolation::Rule;
+  const Bounds3 box{glm::vec3(0.0f), glm::vec3(1.0f, 2.0f, 0.5f)};
+  std::vector<BvhViolation> cases;
+  for (int r = 0; r <= static_cast<int>(Rule::PrimitiveInNoLeaf); ++r)
+    for (std::uint64_t value : {0u, 7u}) {
+      BvhViolation v;
+      v.rule = static_cast<Rule>(r);
+      v.index = 3;
+      v.value = value;
+      v.count = 5;
+      v.limit = 12;
+      v.box = box;
+      v.other_box = value == 0 ? Bounds3{} : box;
+      cases.push_back(v);
+    }
+  const std::regex english_word("(^|[^A-Za-z_])(node|leaf|inner|primitive|has|is|the|in|of|at|expected|children|bounds)([^A-Za-z_]|$)");
+  for (const BvhViolation& v : cases) {
+    const Message message = bvh_violation_message(v);
+    EXPECT_EQ(render(message, Language::English), describe(v)) << "rule " << int(v.rule);
+    for (const std::optional<std::string>& mesh : {std::optional<std::string>("scenes/bunny.obj"), std::optional<std::string>()})
+      EXPECT_EQ(render(broken_tree_message(v, 42, mesh), Language::English), BrokenBvh(v, 42, mesh).what());
+    const std::string chinese = render(message, Language::Chinese);
+    EXPECT_FALSE(std::regex_search(chinese, english_word)) << "rule " << int(v.rule) << ": " << chinese;
+  }
 }
 
 TEST(Messages, RenderFillsPlaceholdersInEitherLanguage) {

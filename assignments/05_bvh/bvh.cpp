@@ -51,9 +51,10 @@
 //
 // WHAT YOU RETURN
 //   BvhHit{t_hit, primitive} of the closest hit (or the first, for any_hit); std::nullopt if
-//   nothing is hit. The work counts too (the autograder grades stats.nodes_visited): test a
-//   node's box (stage 04) before anything below it, skip what lies beyond the closest hit
-//   found so far, and visit the near child first. Use no recursion and no allocation: the
+//   nothing is hit. The work counts too (the autograder counts the triangles you test and the
+//   leaves you enter, and checks your stats): test a node's box (stage 04) before anything
+//   below it, skip what lies beyond the closest hit found so far, and visit the near child
+//   first. Use no recursion and no allocation: the
 //   stack never needs more than kBvhMaxDepth entries.
 //
 // READ docs/05_bvh.md, section 3 (the traversal loop), and section 4 (how the renderer uses it).

@@ -23,10 +23,26 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <string_view>
 
 int raylab_autograder_main(int argc, char** argv, const char* description, const char* description_zh) {
   using namespace raylab::grading;
-  CLI::App app{"raylab autograder: grades your stage functions against the reference"};
+  // --help and the options' descriptions in the run's language: --lang, read before the
+  // options are parsed, else the environment. (CLI11's own words in an error stay English.)
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    std::optional<Language> chosen;
+    if (arg == "--lang" && i + 1 < argc) chosen = parse_language(argv[i + 1]);
+    else if (arg.substr(0, 7) == "--lang=") chosen = parse_language(arg.substr(7));
+    if (chosen) set_language(*chosen);
+  }
+  auto worded = [](MessageId id) { return render(id); };
+  CLI::App app{worded(MessageId::cli_description)};
+  app.get_formatter()->label("Usage", worded(MessageId::cli_label_usage));
+  app.get_formatter()->label("OPTIONS", worded(MessageId::cli_label_options_placeholder));
+  app.option_defaults()->group(worded(MessageId::cli_label_options));
+  app.set_help_flag("-h,--help", worded(MessageId::cli_help));
   SupervisorOptions options;
   options.output_directory = "grading-output";
   options.description = description;
@@ -37,43 +53,39 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   std::vector<std::string> visibility_rules;
   std::vector<std::string> stage_names;
   app.add_option("--stage", stage_names,
-                 "Grade only this stage: its id or short form (05b_bvh_sah, 05b or 5b); repeat for several");
-  app.add_option("--json", options.json_path, "Also write a Gradescope-style results.json here");
+                 worded(MessageId::cli_stage));
+  app.add_option("--json", options.json_path, worded(MessageId::cli_json));
   app.add_option("--reference", options.reference_directory,
-                 "Folder of reference data (default: the checked-in autograder/reference/; a course's "
-                 "own cases: autograder-regenerate --seed N --output DIR)")
+                 worded(MessageId::cli_reference))
       ->check(CLI::ExistingDirectory);
-  app.add_option("--output", options.output_directory, "Folder for the yours | reference | difference images")
+  app.add_option("--output", options.output_directory, worded(MessageId::cli_output))
       ->capture_default_str();
-  app.add_option("--timeout", options.timeout_seconds, "Seconds a stage's code may run, all its calls together")
+  app.add_option("--timeout", options.timeout_seconds, worded(MessageId::cli_timeout))
       ->check(CLI::Range(1.0, 3600.0))->capture_default_str();
-  app.add_option("--run-timeout", options.run_timeout_seconds, "Seconds the whole grading run may take")
+  app.add_option("--run-timeout", options.run_timeout_seconds, worded(MessageId::cli_run_timeout))
       ->check(CLI::Range(1.0, 86400.0))->capture_default_str();
-  app.add_option("--max-processes", options.max_processes, "Processes the stage code may have at once")
+  app.add_option("--max-processes", options.max_processes, worded(MessageId::cli_max_processes))
       ->check(CLI::Range(1, 4096))->capture_default_str();
-  app.add_option("--output-limit-kb", options.output_limit_kb, "KiB the stage code may print, per stage process")
+  app.add_option("--output-limit-kb", options.output_limit_kb, worded(MessageId::cli_output_limit))
       ->check(CLI::Range(1L, 1L << 20))->capture_default_str();
-  app.add_option("--memory-mb", options.memory_limit_mb, "Memory limit per stage in MiB (0: none)")
+  app.add_option("--memory-mb", options.memory_limit_mb, worded(MessageId::cli_memory))
       ->check(CLI::Range(0L, 1L << 20))->capture_default_str();
-  app.add_option("--stage-server", options.server_path, "The stage server to grade (default: this program's name + -stage-server)");
-  app.add_flag("--verbose", options.verbose, "Also show notes (image metrics) of passed tests");
-  app.add_flag("--list", list, "List the stages and their tests, then exit");
+  app.add_option("--stage-server", options.server_path, worded(MessageId::cli_stage_server));
+  app.add_flag("--verbose", options.verbose, worded(MessageId::cli_verbose));
+  app.add_flag("--list", list, worded(MessageId::cli_list));
   app.add_flag("--list-files", list_files,
-               "Print the stage files of stages.json (paths under assignments/), one per line, then exit");
+               worded(MessageId::cli_list_files));
   app.add_option("--visibility", visibility_rules,
-                 "Gradescope visibility in results.json: LEVEL for every test, or STAGE=LEVEL, or 'STAGE: Test*'=LEVEL "
-                 "(* matches anything; the last rule naming a test decides); LEVEL is visible, hidden, after_due_date "
-                 "or after_published");
+                 worded(MessageId::cli_visibility));
   app.add_option("--lang", language_name,
-                 "Language of the table, the failures and the hints: en or zh (default: from LC_ALL, LC_MESSAGES or "
-                 "LANG; zh_CN... is Chinese)")
+                 worded(MessageId::cli_lang))
       ->check(CLI::IsMember({"en", "zh"}));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "autograder: " << e.what() << " (see autograder --help)\n";
+    std::cerr << render({MessageId::cli_usage_error, {{"error", e.what()}}}) << "\n";
     return 1;
   }
   if (!language_name.empty()) set_language(*parse_language(language_name));
@@ -130,7 +142,7 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
       options.server_path = default_stage_server_path();
     return run_supervisor(options);
   } catch (const std::exception& e) {
-    std::cerr << "autograder: grading could not run: " << e.what() << "\n";
+    std::cerr << render({MessageId::cli_could_not_run, {{"error", e.what()}}}) << "\n";
     return 1;
   }
 }

@@ -102,7 +102,9 @@ void print_results(const std::vector<StageResult>& results, const Message& descr
     if (stage.not_attempted) continue;
     bool header = false;
     for (const TestResult& t : stage.tests) {
-      const bool show = t.status != Status::Passed || (verbose && !t.notes.empty());
+      // A passed test is shown when it has advice (a hint that costs no points) or, with
+      // --verbose, notes.
+      const bool show = t.status != Status::Passed || !t.hints.empty() || (verbose && !t.notes.empty());
       if (!show) continue;
       if (!header) {
         std::printf("\n%s\n", text_of(MessageId::console_failures_header,

@@ -65,6 +65,7 @@ struct CurrentTest {
   std::vector<Message> hints, notes;
   std::vector<ImageComparison> images;
   std::vector<Message> failures;  // add_failure's, in order, until the listener has seen each
+  std::vector<Message> thrown;    // exception_text's: the exceptions the judge threw in the test
 };
 CurrentTest& current() {
   static CurrentTest test;
@@ -86,8 +87,9 @@ std::set<int>& incomplete_dependencies() {
 
 // A value that is not a number reads as what it is in every failure text, hint and note of
 // every stage: the stream's and std::to_string's "nan", "-nan", "inf", "-inf" (whole words)
-// become "NaN" and "infinity" / "-infinity".
-std::string name_non_finite(const std::string& text) {
+// become "NaN" and "infinity" / "-infinity" (in Chinese: "NaN" and "无穷大" / "负无穷大", the
+// terms of docs/glossary.md).
+std::string name_non_finite(const std::string& text, Language language = Language::English) {
   auto is_word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   std::string out;
   out.reserve(text.size());
@@ -98,8 +100,10 @@ std::string name_non_finite(const std::string& text) {
     const std::string rest = starts_word ? text.substr(i + sign, 3) : std::string();
     const std::size_t end = i + sign + 3;
     if ((rest == "nan" || rest == "inf") && (end >= text.size() || !is_word_char(text[end]))) {
+      const bool chinese = language == Language::Chinese;
       if (rest == "nan") out += "NaN";
-      else out += (text[i] == '-' ? "-infinity" : "infinity");
+      else if (text[i] == '-') out += chinese ? "负无穷大" : "-infinity";
+      else out += chinese ? "无穷大" : "infinity";
       i = end;
       continue;
     }
@@ -109,6 +113,8 @@ std::string name_non_finite(const std::string& text) {
 }
 Message name_non_finite(Message message) {
   for (MessageArg& arg : message.args) {
+    const std::string chinese = name_non_finite(arg.chinese_text.value_or(arg.text), Language::Chinese);
+    if (arg.chinese_text || chinese != name_non_finite(arg.text)) arg.chinese_text = chinese;
     arg.text = name_non_finite(arg.text);
     for (Message& part : arg.parts) part = name_non_finite(part);
   }
@@ -118,6 +124,16 @@ std::vector<Message> name_non_finite(const std::vector<Message>& messages) {
   std::vector<Message> out;
   for (const Message& message : messages) out.push_back(name_non_finite(message));
   return out;
+}
+
+// A failure's message as the test wrote it: GoogleTest 1.16 (Debian 13) appends "\n", or an OS
+// stack trace after "\nStack trace:\n", to every message; 1.12 (Debian 12) appends nothing.
+std::string written_message(const ::testing::TestPartResult& result) {
+  std::string message = result.message();
+  const std::size_t stack_trace = message.find("\nStack trace:\n");
+  if (stack_trace != std::string::npos) message.erase(stack_trace);
+  while (!message.empty() && message.back() == '\n') message.pop_back();
+  return message;
 }
 
 // Hands each test's result to the judge's callbacks (in the judge's own process).
@@ -135,12 +151,13 @@ class Recorder : public ::testing::EmptyTestEventListener {
 
   void OnTestPartResult(const ::testing::TestPartResult& result) override {
     if (!result.failed()) return;
-    const std::string message = result.message();
+    const std::string message = written_message(result);
     not_implemented_ = not_implemented_ || message.find("is not implemented yet") != std::string::npos;
     // add_failure's text, as GoogleTest recorded it ("Failed\n" + the English): shown in either language.
     std::vector<Message>& failures = current().failures;
     if (!failures.empty()) {
-      const std::string english = render(failures.front(), Language::English);
+      std::string english = render(failures.front(), Language::English);
+      while (!english.empty() && english.back() == '\n') english.pop_back();  // as written_message
       if (message.size() >= english.size() && message.compare(message.size() - english.size(), english.size(), english) == 0) {
         MessageArg prefix = MessageArg::bilingual("prefix", message.substr(0, message.size() - english.size()), "");
         messages_.push_back(name_non_finite(Message(MessageId::failure, {prefix, {"failure", failures.front()}})));
@@ -153,9 +170,11 @@ class Recorder : public ::testing::EmptyTestEventListener {
     const std::string thrown = "C++ exception with description \"", in_body = "\" thrown in the test body.";
     if (message.size() >= thrown.size() + in_body.size() && message.compare(0, thrown.size(), thrown) == 0 &&
         message.compare(message.size() - in_body.size(), in_body.size(), in_body) == 0) {
-      messages_.push_back(name_non_finite(Message(
-          MessageId::failure_exception,
-          {{"what", cut(message.substr(thrown.size(), message.size() - thrown.size() - in_body.size()))}})));
+      const std::string what = message.substr(thrown.size(), message.size() - thrown.size() - in_body.size());
+      MessageArg described("what", cut(what));
+      for (const Message& worded : current().thrown)  // the judge's own exception: in the run's language
+        if (render(worded, Language::English) == what) described = {"what", worded};
+      messages_.push_back(name_non_finite(Message(MessageId::failure_exception, {described})));
       return;
     }
     if (message == "Unknown C++ exception thrown in the test body.") {
@@ -251,6 +270,22 @@ void add_hint(const Message& hint) {
 void add_note(const Message& note) { current().notes.push_back(note); }
 
 void add_image(const ImageComparison& images) { current().images.push_back(images); }
+
+Message not_implemented_message(const NotImplemented& e) {
+  const StageDescription* description = find_stage_description(e.stage_id());
+  const StageInfo* stage = find_stage(std::string_view(e.stage_id()));
+  if (!description || !stage) return verbatim(e.what());
+  MessageArg files("files", "assignments/" + std::string(description->files.front()));
+  for (std::size_t i = 1; i < description->files.size(); ++i)
+    files.parts.push_back({MessageId::stage_file_or, {{"file", "assignments/" + std::string(description->files[i])}}});
+  return {MessageId::stage_not_implemented,
+          {{"stage", stage->id}, {"function", e.function()}, files, {"handout", stage->handout_text}}};
+}
+
+std::string exception_text(const Message& what) {
+  current().thrown.push_back(what);
+  return render(what, Language::English);
+}
 
 void add_failure(const Message& failure) { ADD_FAILURE() << failure_text(failure); }
 

@@ -11,6 +11,8 @@
 
 #include "messages.h"
 
+#include "raylab/error.h"
+
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -69,6 +71,15 @@ void add_failure(const Message& failure);
 // The same for an assertion's message, which GoogleTest evaluates only when the assertion fails:
 // EXPECT_EQ(failures, 0) << failure_text({MessageId::..., {...}}). Returns the English text.
 std::string failure_text(const Message& failure);
+// The text of an exception that the judge throws out of a test (what the stage code threw,
+// rebuilt from the stage server's reply: its stub's "not implemented", running out of memory).
+// Returns the English, for the exception's what(); GoogleTest's failure for it is shown in the
+// run's language.
+std::string exception_text(const Message& what);
+// "stage 01_camera_rays is not implemented yet: write generate_camera_ray in
+// assignments/01_camera_rays/camera_rays.cpp (handout: docs/01_camera_rays.md)", in either
+// language: the same sentence as NotImplemented's own (framework/src/error.cpp).
+Message not_implemented_message(const NotImplemented& e);
 // Inside a test: a note shown with the result whether it passes or not (e.g. image metrics), an
 // entry of messages.def like a hint.
 void add_note(const Message& note);

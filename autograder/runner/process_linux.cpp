@@ -190,9 +190,23 @@ void kill_every_descendant() {
 
 // A signal that ended a stage server, named for a student.
 Message signal_description(int signal_number) {
-  const char* name = ::strsignal(signal_number);
+  struct Named {
+    int number;
+    const char* name;
+    MessageId meaning;
+  };
+  static constexpr Named kSignals[] = {
+      {SIGSEGV, "SIGSEGV", MessageId::signal_segv}, {SIGBUS, "SIGBUS", MessageId::signal_bus},
+      {SIGFPE, "SIGFPE", MessageId::signal_fpe},    {SIGILL, "SIGILL", MessageId::signal_ill},
+      {SIGABRT, "SIGABRT", MessageId::signal_abrt}, {SIGKILL, "SIGKILL", MessageId::signal_kill},
+      {SIGXCPU, "SIGXCPU", MessageId::signal_xcpu}, {SIGXFSZ, "SIGXFSZ", MessageId::signal_xfsz},
+      {SIGTERM, "SIGTERM", MessageId::signal_term}, {SIGPIPE, "SIGPIPE", MessageId::signal_pipe},
+      {SIGTRAP, "SIGTRAP", MessageId::signal_trap}, {SIGSYS, "SIGSYS", MessageId::signal_sys}};
   std::vector<Message> named, advice;
-  if (name) named.push_back({MessageId::crash_name, {{"name", name}}});
+  // The signal's name as the code knows it, and what it means in the run's language (not
+  // strsignal(), whose words are the C library's, in English).
+  for (const Named& known : kSignals)
+    if (known.number == signal_number) named.push_back({MessageId::crash_name, {{"name", known.name}, {"meaning", known.meaning}}});
   if (signal_number == SIGSEGV) advice.push_back(MessageId::crash_advice_memory);
   else if (signal_number == SIGFPE) advice.push_back(MessageId::crash_advice_division);
   else if (signal_number == SIGABRT) advice.push_back(MessageId::crash_advice_abort);

@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <system_error>
+#include <utility>
 
 namespace raylab::grading::protocol {
 namespace {
@@ -45,15 +46,18 @@ std::size_t read_fully(int fd, char* data, std::size_t size) {
 
 }  // namespace
 
+ProtocolError::ProtocolError(Message what_was_wrong)
+    : std::runtime_error(render(what_was_wrong, Language::English)), problem(std::move(what_was_wrong)) {}
+
 bool read_frame(int fd, std::string& payload) {
   unsigned char header[4];
   const std::size_t got = read_fully(fd, reinterpret_cast<char*>(header), 4);
   if (got == 0) return false;
-  if (got < 4) throw ProtocolError("a frame cut short");
+  if (got < 4) throw ProtocolError(MessageId::protocol_frame_cut_short);
   const std::uint32_t size = header[0] | header[1] << 8 | header[2] << 16 | std::uint32_t(header[3]) << 24;
-  if (size > kMaxFrameBytes) throw ProtocolError("a frame of " + std::to_string(size) + " bytes (too large)");
+  if (size > kMaxFrameBytes) throw ProtocolError({MessageId::protocol_frame_too_large, {{"bytes", std::to_string(size)}}});
   payload.resize(size);
-  if (read_fully(fd, payload.data(), size) < size) throw ProtocolError("a frame cut short");
+  if (read_fully(fd, payload.data(), size) < size) throw ProtocolError(MessageId::protocol_frame_cut_short);
   return true;
 }
 
@@ -88,10 +92,10 @@ void put_lists(Writer& out, const std::vector<std::vector<std::uint32_t>>& lists
 std::vector<std::vector<std::uint32_t>> get_lists(Reader& in) {
   const auto offsets = in.get_vector<std::uint64_t>();
   const auto values = in.get_vector<std::uint32_t>();
-  if (offsets.empty() || offsets.front() != 0 || offsets.back() != values.size()) throw ProtocolError("malformed lists");
+  if (offsets.empty() || offsets.front() != 0 || offsets.back() != values.size()) throw ProtocolError(MessageId::protocol_malformed_lists);
   std::vector<std::vector<std::uint32_t>> lists(offsets.size() - 1);
   for (std::size_t i = 0; i + 1 < offsets.size(); ++i) {
-    if (offsets[i + 1] < offsets[i] || offsets[i + 1] > values.size()) throw ProtocolError("malformed lists");
+    if (offsets[i + 1] < offsets[i] || offsets[i + 1] > values.size()) throw ProtocolError(MessageId::protocol_malformed_lists);
     lists[i].assign(values.begin() + static_cast<std::ptrdiff_t>(offsets[i]), values.begin() + static_cast<std::ptrdiff_t>(offsets[i + 1]));
   }
   return lists;
@@ -100,14 +104,14 @@ std::vector<std::vector<std::uint32_t>> get_lists(Reader& in) {
 void adopt_channels(int argc, char** argv) {
 #if defined(_WIN32)
   // The judge (process_windows.cpp) passes the two inherited pipe handles as numbers.
-  if (argc != 3) throw ProtocolError("the stage server is started by the autograder, not by hand");
+  if (argc != 3) throw ProtocolError(MessageId::protocol_started_by_hand);
   const int modes[2] = {_O_RDONLY | _O_BINARY, _O_WRONLY | _O_BINARY};
   const int targets[2] = {kRequestFd, kReplyFd};
   for (int i = 0; i < 2; ++i) {
     const auto handle = static_cast<std::intptr_t>(std::strtoull(argv[1 + i], nullptr, 10));
     const int fd = ::_open_osfhandle(handle, modes[i]);
     if (fd < 0 || (fd != targets[i] && ::_dup2(fd, targets[i]) != 0))
-      throw ProtocolError("cannot open the pipe handles the autograder passed");
+      throw ProtocolError(MessageId::protocol_cannot_open_pipes);
   }
 #else
   (void)argc;

@@ -17,6 +17,8 @@
 // (both ends are the same build on the same machine).
 #pragma once
 
+#include "messages.h"
+
 #include <glm/glm.hpp>
 
 #include <array>
@@ -40,11 +42,17 @@ constexpr std::uint32_t kMaxFrameBytes = 512u << 20;
 
 enum Kind : std::uint8_t { kCall = 1, kReturn = 2, kThrow = 3, kCallback = 4 };
 
-enum class ExceptionKind : std::uint8_t { NotImplemented = 1, InvalidArgument, Other };
+// What the stage code threw. OutOfMemory (std::bad_alloc) carries no text: the judge words it in
+// the run's language (stage_out_of_memory), never with text made by the stage process.
+// BrokenTree (raylab/bvh_tools.h: BrokenBvh) is followed by the mesh's name (or nothing: the scene's
+// objects), then the BvhViolation and the number of boxes: the judge words it.
+enum class ExceptionKind : std::uint8_t { NotImplemented = 1, InvalidArgument, Other, OutOfMemory, BrokenTree };
 
-// The reply was not a well-formed frame: what a child wrote is not a result.
+// The reply was not a well-formed frame: what a child wrote is not a result. `problem` says
+// what was wrong (a protocol_... entry of messages.def); what() is its English text.
 struct ProtocolError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit ProtocolError(Message what_was_wrong);
+  Message problem;
 };
 
 class Writer {
@@ -90,14 +98,14 @@ class Reader {
   template <class T, class Allocator = std::allocator<T>>
   std::vector<T, Allocator> get_vector() {
     const auto count = get<std::uint64_t>();
-    if (count > (data_.size() - offset_) / sizeof(T)) throw ProtocolError("a list longer than its frame");
+    if (count > (data_.size() - offset_) / sizeof(T)) throw ProtocolError(MessageId::protocol_list_too_long);
     std::vector<T, Allocator> values(count);
     if (count) std::memcpy(values.data(), take(count * sizeof(T)), count * sizeof(T));
     return values;
   }
   std::string get_string() {
     const auto size = get<std::uint64_t>();
-    if (size > data_.size() - offset_) throw ProtocolError("a text longer than its frame");
+    if (size > data_.size() - offset_) throw ProtocolError(MessageId::protocol_text_too_long);
     return std::string(take(size), size);
   }
   template <class T>
@@ -107,12 +115,12 @@ class Reader {
     return has ? std::optional<T>(value) : std::nullopt;
   }
   void expect_end() const {
-    if (offset_ != data_.size()) throw ProtocolError("extra bytes after the reply");
+    if (offset_ != data_.size()) throw ProtocolError(MessageId::protocol_extra_bytes);
   }
 
  private:
   const char* take(std::size_t size) {
-    if (size > data_.size() - offset_) throw ProtocolError("a reply shorter than its contents");
+    if (size > data_.size() - offset_) throw ProtocolError(MessageId::protocol_reply_too_short);
     const char* at = data_.data() + offset_;
     offset_ += size;
     return at;

@@ -35,7 +35,7 @@ std::string ask_judge(const protocol::Writer& question) {
   std::string answer;
   if (!protocol::read_frame(protocol::kRequestFd, answer)) std::exit(0);  // the judge went away
   if (answer.empty() || static_cast<std::uint8_t>(answer[0]) != protocol::kReturn)
-    throw protocol::ProtocolError("expected the judge's answer");
+    throw protocol::ProtocolError(MessageId::protocol_expected_answer);
   return answer.substr(1);
 }
 

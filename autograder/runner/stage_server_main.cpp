@@ -5,6 +5,7 @@
 #include "protocol.h"
 #include "stage_call.h"
 
+#include "raylab/bvh_tools.h"
 #include "raylab/error.h"
 
 #include <exception>
@@ -21,7 +22,7 @@ using namespace raylab::grading::protocol;
 void answer(Reader& in, Writer& out) {
   const std::string name = in.get_string();
   const Handler handler = find_handler(name);
-  if (!handler) throw ProtocolError("unknown request");
+  if (!handler) throw ProtocolError(MessageId::protocol_unknown_request);
   handler(in, out);
 }
 
@@ -30,6 +31,9 @@ void answer(Reader& in, Writer& out) {
 int main(int argc, char** argv) {
   try {
     adopt_channels(argc, argv);
+  } catch (const ProtocolError& e) {
+    std::cerr << "stage server: " << render(e.problem) << "\n";  // run by hand: in the language of LANG
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "stage server: " << e.what() << "\n";
     return 2;
@@ -46,7 +50,7 @@ int main(int argc, char** argv) {
     out.put(kReturn);
     try {
       Reader in(request);
-      if (in.get<std::uint8_t>() != kCall) throw ProtocolError("expected a call");
+      if (in.get<std::uint8_t>() != kCall) throw ProtocolError(MessageId::protocol_expected_call);
       answer(in, out);
     } catch (const NotImplemented& e) {
       out = Writer{};
@@ -55,12 +59,21 @@ int main(int argc, char** argv) {
       out.put_string(e.what());
       out.put_string(e.stage_id());
       out.put_string(e.function());
+    } catch (const BrokenBvh& e) {  // the judge words it (stage_broken_tree)
+      out = Writer{};
+      out.put(kThrow);
+      out.put(ExceptionKind::BrokenTree);
+      out.put_string(e.mesh.value_or(""));
+      out.put_string("");
+      out.put_string("");
+      out.put(std::uint8_t(e.mesh.has_value()));
+      out.put(e.violation);
+      out.put(e.boxes);
     } catch (const std::bad_alloc&) {
       out = Writer{};
       out.put(kThrow);
-      out.put(ExceptionKind::Other);
-      out.put_string("ran out of memory (std::bad_alloc): the stage's memory limit was reached "
-                     "(a container that grows without end? memory allocated in every call and never freed?)");
+      out.put(ExceptionKind::OutOfMemory);  // the judge words it (stage_out_of_memory)
+      out.put_string("");
       out.put_string("");
       out.put_string("");
     } catch (const std::invalid_argument& e) {

@@ -1,5 +1,8 @@
 #include "stage_session.h"
 
+#include "bvh_violation_text.h"
+#include "grading.h"
+
 #include "raylab/error.h"
 #include "raylab/stage_table.h"
 
@@ -72,7 +75,9 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
     ~Account() { session.used_seconds_ += std::chrono::duration<double>(Clock::now() - started).count(); }
   } account{*this, started};
 
-  const Message during{MessageId::lost_during_function, {{"function", stage_call.description}}};
+  const Message during = stage_call.during == MessageId::lost_during_function
+                             ? Message{MessageId::lost_during_function, {{"function", stage_call.description}}}
+                             : Message(stage_call.during);
   auto timed_out = [&]() {
     process_.stop(true, output_);
     if (deadline == options_.run_deadline) lose(MessageId::lost_run_time_limit, true);
@@ -83,7 +88,7 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
     if (end.crashed) lose({MessageId::lost_crashed, {{"crash", end.crash}}}, false);
     lose({MessageId::lost_exited, {{"status", std::to_string(end.exit_code)}, {"during", during}}}, false);
   };
-  auto garbled = [&](const std::string& what) {
+  auto garbled = [&](const Message& what) {
     process_.stop(true, output_);
     lose({MessageId::lost_malformed_answer, {{"during", during}, {"what", what}}}, false);
   };
@@ -111,11 +116,11 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
     try {
       if (!protocol::read_frame(process_.reply_fd(), reply)) ended();
     } catch (const protocol::ProtocolError& e) {
-      garbled(e.what());
+      garbled(e.problem);
     } catch (const std::system_error&) {
       ended();
     }
-    if (reply.empty()) garbled("an empty frame");
+    if (reply.empty()) garbled(MessageId::protocol_empty_frame);
     const auto kind = static_cast<std::uint8_t>(reply[0]);
     if (kind == protocol::kReturn) return reply;
     if (kind == protocol::kCallback && on_callback) {
@@ -126,7 +131,7 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
         in.get<std::uint8_t>();
         on_callback(in, answer);
       } catch (const protocol::ProtocolError& e) {
-        garbled(e.what());
+        garbled(e.problem);
       } catch (...) {
         // The judge's own callback gave up (say, the traversal did too much work): the server
         // is stuck in the call, so it goes, but the stage code did nothing wrong.
@@ -140,9 +145,12 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
       }
       continue;
     }
-    if (kind != protocol::kThrow) garbled("an unknown kind of frame");
+    if (kind != protocol::kThrow) garbled(MessageId::protocol_unknown_frame);
     std::string message, stage_id, function_text;
     protocol::ExceptionKind exception{};
+    bool names_a_mesh = false;
+    BvhViolation broken_rule;
+    std::uint64_t boxes = 0;
     try {
       Reader in(reply);
       in.get<std::uint8_t>();
@@ -150,15 +158,30 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
       message = in.get_string();
       stage_id = in.get_string();
       function_text = in.get_string();
+      if (exception == protocol::ExceptionKind::BrokenTree) {
+        names_a_mesh = in.get<std::uint8_t>() != 0;
+        broken_rule = in.get<BvhViolation>();
+        boxes = in.get<std::uint64_t>();
+      }
       in.expect_end();
     } catch (const protocol::ProtocolError& e) {
-      garbled(e.what());
+      garbled(e.problem);
     }
     if (exception == protocol::ExceptionKind::NotImplemented) {
       // Rebuild the stub's exception from the stage table (its message names the file to write).
-      if (stage_of_function(function_text)) throw NotImplemented(function_text);
+      if (stage_of_function(function_text)) {
+        const NotImplemented stub(function_text);
+        (void)exception_text(not_implemented_message(stub));  // shown in the run's language
+        throw stub;
+      }
       throw std::runtime_error(message);
     }
+    if (exception == protocol::ExceptionKind::BrokenTree) {
+      const std::optional<std::string> mesh = names_a_mesh ? std::optional<std::string>(message) : std::nullopt;
+      throw std::runtime_error(exception_text(broken_tree_message(broken_rule, boxes, mesh)));
+    }
+    if (exception == protocol::ExceptionKind::OutOfMemory)
+      throw std::runtime_error(exception_text(MessageId::stage_out_of_memory));
     if (exception == protocol::ExceptionKind::InvalidArgument) throw std::invalid_argument(message);
     throw std::runtime_error(message);
   }

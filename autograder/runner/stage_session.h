@@ -24,6 +24,9 @@ namespace raylab::grading {
 struct StageCall {
   const char* name;         // what the request carries; unique among all stages' calls
   const char* description;  // what the judge's messages name: "... during <description>"
+  // The words for "... during <description>" in either language: lost_during_function with the
+  // description (a function named in code, the same in both), or an entry of its own.
+  MessageId during = MessageId::lost_during_function;
 };
 
 // A call into stage code that delivered no result: the process died, timed out or misbehaved.

@@ -22,20 +22,6 @@
 namespace raylab::grading {
 namespace {
 
-// "stage 01_camera_rays is not implemented yet: write generate_camera_ray in
-// assignments/01_camera_rays/camera_rays.cpp (handout: docs/01_camera_rays.md)", in either language:
-// the same sentence as NotImplemented's own (framework/src/error.cpp).
-Message not_implemented_message(const NotImplemented& e) {
-  const StageDescription* description = find_stage_description(e.stage_id());
-  const StageInfo* stage = find_stage(std::string_view(e.stage_id()));
-  if (!description || !stage) return verbatim(e.what());
-  MessageArg files("files", "assignments/" + std::string(description->files.front()));
-  for (std::size_t i = 1; i < description->files.size(); ++i)
-    files.parts.push_back({MessageId::stage_file_or, {{"file", "assignments/" + std::string(description->files[i])}}});
-  return {MessageId::stage_not_implemented,
-          {{"stage", stage->id}, {"function", e.function()}, files, {"handout", stage->handout_text}}};
-}
-
 // Runs the GoogleTest suites of one stage here, in the judge; their stage calls go to the
 // session's stage server.
 void run_stage_tests(StageResult& result) {
@@ -126,11 +112,11 @@ int run_supervisor(const SupervisorOptions& options) {
       selected.push_back(&stage);
   for (int number : options.stages)
     if (!find_stage(number)) {
-      std::cerr << "autograder: there is no stage " << number << " (see autograder --list)\n";
+      std::cerr << render({MessageId::cli_no_stage_number, {{"number", std::to_string(number)}}}) << "\n";
       return 1;
     }
   if (!std::filesystem::exists(options.server_path)) {
-    std::cerr << "autograder: the stage server " << options.server_path << " is missing (build it with the grader)\n";
+    std::cerr << render({MessageId::cli_server_missing, {{"path", options.server_path}}}) << "\n";
     return 1;
   }
   std::filesystem::create_directories(options.output_directory);

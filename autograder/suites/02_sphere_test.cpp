@@ -71,7 +71,7 @@ void expect_sphere(const Ray& ray, glm::vec3 center, float radius, std::optional
   if (!ok) diagnose(ray, center, radius, got, expected);
   if (!ok)
     add_failure({MessageId::sphere_failure,
-                 {{"ray", gtest_text(ray)}, {"center", gtest_text(center)}, {"radius", gtest_text(radius)},
+                 {{"ray", ray_text(ray)}, {"center", gtest_text(center)}, {"radius", gtest_text(radius)},
                   {"expected", hit_text(expected)}, {"got", hit_text(got)}}});
 }
 
@@ -136,7 +136,7 @@ GRADED_TEST(kStage, Stage02Sphere, MatchesReferenceHits, 3) {
     if (++failures <= 3) {
       diagnose(ray, center, radius, got, expected);
       add_failure({MessageId::sphere_failure_reference,
-                   {{"id", c.at("id").dump()}, {"ray", gtest_text(ray)}, {"center", gtest_text(center)},
+                   {{"id", c.at("id").dump()}, {"ray", ray_text(ray)}, {"center", gtest_text(center)},
                     {"radius", gtest_text(radius)}, {"expected", hit_text(expected, true)}, {"got", hit_text(got, true)}}});
     }
   }

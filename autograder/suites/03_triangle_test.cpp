@@ -68,7 +68,7 @@ void expect_triangle(const Ray& ray, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, s
   if (!ok) diagnose(ray, got, expected, back_face);
   if (!ok)
     add_failure({MessageId::triangle_failure,
-                 {{"ray", gtest_text(ray)}, {"p0", gtest_text(p0)}, {"p1", gtest_text(p1)}, {"p2", gtest_text(p2)},
+                 {{"ray", ray_text(ray)}, {"p0", gtest_text(p0)}, {"p1", gtest_text(p1)}, {"p2", gtest_text(p2)},
                   describe("expected", expected), describe("got", got)}});
 }
 
@@ -134,7 +134,7 @@ GRADED_TEST(kStage, Stage03Triangle, MatchesReferenceHits, 2) {
     if (++failures <= 3) {
       diagnose(ray, got, expected, glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) > 0);
       add_failure({MessageId::triangle_failure_reference,
-                   {{"id", c.at("id").dump()}, {"ray", gtest_text(ray)}, {"p0", gtest_text(p0)}, {"p1", gtest_text(p1)},
+                   {{"id", c.at("id").dump()}, {"ray", ray_text(ray)}, {"p0", gtest_text(p0)}, {"p1", gtest_text(p1)},
                     {"p2", gtest_text(p2)}, describe("expected", expected), describe("got", got)}});
     }
   }

@@ -56,7 +56,7 @@ void expect_box(const Ray& ray, const Bounds3& box, std::optional<float> expecte
   if (!ok) {
     diagnose(ray, got, expected);
     add_failure({MessageId::box_failure,
-                 {{"ray", gtest_text(ray)}, {"box", gtest_text(box)}, {"expected", describe(expected)},
+                 {{"ray", ray_text(ray)}, {"box", box_text(box)}, {"expected", describe(expected)},
                   {"got", describe(got)}}});
   }
 }
@@ -124,7 +124,7 @@ GRADED_TEST(kStage, Stage04Box, MatchesReferenceBoxes, 2) {
     if (++failures <= 3) {
       diagnose(ray, got, expected);
       add_failure({MessageId::box_failure_reference,
-                   {{"id", c.at("id").dump()}, {"ray", gtest_text(ray)}, {"box", gtest_text(box)},
+                   {{"id", c.at("id").dump()}, {"ray", ray_text(ray)}, {"box", box_text(box)},
                     {"expected", describe(expected)}, {"got", describe(got)}}});
     }
   }

@@ -47,10 +47,10 @@ std::vector<std::vector<std::uint32_t>> triangles_hit(TriangleFunction function,
   return remote(kTrianglesHit, arguments, [&](Reader& in) {
     auto hits = protocol::get_lists(in);
     in.expect_end();
-    if (hits.size() != rays.size()) throw protocol::ProtocolError("an answer for the wrong number of rays");
+    if (hits.size() != rays.size()) throw protocol::ProtocolError(MessageId::protocol_wrong_ray_count);
     for (const auto& list : hits)
       for (std::uint32_t t : list)
-        if (t >= triangles.size()) throw protocol::ProtocolError("a triangle index out of range");
+        if (t >= triangles.size()) throw protocol::ProtocolError(MessageId::protocol_triangle_out_of_range);
     return hits;
   });
 }

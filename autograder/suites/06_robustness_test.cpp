@@ -97,7 +97,7 @@ void check_sphere_cases(const std::string& kind) {
       const Message expected = expected_hit ? Message(MessageId::value_t, {{"t", std::to_string(expected_t)}})
                                             : Message(MessageId::value_no_hit);
       add_failure({MessageId::robust_failure_sphere,
-                   {{"id", c.at("id").dump()}, {"kind", kind}, {"ray", gtest_text(ray)}, {"center", gtest_text(center)},
+                   {{"id", c.at("id").dump()}, {"kind", kind}, {"ray", ray_text(ray)}, {"center", gtest_text(center)},
                     {"radius", gtest_text(radius)}, {"expected", expected},
                     {"tolerance", gtest_text(kSphereRelativeTolerance)}, {"got", hit_text(got)}}});
     }
@@ -150,7 +150,7 @@ GRADED_TEST(kStage, Stage06Robustness, WatertightMatchesStage03Answers, 3) {
       const MessageArg expected_text = expected ? MessageArg("expected", c.at("hit").dump())
                                                 : MessageArg("expected", Message(MessageId::value_no_hit));
       add_failure({MessageId::robust_failure_stage03_case,
-                   {{"id", c.at("id").dump()}, {"ray", gtest_text(ray)}, {"p0", gtest_text(p0)}, {"p1", gtest_text(p1)},
+                   {{"id", c.at("id").dump()}, {"ray", ray_text(ray)}, {"p0", gtest_text(p0)}, {"p1", gtest_text(p1)},
                     {"p2", gtest_text(p2)}, expected_text, got_text}});
     }
   }
@@ -210,7 +210,7 @@ GRADED_TEST(kStage, Stage06Robustness, NoRayLeaksThroughClosedMeshes, 6) {
       add_hint(MessageId::robust_leaks);
       add_failure({MessageId::robust_failure_leaks,
                    {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kRays)},
-                    {"ray", gtest_text(first_leak)}}});
+                    {"ray", ray_text(first_leak)}}});
     }
   }
 }
@@ -242,7 +242,7 @@ GRADED_TEST(kStage, Stage06Robustness, DegenerateAndParallelInputsGiveNoNaN, 2) 
     if (finite && got->t_hit > input.ray.t_min) continue;  // a finite hit on a degenerate input is acceptable
     add_hint(MessageId::robust_degenerate_nan);
     add_failure({MessageId::robust_failure_degenerate,
-                 {{"what", input.what}, {"ray", gtest_text(input.ray)}, {"p0", gtest_text(input.a)},
+                 {{"what", input.what}, {"ray", ray_text(input.ray)}, {"p0", gtest_text(input.a)},
                   {"p1", gtest_text(input.b)}, {"p2", gtest_text(input.c)}, {"got", gtest_text(*got)}}});
   }
 }
@@ -306,7 +306,7 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
   if (acne > 0) {
     add_hint(MessageId::robust_shadow_acne);
     add_failure({MessageId::robust_failure_acne,
-                 {{"acne", gtest_text(acne)}, {"rays", gtest_text(tested)}, {"ray", gtest_text(first)},
+                 {{"acne", gtest_text(acne)}, {"rays", gtest_text(tested)}, {"ray", ray_text(first)},
                   {"p0", gtest_text(first_corners[0])}, {"p1", gtest_text(first_corners[1])},
                   {"p2", gtest_text(first_corners[2])}, {"t", gtest_text(first_t)}}});
   }
@@ -359,8 +359,8 @@ GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
   if (lost > 0) {
     add_hint(MessageId::robust_box_edge);
     add_failure({MessageId::robust_failure_box_edge,
-                 {{"lost", gtest_text(lost)}, {"rays", gtest_text(touching)}, {"ray", gtest_text(first)},
-                  {"box", gtest_text(first_box)}}});
+                 {{"lost", gtest_text(lost)}, {"rays", gtest_text(touching)}, {"ray", ray_text(first)},
+                  {"box", box_text(first_box)}}});
   }
 }
 

@@ -14,8 +14,9 @@ using grading::Warp;
 using grading::protocol::Reader;
 using grading::protocol::Writer;
 
-constexpr grading::StageCall kWarpSamples{"warp_samples", "a stage-07 warp (sample_...)"};
-constexpr grading::StageCall kWarpPdfs{"warp_pdfs", "a stage-07 density (..._pdf)"};
+constexpr grading::StageCall kWarpSamples{"warp_samples", "a stage-07 warp (sample_...)",
+                                          grading::MessageId::lost_during_warp};
+constexpr grading::StageCall kWarpPdfs{"warp_pdfs", "a stage-07 density (..._pdf)", grading::MessageId::lost_during_density};
 
 }  // namespace
 
@@ -29,7 +30,7 @@ std::vector<glm::vec3> warp_samples(Warp warp, const std::vector<glm::vec2>& uni
   return remote(kWarpSamples, arguments, [&](Reader& in) {
     auto samples = in.get_vector<glm::vec3>();
     in.expect_end();
-    if (samples.size() != uniform_randoms.size()) throw protocol::ProtocolError("an answer for the wrong number of samples");
+    if (samples.size() != uniform_randoms.size()) throw protocol::ProtocolError(MessageId::protocol_wrong_sample_count);
     return samples;
   });
 }
@@ -42,7 +43,7 @@ std::vector<float> warp_pdfs(Warp warp, const std::vector<glm::vec3>& arguments_
     auto values = in.get_vector<float>();
     in.expect_end();
     const std::size_t expected = warp == Warp::UniformTriangle ? arguments_in.size() / 3 : arguments_in.size();
-    if (values.size() != expected) throw protocol::ProtocolError("an answer for the wrong number of densities");
+    if (values.size() != expected) throw protocol::ProtocolError(MessageId::protocol_wrong_density_count);
     return values;
   });
 }

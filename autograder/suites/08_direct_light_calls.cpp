@@ -62,7 +62,7 @@ std::vector<glm::vec3> direct_light_samples(const DirectLightScene& scene, const
     in.expect_end();
     std::size_t expected = 0;
     for (const DirectLightQuery& query : queries) expected += query.sample_count;
-    if (samples.size() != expected) throw protocol::ProtocolError("an answer for the wrong number of samples");
+    if (samples.size() != expected) throw protocol::ProtocolError(MessageId::protocol_wrong_sample_count);
     return samples;
   });
 }

@@ -67,8 +67,8 @@ bool close(const glm::vec3& got, const glm::dvec3& expected, double relative = 1
   return close(got.x, expected.x, relative) && close(got.y, expected.y, relative) && close(got.z, expected.z, relative);
 }
 
-void fail_value(const std::string& call, const std::string& got, const std::string& expected) {
-  add_failure({MessageId::direct_failure_value, {{"call", call}, {"got", got}, {"expected", expected}}});
+void fail_value(const MessageArg& call, const std::string& got, const std::string& expected) {
+  add_failure({MessageId::direct_failure_value, {call, {"got", got}, {"expected", expected}}});
 }
 
 // ---- Exact functions ---------------------------------------------------------------------
@@ -79,7 +79,7 @@ GRADED_TEST(kStage, Stage08DirectLight, PointLightIntensityFromPower, 3) {
     const glm::vec3 got = point_light_intensity(power);
     const glm::dvec3 expected = glm::dvec3(power) / (4.0 * kPiD);
     if (close(got, expected)) continue;
-    fail_value("point_light_intensity(" + text(power) + ")", text(got), text(glm::vec3(expected)));
+    fail_value({"call", "point_light_intensity(" + text(power) + ")"}, text(got), text(glm::vec3(expected)));
     if (hint_if_not_finite("point_light_intensity", {got.x, got.y, got.z}, {MessageId::direct_advice_division, {}})) return;
     const double ratio = got.x / power.x;  // power.x > 0 in every case
     for (const double divisor : {1.0, kPiD, 2.0 * kPiD, 4.0, 2.0})
@@ -106,9 +106,10 @@ GRADED_TEST(kStage, Stage08DirectLight, PointLightIrradiance, 5) {
     const double cosine = glm::dot(glm::dvec3(c.normal), to_light) / d;
     const glm::dvec3 expected = cosine > 0 ? glm::dvec3(c.intensity) * (cosine / (d * d)) : glm::dvec3(0.0);
     if (close(got, expected, 2e-5)) continue;
-    const std::string call = "point_light_irradiance(intensity " + text(c.intensity) + ", light at " + text(c.light) +
-                             ", point " + text(c.point) + ", normal " + text(c.normal) + ")";
-    fail_value(call, text(got), text(glm::vec3(expected)));
+    const Message call{MessageId::direct_call_irradiance,
+                       {{"intensity", text(c.intensity)}, {"light", text(c.light)}, {"point", text(c.point)},
+                        {"normal", text(c.normal)}}};
+    fail_value({"call", call}, text(got), text(glm::vec3(expected)));
     if (hint_if_not_finite("point_light_irradiance", {got.x, got.y, got.z}, {MessageId::direct_advice_division, {}})) return;
     const glm::dvec3 intensity(c.intensity);
     if (cosine <= 0) add_hint({MessageId::direct_irradiance_behind, {}});
@@ -124,7 +125,7 @@ GRADED_TEST(kStage, Stage08DirectLight, LambertianF, 4) {
     const glm::vec3 got = lambertian_f(albedo);
     const glm::dvec3 expected = glm::dvec3(albedo) / kPiD;
     if (close(got, expected)) continue;
-    fail_value("lambertian_f(" + text(albedo) + ")", text(got), text(glm::vec3(expected)));
+    fail_value({"call", "lambertian_f(" + text(albedo) + ")"}, text(got), text(glm::vec3(expected)));
     if (hint_if_not_finite("lambertian_f", {got.x, got.y, got.z}, {MessageId::direct_advice_division, {}})) return;
     if (close(got, glm::dvec3(albedo), 1e-4)) add_hint({MessageId::direct_lambertian_no_pi, {}});
     else if (close(got, glm::dvec3(albedo) / (2.0 * kPiD), 1e-4)) add_hint({MessageId::direct_lambertian_two_pi, {}});
@@ -144,7 +145,7 @@ GRADED_TEST(kStage, Stage08DirectLight, AreaPdfToSolidAngle, 5) {
     if (close(got, expected, 2e-5)) continue;
     const std::string call = "area_pdf_to_solid_angle(pdf_area " + text(c.pdf_area) + ", distance " + text(c.distance) +
                              ", cos_at_light " + text(c.cos_at_light) + ")";
-    fail_value(call, text(got), gtest_text(static_cast<float>(expected)));
+    fail_value({"call", call}, text(got), gtest_text(static_cast<float>(expected)));
     if (hint_if_not_finite("area_pdf_to_solid_angle", {got}, {MessageId::direct_advice_division, {}})) return;
     if (close(got, pdf, 1e-4)) add_hint({MessageId::direct_pdf_not_converted, {}});
     else if (close(got, pdf * d * d, 1e-4)) add_hint({MessageId::direct_pdf_no_cosine, {}});
@@ -176,7 +177,7 @@ void add_quad_light(DirectLightScene& scene, float x0, float x1, float z0, float
 }
 
 struct Expectation {
-  std::string what;
+  Message what;  // the case, in words (direct_case_...)
   DirectLightQuery query;
   glm::dvec3 radiance;  // the exact expected value of the estimate
 };
@@ -194,7 +195,7 @@ void expect_means(const DirectLightScene& scene, const std::vector<Expectation>&
       for (int c = 0; c < 3; ++c) moments[c].add(samples[offset + i][c]);
     for (std::uint32_t i = 0; i < e.query.sample_count; ++i) {
       const glm::vec3& s = samples[offset + i];
-      if (hint_if_not_finite("estimate_direct_light (" + e.what + ")", {s.x, s.y, s.z},
+      if (hint_if_not_finite(Message{MessageId::direct_case_estimate, {{"what", e.what}}}, {s.x, s.y, s.z},
                              {MessageId::direct_advice_division, {}}))
         return add_failure({MessageId::direct_failure_not_finite, {{"what", e.what}}});
     }
@@ -234,15 +235,15 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorUnderQuadLight, 5) {
   add_quad_light(scene, 213, 343, 227, 332, 548.7f, glm::vec3(10.0f, 8.0f, 6.0f));
   const std::vector<glm::dvec3> corners = {{213, 548.7, 227}, {213, 548.7, 332}, {343, 548.7, 332}, {343, 548.7, 227}};
   std::vector<Expectation> expectations;
-  auto add = [&](const std::string& what, glm::vec3 point, glm::vec3 normal, glm::vec3 albedo) {
+  auto add = [&](MessageId what, glm::vec3 point, glm::vec3 normal, glm::vec3 albedo) {
     normal = glm::normalize(normal);
     const double e = polygon_irradiance(corners, glm::dvec3(point), glm::dvec3(normal));
     const glm::dvec3 radiance = glm::dvec3(albedo) / kPiD * glm::dvec3(10.0, 8.0, 6.0) * e;
     expectations.push_back({what, DirectLightQuery{point, normal, normal, albedo, kSamplesPerQuery}, radiance});
   };
-  add("floor under the light", glm::vec3(278, 0, 280), glm::vec3(0, 1, 0), glm::vec3(0.725f, 0.71f, 0.68f));
-  add("floor near a wall", glm::vec3(40, 0, 500), glm::vec3(0, 1, 0), glm::vec3(0.5f));
-  add("a tilted surface", glm::vec3(300, 200, 100), glm::vec3(0.3f, 1.0f, 0.5f), glm::vec3(0.63f, 0.065f, 0.05f));
+  add(MessageId::direct_case_floor_under_light, glm::vec3(278, 0, 280), glm::vec3(0, 1, 0), glm::vec3(0.725f, 0.71f, 0.68f));
+  add(MessageId::direct_case_floor_near_wall, glm::vec3(40, 0, 500), glm::vec3(0, 1, 0), glm::vec3(0.5f));
+  add(MessageId::direct_case_tilted_surface, glm::vec3(300, 200, 100), glm::vec3(0.3f, 1.0f, 0.5f), glm::vec3(0.63f, 0.065f, 0.05f));
   expect_means(scene, expectations, 2);
 }
 
@@ -255,7 +256,7 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorSeveralLights, 4) {
   scene.spheres.push_back({glm::vec3(3, 2, 0), 0.5f, glm::vec3(2.0f, 3.0f, 1.0f)});
   scene.point_lights.push_back({glm::vec3(-2, 2, 1), glm::vec3(5.0f, 1.0f, 2.0f)});
   std::vector<Expectation> expectations;
-  auto add = [&](const std::string& what, glm::vec3 point, glm::vec3 normal, glm::vec3 albedo) {
+  auto add = [&](MessageId what, glm::vec3 point, glm::vec3 normal, glm::vec3 albedo) {
     normal = glm::normalize(normal);
     const glm::dvec3 x(point), n(normal);
     glm::dvec3 e = glm::dvec3(4.0) * polygon_irradiance({glm::dvec3(t0), glm::dvec3(t1), glm::dvec3(t2)}, x, n);
@@ -268,8 +269,8 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorSeveralLights, 4) {
     expectations.push_back({what, DirectLightQuery{point, normal, normal, albedo, kSamplesPerQuery},
                             glm::dvec3(albedo) / kPiD * e});
   };
-  add("a point lit by a triangle, a sphere and a point light", glm::vec3(0, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0.8f));
-  add("a tilted point lit by all three", glm::vec3(0.5f, 0.2f, 0.3f), glm::vec3(0.2f, 1.0f, -0.1f),
+  add(MessageId::direct_case_point_three_lights, glm::vec3(0, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0.8f));
+  add(MessageId::direct_case_tilted_point_three_lights, glm::vec3(0.5f, 0.2f, 0.3f), glm::vec3(0.2f, 1.0f, -0.1f),
       glm::vec3(0.3f, 0.6f, 0.9f));
   expect_means(scene, expectations, 3);
 }
@@ -311,7 +312,7 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorPointLightExact, 1) {
                               (glm::dot(glm::dvec3(normal), to_light / d) / (d * d));
   for (const glm::vec3& s : samples)
     if (!close(s, expected, 1e-4)) {
-      fail_value("estimate_direct_light with one point light (6, 3, 1.5) at (1, 3, 2), point (0, 0, 0)", text(s),
+      fail_value({"call", Message(MessageId::direct_call_one_point_light)}, text(s),
                  text(glm::vec3(expected)));
       return;
     }

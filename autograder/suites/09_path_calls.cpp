@@ -21,8 +21,10 @@ using grading::PathRenderResult;
 using grading::protocol::Reader;
 using grading::protocol::Writer;
 
-constexpr grading::StageCall kPathRender{"path_render", "path_radiance (rendering)"};
-constexpr grading::StageCall kPathMisRender{"path_mis_render", "path_radiance_mis (rendering)"};
+constexpr grading::StageCall kPathRender{"path_render", "path_radiance (rendering)",
+                                         grading::MessageId::lost_during_path_rendering};
+constexpr grading::StageCall kPathMisRender{"path_mis_render", "path_radiance_mis (rendering)",
+                                            grading::MessageId::lost_during_path_mis_rendering};
 
 }  // namespace
 
@@ -46,7 +48,7 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
     const int expected_height = request.probe_only ? 1 : request.height;
     const std::size_t pixels = static_cast<std::size_t>(expected_width) * static_cast<std::size_t>(expected_height);
     if (width != expected_width || height != expected_height || mean.size() != pixels || variance.size() != pixels)
-      throw protocol::ProtocolError("a picture of the wrong size");
+      throw protocol::ProtocolError(MessageId::protocol_wrong_picture_size);
     PathRenderResult result{Image(width, height), Image(width, height)};
     std::memcpy(result.mean.data(), mean.data(), pixels * sizeof(glm::vec3));
     std::memcpy(result.variance_of_mean.data(), variance.data(), pixels * sizeof(glm::vec3));

@@ -65,7 +65,7 @@ std::vector<glm::vec3> mis_scripted_paths(const MisScene& scene, const std::vect
   return remote(kMisScriptedPaths, arguments, [&](Reader& in) {
     auto radiance = in.get_vector<glm::vec3>();
     in.expect_end();
-    if (radiance.size() != paths.size()) throw protocol::ProtocolError("an answer for the wrong number of paths");
+    if (radiance.size() != paths.size()) throw protocol::ProtocolError(MessageId::protocol_wrong_path_count);
     return radiance;
   });
 }

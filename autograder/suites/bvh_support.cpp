@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace raylab::grading {
 namespace {
@@ -358,14 +357,6 @@ TraversalWork reference_traversal_work(const Bvh& bvh, const TestMesh& mesh, con
   return probe.work;
 }
 
-namespace {
-std::string describe_ray(const Ray& ray) {
-  std::ostringstream text;
-  text << ray;
-  return text.str();
-}
-}  // namespace
-
 int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
                              const Message& what) {
   const PrimitiveIntersector intersector = intersector_for(mesh);
@@ -388,13 +379,11 @@ int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::ve
     else if (!got && expected) {
       // Whose code dropped the hit: your box test (stage 04), if it misses a box on the way
       // to the hit; otherwise the traversal.
-      std::ostringstream box_text;
       if (const std::optional<Bounds3> missed = box_wrongly_missed(bvh, ray, expected->primitive)) {
-        box_text << *missed;
         add_hint({MessageId::bvh_box_test_misses,
                   {{"zero_component", zero_component ? std::vector<Message>{MessageId::bvh_zero_component_note}
                                                      : std::vector<Message>{}},
-                   {"ray", describe_ray(ray)}, {"box", box_text.str()}, {"t", std::to_string(expected->t_hit)}}});
+                   {"ray", ray_text(ray)}, {"box", box_text(*missed)}, {"t", std::to_string(expected->t_hit)}}});
       } else if (zero_component) {
         add_hint(MessageId::bvh_misses_zero_component);
       } else {
@@ -409,7 +398,7 @@ int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::ve
                      {{"t", std::to_string(hit->t_hit)}, {"primitive", std::to_string(hit->primitive)}});
     };
     add_failure({MessageId::bvh_failure_ray,
-                 {{"what", what}, {"mesh", mesh.name}, {"index", std::to_string(r)}, {"ray", gtest_text(ray)},
+                 {{"what", what}, {"mesh", mesh.name}, {"index", std::to_string(r)}, {"ray", ray_text(ray)},
                   {"expected", hit_of(expected)}, {"got", hit_of(got)}}});
   }
   return differences;

@@ -57,6 +57,7 @@ struct TraversalWork {
   std::uint64_t near_child_first = 0;      // inner nodes with leaves tested under both children: nearer one first
   std::uint64_t far_child_first = 0;       // ... the farther one first
   double nodes_per_ray() const { return rays ? double(nodes_visited) / double(rays) : 0.0; }
+  double nodes_implied_per_ray() const { return rays ? double(nodes_implied) / double(rays) : 0.0; }
   double tests_per_ray() const { return rays ? double(primitives_tested) / double(rays) : 0.0; }
 };
 

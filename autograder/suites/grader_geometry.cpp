@@ -1,9 +1,11 @@
 // The grader's own geometry (grader_geometry.h): a triangle test shared by the judge's brute-force
 // oracle and the stage server's BVH traversal requests, so both see exactly the same hits; and
 // the camera rays, sphere and triangle tests that stages 08 and 09 trace their scenes with, so
-// that a mistake in stages 01-05 costs points in its own stage only. All in double precision,
-// with the conventions of stages 01-03 (their headers).
+// that a mistake in stages 01-05 costs points in its own stage only. All in double precision (the
+// sphere in long double, from the testkit), with the conventions of stages 01-03 (their headers).
 #include "grader_geometry.h"
+
+#include "raylab/testkit/oracles.h"
 
 #include <cmath>
 
@@ -29,19 +31,13 @@ std::optional<TriangleHit> triangle_hit_in_double(const Ray& ray, const glm::vec
   return TriangleHit{t, static_cast<float>(b1), static_cast<float>(b2)};
 }
 
-// The nearer root of |o + t d - c|^2 = r^2 in the ray's interval (the farther one from inside).
-std::optional<float> sphere_hit_in_double(const Ray& ray, const glm::vec3& center, float radius) {
-  const glm::dvec3 d(ray.direction), center_to_origin = glm::dvec3(ray.origin) - glm::dvec3(center);
-  const double a = glm::dot(d, d);
-  if (!(a > 0.0)) return std::nullopt;
-  const double half_b = glm::dot(center_to_origin, d);
-  // The squared distance from the centre to the ray's line, from the perpendicular part.
-  const glm::dvec3 perpendicular = center_to_origin - (half_b / a) * d;
-  const double r = radius;
-  const double quarter_discriminant = a * (r * r - glm::dot(perpendicular, perpendicular));
-  if (!(quarter_discriminant >= 0.0)) return std::nullopt;
-  const double root = std::sqrt(quarter_discriminant);
-  for (const double t : {(-half_b - root) / a, (-half_b + root) / a}) {
+// The nearer root of |o + t d - c|^2 = r^2 in the ray's interval (the farther one from inside):
+// the testkit's exact roots (stage 02's oracle), each rounded to float before the interval test,
+// as the float the renderer receives.
+std::optional<float> sphere_hit_exact(const Ray& ray, const glm::vec3& center, float radius) {
+  const std::optional<testkit::SphereRoots> roots = testkit::exact_sphere_roots(ray, center, radius);
+  if (!roots) return std::nullopt;
+  for (const long double t : {roots->t0, roots->t1}) {
     const float t_float = static_cast<float>(t);
     if (t_float > ray.t_min && t_float < ray.t_max) return t_float;
   }
@@ -76,7 +72,7 @@ std::optional<float> grader_triangle_test(void* triangles, const Ray& ray, std::
 TracingFunctions grader_tracing() {
   TracingFunctions tracing;
   tracing.camera_ray = camera_ray_in_double;
-  tracing.sphere = sphere_hit_in_double;
+  tracing.sphere = sphere_hit_exact;
   tracing.triangle = triangle_hit_in_double;
   return tracing;
 }

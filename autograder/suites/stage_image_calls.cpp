@@ -18,7 +18,8 @@ namespace {
 using protocol::Reader;
 using protocol::Writer;
 
-constexpr StageCall kRenderStageImage{"render_stage_image", "rendering the stage's picture"};
+constexpr StageCall kRenderStageImage{"render_stage_image", "rendering the stage's picture",
+                                      MessageId::lost_during_stage_picture};
 
 }  // namespace
 
@@ -32,7 +33,7 @@ Image render_stage_image(const std::string& stage_id) {
     in.expect_end();
     if (width != kImageWidth || height != kImageHeight ||
         pixels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
-      throw protocol::ProtocolError("a picture of the wrong size");
+      throw protocol::ProtocolError(MessageId::protocol_wrong_picture_size);
     Image image(width, height);
     std::memcpy(image.data(), pixels.data(), pixels.size() * sizeof(glm::vec3));
     return image;

@@ -15,20 +15,42 @@
 
 namespace raylab::grading {
 
-bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice) {
+namespace {
+bool hint_non_finite(const MessageArg& what, std::initializer_list<float> results, const Message& advice) {
   for (float value : results) {
     if (std::isfinite(value)) continue;
-    const std::string name = std::isnan(value) ? "NaN" : value > 0.0f ? "infinity" : "-infinity";
+    const MessageArg name = std::isnan(value) ? MessageArg("value", "NaN")
+                            : value > 0.0f  ? MessageArg::bilingual("value", "infinity", "无穷大")
+                                            : MessageArg::bilingual("value", "-infinity", "负无穷大");
     add_hint({std::isnan(value) ? MessageId::not_finite_nan : MessageId::not_finite_infinity,
-              {{"what", what}, {"value", name}, {"advice", advice}}});
+              {what, name, {"advice", advice}}});
     return true;
   }
   return false;
+}
+}  // namespace
+
+bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice) {
+  return hint_non_finite({"what", what}, results, advice);
+}
+bool hint_if_not_finite(const Message& what, std::initializer_list<float> results, const Message& advice) {
+  return hint_non_finite({"what", what}, results, advice);
 }
 
 Message hit_text(std::optional<float> t, bool fixed) {
   if (!t) return MessageId::value_no_hit;
   return {MessageId::value_t, {{"t", fixed ? std::to_string(*t) : stream_text(*t)}}};
+}
+
+Message ray_text(const Ray& ray) {
+  return {MessageId::value_ray,
+          {{"origin", gtest_text(ray.origin)}, {"direction", gtest_text(ray.direction)},
+           {"t_min", gtest_text(ray.t_min)}, {"t_max", gtest_text(ray.t_max)}}};
+}
+
+Message box_text(const Bounds3& box) {
+  if (box.is_empty()) return MessageId::value_box_empty;
+  return {MessageId::value_box, {{"min", gtest_text(box.min)}, {"max", gtest_text(box.max)}}};
 }
 
 nlohmann::json to_json(const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }

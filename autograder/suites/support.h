@@ -1,7 +1,9 @@
 // Helpers shared by the stage suites and the regenerate tool.
 #pragma once
 
+#include "raylab/bounds.h"
 #include "raylab/image.h"
+#include "raylab/ray.h"
 #include "raylab/random.h"
 #include "raylab/scene.h"
 #include "raylab/testkit/random_values.h"
@@ -28,6 +30,7 @@ namespace raylab::grading {
 // returns true, so no later hint reads a NaN as a wrong number ("a hit behind the ray").
 // Failure texts need nothing: the grader prints every non-finite value as NaN or infinity.
 bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice);
+bool hint_if_not_finite(const Message& what, std::initializer_list<float> results, const Message& advice);
 
 // A value as GoogleTest's message stream writes it (floats with all their digits): the format of a
 // value in a failure text, as when it was streamed into ADD_FAILURE() itself.
@@ -35,6 +38,12 @@ template <typename Value>
 std::string gtest_text(const Value& value) {
   return (::testing::Message() << value).GetString();
 }
+
+// A ray ("origin (0, 0, 5) direction (0, 0, 1) t in (0, infinity)", as the framework's operator<<
+// writes it, numbers as gtest_text) and a box ("[(-1, -1, -1) .. (1, 1, 1)]" or "[empty]") for
+// failure texts and hints, in the run's language.
+Message ray_text(const Ray& ray);
+Message box_text(const Bounds3& box);
 
 // "t = <t>" (the stream's format, or std::to_string's with `fixed`) or "no hit", for failure texts.
 Message hit_text(std::optional<float> t, bool fixed = false);

@@ -21,12 +21,10 @@ namespace {
 
 // A student's build_bvh may return a tree that would send the traversal out of its arrays:
 // stop with the broken rule in words rather than crash (or render garbage) later.
-void check_tree(const Bvh& bvh, const std::vector<Bounds3>& boxes, const std::string& what) {
-  const std::string problem = bvh_invariant_violation(bvh, boxes, SceneGeometry::kBvhLeafSize);
-  if (!problem.empty())
-    throw std::logic_error("stage 05_bvh: build_bvh over " + std::to_string(boxes.size()) + " boxes (" +
-                           what + ") returned a broken tree: " + problem +
-                           " (the autograder's stage 5 tests say more)");
+// `mesh`: the mesh's name, or nullopt for the tree over the scene's objects.
+void check_tree(const Bvh& bvh, const std::vector<Bounds3>& boxes, const std::optional<std::string>& mesh) {
+  if (const std::optional<BvhViolation> broken = find_bvh_violation(bvh, boxes, SceneGeometry::kBvhLeafSize))
+    throw BrokenBvh(*broken, boxes.size(), mesh);
 }
 
 Bounds3 triangle_bounds(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
@@ -93,7 +91,7 @@ void SceneGeometry::build_bvhs() {
         boxes.emplace_back(sphere.center - glm::vec3(sphere.radius), sphere.center + glm::vec3(sphere.radius));
       for (const MeshPart& mesh : meshes_) boxes.push_back(mesh.bounds);
       objects_bvh_ = build_bvh(boxes, kBvhLeafSize);
-      check_tree(objects_bvh_, boxes, "the scene's objects");
+      check_tree(objects_bvh_, boxes, std::nullopt);
     }
     // A traversal needs the box test (stage 04_box) and intersect_bvh: find out now, with one
     // query, whether they are still stubs, rather than in the middle of the render.

@@ -1,6 +1,7 @@
-# cmake [-DEXPECT=re&&re...] [-DFORBID=re] [-DJSON=path -DJSON_HINT_ID=id] -P language.cmake -- grader args...
+# cmake [-DEXPECT=re&&re...] [-DFORBID=re] [-DHTML=path] [-DJSON=path -DJSON_HINT_ID=id] -P language.cmake -- grader args...
 # Runs a grader (exit status 0) and checks its stdout: every regex of EXPECT (joined by "&&")
-# matches, FORBID does not; with JSON, results.json names the hint JSON_HINT_ID with its English
+# matches, FORBID does not; with HTML, FORBID does not match the text of that report either (its
+# tags, style and script left out); with JSON, results.json names the hint JSON_HINT_ID with its English
 # and Chinese texts. The language comes from the arguments (--lang) or the environment the test
 # sets (cmake -E env LANG=...).
 set(command "")
@@ -29,6 +30,19 @@ if(DEFINED EXPECT)
 endif()
 if(DEFINED FORBID AND out MATCHES "${FORBID}")
   message(FATAL_ERROR "the output says '${CMAKE_MATCH_0}' (matching '${FORBID}'), which it must not\n${report}")
+endif()
+if(DEFINED HTML)
+  file(READ "${HTML}" page)
+  string(REGEX REPLACE "<style>[^<]*</style>" "" page "${page}")
+  string(REGEX REPLACE "<script>[^<]*</script>" "" page "${page}")
+  string(REGEX REPLACE "<[^>]*>" " " page "${page}")
+  foreach(entity "&amp;=&" "&lt;=<" "&gt;=>" "&quot;=\"" "&#39;='")
+    string(REGEX MATCH "^([^=]*)=(.*)$" pair "${entity}")
+    string(REPLACE "${CMAKE_MATCH_1}" "${CMAKE_MATCH_2}" page "${page}")
+  endforeach()
+  if(DEFINED FORBID AND page MATCHES "${FORBID}")
+    message(FATAL_ERROR "the report ${HTML} says '${CMAKE_MATCH_0}' (matching '${FORBID}'), which it must not\n${page}")
+  endif()
 endif()
 if(DEFINED JSON)
   file(READ "${JSON}" results)

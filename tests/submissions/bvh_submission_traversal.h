@@ -17,10 +17,20 @@ struct TraversalMistakes {
   bool far_child_first = false;             // enters the far child and pushes the near one
   bool leaf_position_as_primitive = false;  // tests primitive i (the leaf position), not primitive_order[i]
   bool t_max_not_lowered = false;           // keeps the closest hit by comparison; search.t_max stays
+  bool prunes_only_at_leaves = false;       // tests every node's box but enters every inner node anyway
+};
+
+// What the traversal writes into stats.nodes_visited.
+enum class NodesReport {
+  Honest,       // every node box tested (the contract)
+  One,          // 1 per ray: a lie below what the grader knows was visited
+  LowerBound,   // the nodes on the paths from the root to the leaves whose primitives were tested:
+                // a lie exactly at the lower bound the grader can check
 };
 
 inline std::optional<BvhHit> traverse_bvh(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
-                                          bool any_hit, BvhTraversalStats& stats, TraversalMistakes mistakes) {
+                                          bool any_hit, BvhTraversalStats& stats, TraversalMistakes mistakes,
+                                          NodesReport report = NodesReport::Honest) {
   if (bvh.nodes.empty()) return std::nullopt;
   const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
   // 1 / -0 = -infinity < 0: a -0 component counts as negative, consistently with the box test.
@@ -32,21 +42,35 @@ inline std::optional<BvhHit> traverse_bvh(const Bvh& bvh, const Ray& ray, const 
 
   Ray search = ray;
   std::optional<BvhHit> closest;
-  std::uint32_t stack[kBvhMaxDepth];
+  // With prunes_only_at_leaves the stack holds every pending sibling of a root path: its depth
+  // bounds it, so kBvhMaxDepth entries suffice either way.
+  std::uint32_t stack[kBvhMaxDepth], stack_depth[kBvhMaxDepth];
   int stack_size = 0;
-  std::uint32_t node_index = 0;
+  std::uint32_t node_index = 0, depth = 0;
   std::uint64_t nodes_visited = 0, primitives_tested = 0;  // locals: kept in registers
+  // NodesReport::LowerBound: the current root path's nodes, counted once each when a leaf below
+  // them has its primitives tested (a depth-first traversal keeps the path above a popped node).
+  bool path_counted[kBvhMaxDepth + 1] = {};
+  std::uint64_t path_nodes = 0;
 
   for (;;) {
     const BvhNode& node = nodes[node_index];
     ++nodes_visited;
-    if (intersect_ray_box(search, ray_direction_inverse, node.bounds)) {
+    path_counted[depth] = false;
+    const bool box_hit = intersect_ray_box(search, ray_direction_inverse, node.bounds).has_value();
+    if (box_hit || (mistakes.prunes_only_at_leaves && !node.is_leaf())) {
       if (!node.is_leaf()) {
         // The second child is the nearer one when the ray runs towards -split_axis.
         const bool enter_second = direction_negative[node.split_axis] != mistakes.far_child_first;
+        stack_depth[stack_size] = depth + 1;
         stack[stack_size++] = node.first_index + (enter_second ? 0u : 1u);  // visited later
         node_index = node.first_index + (enter_second ? 1u : 0u);
+        ++depth;
         continue;
+      }
+      for (std::uint32_t d = depth + 1; d-- > 0 && !path_counted[d];) {
+        path_counted[d] = true;
+        ++path_nodes;
       }
       const std::uint32_t leaf_end = node.first_index + node.primitive_count;
       for (std::uint32_t i = node.first_index; i < leaf_end; ++i) {
@@ -68,9 +92,11 @@ inline std::optional<BvhHit> traverse_bvh(const Bvh& bvh, const Ray& ray, const 
       if (any_hit && closest) break;
     }
     if (stack_size == 0) break;
-    node_index = stack[--stack_size];
+    --stack_size;
+    node_index = stack[stack_size];
+    depth = stack_depth[stack_size];
   }
-  stats.nodes_visited += nodes_visited;
+  stats.nodes_visited += report == NodesReport::Honest ? nodes_visited : report == NodesReport::One ? 1 : path_nodes;
   stats.primitives_tested += primitives_tested;
   return closest;
 }

@@ -170,8 +170,8 @@ endforeach()
 if((MODE STREQUAL "broken" OR MODE STREQUAL "contained") AND NOT EXPECT_STAGE IN_LIST stages)
   list(APPEND problems "no results for ${EXPECT_STAGE}")
 endif()
-if(MODE STREQUAL "broken" OR MODE STREQUAL "lost")
-  # EXPECT_HINT: one regex, or several joined by "&&", each of which must match (every mistake named).
+if(MODE STREQUAL "broken" OR MODE STREQUAL "lost" OR (MODE STREQUAL "full" AND EXPECT_HINT))
+  # EXPECT_HINT (with "full": advice that costs no points): one regex, or several joined by "&&", each of which must match (every mistake named).
   string(REPLACE "&&" ";" expected_hints "${EXPECT_HINT}")
   foreach(hint IN LISTS expected_hints)
     if(NOT output MATCHES "${hint}")
