@@ -305,6 +305,9 @@ std::string stage_html(const StageResult& stage, Language language, const std::s
                      escape_html(text_of({MessageId::console_test_points, {{"points", std::to_string(test.info.points)}}},
                                          language)) +
                      "</span>";
+      for (const Message& hint : test.hints)  // advice that cost no points
+        passed_list += "<p class=\"hint\">" +
+                       with_handout_links(text_of({MessageId::console_hint, {{"hint", hint}}}, language), kit_href) + "</p>";
       for (const Message& note : test.notes)
         passed_list += "<p class=\"note\">" + with_handout_links(text_of(note, language), kit_href) + "</p>";
       passed_list += "</li>\n";
