@@ -387,6 +387,54 @@ TEST(SphereLight, PdfLiCountsBothPointsOnTheLineAndIntegratesToOne) {
   EXPECT_LT(from_the_back, 340);
 }
 
+// A sphere that faces inward (scenes/furnace.json): its normals point to the centre, a ray from
+// inside sees its emission, and sampled by area from a point on it, every sample weighs the same:
+// cos theta at both ends is distance / (2 radius), so cos theta_here / pdf_solid_angle =
+// 4 pi r^2 cos theta_here cos theta_light / distance^2 = pi. (In a cube it grows without bound
+// near the edges.) The same sphere facing outward is dark inside: no sample reaches a point there.
+TEST(SphereLight, FacingInwardLightsItsInsideAndEverySampleFromItWeighsTheSame) {
+  const std::string text = R"({
+    "camera": {},
+    "materials": { "glow": { "type": "diffuse", "diffuse_color": 0.5, "emission": 1 } },
+    "objects": [ { "type": "sphere", "center": [1, 2, 3], "radius": 2, "facing": "inward", "material": "glow" } ] })";
+  const Scene scene = parse_scene(text, "inside.json", ".");
+  ASSERT_EQ(scene.spheres.size(), 1u);
+  ASSERT_TRUE(scene.spheres[0].faces_inward);
+  const SceneGeometry geometry(scene);
+  const Ray ray = make_ray(glm::vec3(1, 2, 3), glm::normalize(glm::vec3(1, -2, 0.5f)));
+  const std::optional<SurfaceHit> hit = geometry.intersect(ray);
+  ASSERT_TRUE(hit.has_value()) << "a ray from the centre hits the sphere from inside";
+  EXPECT_NEAR(hit->t_hit, 2.0f, 1e-5f);
+  EXPECT_TRUE(testing::vec3_near(hit->geometric_normal, -ray.direction, 1e-5f)) << "the normal points inward";
+  EXPECT_EQ(emitted_radiance(scene.materials[hit->material], *hit, ray.direction), glm::vec3(1.0f));
+
+  const LightSet lights(scene);
+  ASSERT_EQ(lights.size(), 1u);
+  const glm::vec3 here = hit->point, normal_here = hit->geometric_normal;
+  Pcg32 random(23u);
+  int weighed = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const glm::vec2 u(random.next_float(), random.next_float());
+    const ShapeSample point = sample_sphere(scene.spheres[0], u);
+    ASSERT_TRUE(testing::vec3_near(point.normal, (scene.spheres[0].center - point.point) / 2.0f, 1e-5f));
+    const auto sample = sample_li(lights[0], here, u);
+    if (glm::length(point.point - here) < 0.05f) continue;  // float rounding, not the weight, decides there
+    ASSERT_TRUE(sample.has_value()) << "every point of the sphere is seen from inside, from its front";
+    EXPECT_NEAR(glm::dot(normal_here, sample->direction) / sample->pdf, kPi, 1e-3f * kPi);
+    EXPECT_NEAR(pdf_li(lights[0], here, sample->direction), sample->pdf, 1e-3f * sample->pdf)
+        << "from inside, a direction reaches the sphere once";
+    ++weighed;
+  }
+  EXPECT_GT(weighed, 1900);
+
+  Scene outward = scene;
+  outward.spheres[0].faces_inward = false;
+  const LightSet outward_lights(outward);
+  for (int i = 0; i < 100; ++i)
+    EXPECT_FALSE(sample_li(outward_lights[0], glm::vec3(1, 2, 3), glm::vec2(random.next_float(), random.next_float())))
+        << "an outward sphere is dark inside";
+}
+
 TEST(PointLight, PowerIsFourPiIntensityAndRadianceFallsWithDistanceSquared) {
   const Scene scene = parse_scene(R"({
     "camera": {}, "objects": [],

@@ -113,7 +113,8 @@ TEST(LoadScene, MissingFileNamesThePath) {
 TEST(ParseScene, TheValidBaseSceneParses) {
   // Every malformed case below is this scene with one mistake: it must itself be valid.
   const Scene scene = parse_scene(valid_scene().dump(), kSource, ".");
-  EXPECT_EQ(scene.spheres.size(), 1u);
+  ASSERT_EQ(scene.spheres.size(), 1u);
+  EXPECT_FALSE(scene.spheres[0].faces_inward) << "spheres face outward unless they say otherwise";
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_EQ(scene.meshes[0].triangle_count(), 1u);
   EXPECT_EQ(scene.lights.size(), 1u);
@@ -205,6 +206,8 @@ const MalformedCase kMalformedCases[] = {
      {"/materials/red/diffuse_color", "<= 1"}},
     {"DiffuseWithPhongKey", [](json& s) { s["materials"]["red"] = {{"type", "diffuse"}, {"ks", 0.5}}; },
      {"/materials/red/ks", "unknown key 'ks'"}},
+    {"SphereFacingUnknown", [](json& s) { s["objects"][0]["facing"] = "in"; },
+     {"/objects/0/facing", "unknown facing 'in' (expected outward or inward)"}},
     {"MirrorReflectanceAboveOne", [](json& s) { s["materials"]["red"] = {{"type", "mirror"}, {"reflectance", 2}}; },
      {"/materials/red/reflectance", "<= 1"}},
 };

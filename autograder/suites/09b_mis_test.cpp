@@ -403,35 +403,14 @@ GRADED_TEST(kStage, Stage09bMis, LastVertexKeepsWeightOne, 2) {
 void hint_biased() { add_hint({MessageId::mis_biased, {}}); }
 
 void expect_furnace(int index) {
-  const Furnace& f = kFurnaces[index];
-  PathRenderRequest request = furnace_request(index, test_seed(200 + static_cast<std::uint64_t>(index)));
-  request.mis = 1;
-  const PathRenderResult render = path_render("scenes/furnace.json", request);
-  std::vector<double> values;
-  std::size_t not_finite = 0;
-  for (const glm::vec3& v : render.mean.pixels()) {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) ++not_finite;
-    else values.push_back(v.x);  // a grey furnace: the channels are alike
-  }
-  const std::size_t total = render.mean.pixels().size();
-  if (not_finite) {
-    add_failure({MessageId::path_failure_not_finite, {{"count", std::to_string(not_finite)}, {"total", std::to_string(total)}}});
-    add_hint({MessageId::path_not_finite, {{"count", std::to_string(not_finite)}, {"total", std::to_string(total)}}});
+  const FurnaceRender render = render_furnace(index, test_seed(200 + static_cast<std::uint64_t>(index)), true);
+  if (render.not_finite) {
+    add_not_finite(render.not_finite, render.pixel_means.size() + render.not_finite);
     return;
   }
-  const double expected = furnace_exact(f);
-  const testkit::MeanTestResult result = testkit::mean_test(values, expected, kLevel);
+  const testkit::MeanTestResult result = furnace_mean_test(render.pixel_means, furnace_exact(kFurnaces[index]), kLevel);
   if (result.passed) return;
-  add_failure({MessageId::path_failure_furnace,
-               {{"albedo", gtest_text(f.albedo)},
-                {"roulette", gtest_text(f.roulette)},
-                {"depth", std::to_string(f.max_depth)},
-                {"count", std::to_string(result.count)},
-                {"mean", gtest_text(result.mean)},
-                {"error", gtest_text(result.standard_error)},
-                {"expected", gtest_text(expected)},
-                {"p_value", gtest_text(result.p_value)},
-                {"level", gtest_text(result.significance_level)}}});
+  add_furnace_failure(index, result);
   hint_biased();
 }
 

@@ -29,6 +29,41 @@ double furnace_exact(const Furnace& furnace) {
   return sum;
 }
 
+FurnaceRender render_furnace(int index, std::uint64_t seed, bool mis) {
+  PathRenderRequest request = furnace_request(index, seed);
+  request.mis = mis ? 1 : 0;
+  const PathRenderResult result = path_render("scenes/furnace.json", request);
+  FurnaceRender render;
+  for (const glm::vec3& v : result.mean.pixels()) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) ++render.not_finite;
+    else render.pixel_means.push_back(v.x);
+  }
+  return render;
+}
+
+testkit::MeanTestResult furnace_mean_test(const std::vector<double>& pixel_means, double expected, double level) {
+  return testkit::mean_test(pixel_means, expected, level, kFurnaceTolerance * std::fabs(expected));
+}
+
+void add_furnace_failure(int index, const testkit::MeanTestResult& result) {
+  const Furnace& f = kFurnaces[index];
+  add_failure({MessageId::path_failure_furnace,
+               {{"albedo", gtest_text(f.albedo)},
+                {"roulette", gtest_text(f.roulette)},
+                {"depth", std::to_string(f.max_depth)},
+                {"count", std::to_string(result.count)},
+                {"mean", gtest_text(result.mean)},
+                {"error", gtest_text(result.standard_error)},
+                {"expected", gtest_text(result.expected_mean)},
+                {"p_value", gtest_text(result.p_value)},
+                {"level", gtest_text(result.significance_level)}}});
+}
+
+void add_not_finite(std::size_t count, std::size_t total) {
+  add_failure({MessageId::path_failure_not_finite, {{"count", std::to_string(count)}, {"total", std::to_string(total)}}});
+  add_hint({MessageId::path_not_finite, {{"count", std::to_string(count)}, {"total", std::to_string(total)}}});
+}
+
 double path_test_level() {
   static const double level = testkit::sidak_level(testkit::kGraderFalseFailureRate, kPathStatisticalTests);
   return level;
@@ -102,10 +137,8 @@ std::optional<RegionTest> expect_cornell_matches_reference(const std::string& st
   std::size_t not_finite = 0;
   for (const glm::vec3& v : render.mean.pixels())
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) ++not_finite;
-  const std::size_t total = render.mean.pixels().size();
   if (not_finite) {
-    add_failure({MessageId::path_failure_not_finite, {{"count", std::to_string(not_finite)}, {"total", std::to_string(total)}}});
-    add_hint({MessageId::path_not_finite, {{"count", std::to_string(not_finite)}, {"total", std::to_string(total)}}});
+    add_not_finite(not_finite, render.mean.pixels().size());
     return std::nullopt;
   }
   Image reference_mean(kCornellSize, kCornellSize), reference_variance(kCornellSize, kCornellSize);

@@ -2,8 +2,10 @@
 // furnace t-tests and the Cornell region z-tests of autograder/suites/09_path_test.cpp, with
 // the same settings and the same reference data, rendered with N seeds other than the graded
 // one. The design rate is 1 in 1,000 for the whole stage; also prints how many single region
-// tests pass |z| = 3 and 4, against the normal distribution's share, to show the tails.
+// tests pass |z| = 3 and 4, and how many furnace t-statistics pass |t| = 3 and 4, against the
+// normal distribution's share, to show the tails.
 //   autograder-path-false-failures --seeds 200
+//   autograder-path-false-failures --seeds 10000 --furnaces-only
 #include "path_support.h"
 #include "support.h"
 
@@ -21,6 +23,8 @@ int main(int argc, char** argv) {
   CLI::App app{"Measure stage 09's false failures on the reference solution"};
   int seeds = 100;
   app.add_option("--seeds", seeds, "How many independent gradings")->check(CLI::Range(1, 100000));
+  bool furnaces_only = false;
+  app.add_flag("--furnaces-only", furnaces_only, "Only the furnaces (milliseconds a seed: for their tails)");
   CLI11_PARSE(app, argc, argv);
 
   const nlohmann::json cases = load_reference_cases("09_path");
@@ -40,18 +44,30 @@ int main(int argc, char** argv) {
   }
   const double level = path_test_level();
   long long stage_failures = 0, furnace_failures = 0, region_failures = 0, beyond_3 = 0, beyond_4 = 0, region_tests = 0;
+  // Each furnace's t-statistics before the tolerance, (mean - exact) / standard error: their mean
+  // and tails show whether the t-test's normal approximation holds (a furnace without roulette has
+  // almost no noise, so there they show float rounding instead).
+  testkit::RunningMoments furnace_t[3], furnace_deviation[3];
+  long long furnace_beyond_3[3] = {0, 0, 0}, furnace_beyond_4[3] = {0, 0, 0};
   for (int seed = 1; seed <= seeds; ++seed) {
     bool failed = false;
     for (int f = 0; f < 3; ++f) {
-      const PathRenderResult render = path_render("scenes/furnace.json", furnace_request(f, 1000003ull * seed + f));
-      std::vector<double> values;
-      for (const glm::vec3& v : render.mean.pixels()) values.push_back(v.x);
-      if (!testkit::mean_test(values, furnace_exact(kFurnaces[f]), level).passed) {
+      const FurnaceRender render = render_furnace(f, 1000003ull * seed + f, false);
+      const double exact = furnace_exact(kFurnaces[f]);
+      const testkit::MeanTestResult test = furnace_mean_test(render.pixel_means, exact, level);
+      if (render.not_finite || !test.passed) {
         ++furnace_failures;
         failed = true;
       }
+      furnace_deviation[f].add((test.mean - exact) / exact);
+      if (test.standard_error > 0) {
+        const double t = (test.mean - exact) / test.standard_error;
+        furnace_t[f].add(t);
+        furnace_beyond_3[f] += std::fabs(t) > 3.0;
+        furnace_beyond_4[f] += std::fabs(t) > 4.0;
+      }
     }
-    for (int s = 0; s < 2; ++s) {
+    for (int s = 0; s < (furnaces_only ? 0 : 2); ++s) {
       const PathRenderResult render =
           path_render(kCornellScenes[s], cornell_request(kStudentSamples, 2000003ull * seed + s));
       const RegionTest test =
@@ -69,12 +85,25 @@ int main(int argc, char** argv) {
   }
   std::fprintf(stderr, "\n");
   const double normal_3 = 2.0 * (1.0 - testkit::normal_cdf(3.0)), normal_4 = 2.0 * (1.0 - testkit::normal_cdf(4.0));
-  std::printf("09_path false failures of the reference over %d seeds: %lld gradings failed (design: at most %.4g "
-              "per grading, %.3g expected)\n",
-              seeds, stage_failures, testkit::kGraderFalseFailureRate, testkit::kGraderFalseFailureRate * seeds);
-  std::printf("  furnace t-tests failed: %lld of %d; region z-tests failed: %lld of %lld (level %.3g each)\n",
-              furnace_failures, 3 * seeds, region_failures, region_tests, level);
-  std::printf("  region |z| > 3: %lld of %lld (normal: %.1f); |z| > 4: %lld (normal: %.2f)\n", beyond_3, region_tests,
-              normal_3 * static_cast<double>(region_tests), beyond_4, normal_4 * static_cast<double>(region_tests));
+  if (furnaces_only) {
+    std::printf("09_path furnaces of the reference over %d seeds: %lld of %d t-tests failed (level %.3g each)\n", seeds,
+                furnace_failures, 3 * seeds, level);
+  } else {
+    std::printf("09_path false failures of the reference over %d seeds: %lld gradings failed (design: at most %.4g "
+                "per grading, %.3g expected)\n",
+                seeds, stage_failures, testkit::kGraderFalseFailureRate, testkit::kGraderFalseFailureRate * seeds);
+    std::printf("  furnace t-tests failed: %lld of %d; region z-tests failed: %lld of %lld (level %.3g each)\n",
+                furnace_failures, 3 * seeds, region_failures, region_tests, level);
+    std::printf("  region |z| > 3: %lld of %lld (normal: %.1f); |z| > 4: %lld (normal: %.2f)\n", beyond_3, region_tests,
+                normal_3 * static_cast<double>(region_tests), beyond_4, normal_4 * static_cast<double>(region_tests));
+  }
+  for (int f = 0; f < 3; ++f) {
+    const double count = static_cast<double>(furnace_t[f].count());
+    std::printf("  furnace %d (albedo %g, roulette %g, depth %d): mean %.2e off the exact value (relative); t mean "
+                "%.3f, sd %.3f; |t| > 3: %lld of %zu (normal: %.1f); |t| > 4: %lld (normal: %.2f)\n",
+                f, kFurnaces[f].albedo, kFurnaces[f].roulette, kFurnaces[f].max_depth, furnace_deviation[f].mean(),
+                furnace_t[f].mean(), std::sqrt(furnace_t[f].variance()), furnace_beyond_3[f], furnace_t[f].count(),
+                normal_3 * count, furnace_beyond_4[f], normal_4 * count);
+  }
   return 0;
 }

@@ -25,7 +25,7 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     const glm::vec3 outward = glm::normalize(ray.at(hit.t_hit) - sphere.center);
     hit.point = sphere.center + sphere.radius * outward;
     hit.point_error = gamma_bound(5) * glm::abs(hit.point) + gamma_bound(5) * glm::abs(sphere.center);
-    hit.geometric_normal = outward;
+    hit.geometric_normal = sphere.faces_inward ? -outward : outward;
     hit.material = sphere.material;
   } else {
     const Triangle& tri = triangles_[index];

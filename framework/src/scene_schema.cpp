@@ -176,12 +176,18 @@ Scene read_scene(const JsonReader& r, const json& root, const std::string& base_
     r.expect_object(object, path);
     const std::string type = r.string(r.require(object, path, "type"), path + "/type");
     if (type == "sphere") {
-      r.check_keys(object, path, {"type", "center", "radius", "material"});
+      r.check_keys(object, path, {"type", "center", "radius", "material", "facing"});
       Sphere sphere;
       sphere.center = r.vector<3>(r.require(object, path, "center"), path + "/center");
       sphere.radius = static_cast<float>(r.number(r.require(object, path, "radius"), path + "/radius", 1e-30, 1e30));
       if (!(sphere.radius > 0)) r.fail(path + "/radius", "expected a radius > 0");
       sphere.material = material_of(object, path);
+      if (object.contains("facing")) {
+        const std::string facing = r.string(object["facing"], path + "/facing");
+        if (facing != "outward" && facing != "inward")
+          r.fail(path + "/facing", "unknown facing '" + facing + "' (expected outward or inward)");
+        sphere.faces_inward = facing == "inward";
+      }
       scene.spheres.push_back(sphere);
     } else if (type == "mesh") {
       r.check_keys(object, path, {"type", "name", "positions", "texcoords", "triangles", "material"});

@@ -23,10 +23,11 @@ ShapeSample sample_triangle(const glm::vec3& p0, const glm::vec3& p1, const glm:
 
 ShapeSample sample_sphere(const Sphere& sphere, glm::vec2 u) {
   ShapeSample sample;
-  sample.normal = sample_uniform_sphere(u);
-  sample.point = sphere.center + sphere.radius * sample.normal;
+  const glm::vec3 outward = sample_uniform_sphere(u);
+  sample.point = sphere.center + sphere.radius * outward;
+  sample.normal = sphere.faces_inward ? -outward : outward;
   // Directions per steradian of the unit sphere are points per unit area of this one over r^2.
-  sample.pdf_area = uniform_sphere_pdf(sample.normal) / (sphere.radius * sphere.radius);
+  sample.pdf_area = uniform_sphere_pdf(outward) / (sphere.radius * sphere.radius);
   return sample;
 }
 

@@ -7,7 +7,8 @@
 //                  a delta light: one direction, no density (is_delta, pdf 1 by convention).
 //   area lights    every triangle of an object and every sphere whose material emits
 //                  (Material::emission, radiance in W / (m^2 sr)) from its front: the side
-//                  its geometric normal points to (a triangle's by winding, a sphere's out);
+//                  its geometric normal points to (a triangle's by winding, a sphere's out,
+//                  or in when it faces inward);
 //                  sampled uniformly by area, the density turned into solid angle:
 //                  pdf_solid_angle = pdf_area * distance^2 / |cos theta_light| (stage 08's
 //                  area_pdf_to_solid_angle).

@@ -50,6 +50,9 @@ struct Sphere {
   glm::vec3 center{0.0f};
   float radius = 1.0f;
   std::uint32_t material = 0;
+  // The side the geometric normal points to, which is the side that emits: outwards (the
+  // default), or inwards for a closed room seen from inside (scenes/furnace.json).
+  bool faces_inward = false;
 };
 
 // An indexed triangle mesh. texcoords, when present, has one entry per position.

@@ -9,7 +9,7 @@ namespace raylab {
 
 struct ShapeSample {
   glm::vec3 point{0.0f};
-  glm::vec3 normal{0.0f};  // unit; by winding for triangles, outward for spheres
+  glm::vec3 normal{0.0f};  // unit; by winding for triangles, the sphere's facing (Sphere::faces_inward)
   float pdf_area = 0.0f;   // density per unit area: 1 / area
 };
 
