@@ -35,7 +35,7 @@ struct SurfaceHit {
   float t_hit = 0.0f;
   glm::vec3 point{0.0f};
   glm::vec3 point_error{0.0f};       // a bound on |computed point - true point| per axis
-  glm::vec3 geometric_normal{0.0f};  // unit length; by winding for triangles, a sphere's by its facing (outward unless faces_inward)
+  glm::vec3 geometric_normal{0.0f};  // unit length; by winding for triangles, Sphere::faces_inward for spheres
   glm::vec2 texcoord{0.0f};
   bool has_texcoord = false;
   std::uint32_t material = 0;
