@@ -145,7 +145,7 @@ void hint_stage08() {
 void expect_furnace(int index) {
   const FurnaceRender& render = furnace_render(index);
   if (render.not_finite) {
-    add_not_finite(render.not_finite, render.pixel_means.size() + render.not_finite);
+    add_not_finite(render.not_finite, render.pixel_count());
     return;
   }
   const testkit::MeanTestResult result =

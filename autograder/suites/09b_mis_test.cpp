@@ -405,7 +405,7 @@ void hint_biased() { add_hint({MessageId::mis_biased, {}}); }
 void expect_furnace(int index) {
   const FurnaceRender render = render_furnace(index, test_seed(200 + static_cast<std::uint64_t>(index)), true);
   if (render.not_finite) {
-    add_not_finite(render.not_finite, render.pixel_means.size() + render.not_finite);
+    add_not_finite(render.not_finite, render.pixel_count());
     return;
   }
   const testkit::MeanTestResult result = furnace_mean_test(render.pixel_means, furnace_exact(kFurnaces[index]), kLevel);

@@ -3,6 +3,7 @@
 #include "grading.h"
 #include "support.h"
 
+#include "raylab/math.h"
 #include "raylab/testkit/statistics.h"
 
 #include <algorithm>
@@ -35,7 +36,7 @@ FurnaceRender render_furnace(int index, std::uint64_t seed, bool mis) {
   const PathRenderResult result = path_render("scenes/furnace.json", request);
   FurnaceRender render;
   for (const glm::vec3& v : result.mean.pixels()) {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) ++render.not_finite;
+    if (!is_finite(v)) ++render.not_finite;
     else render.pixel_means.push_back(v.x);
   }
   return render;
@@ -136,7 +137,7 @@ std::optional<RegionTest> expect_cornell_matches_reference(const std::string& st
   const PathRenderResult render = path_render(scene, request);
   std::size_t not_finite = 0;
   for (const glm::vec3& v : render.mean.pixels())
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) ++not_finite;
+    if (!is_finite(v)) ++not_finite;
   if (not_finite) {
     add_not_finite(not_finite, render.mean.pixels().size());
     return std::nullopt;

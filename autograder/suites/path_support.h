@@ -57,6 +57,7 @@ double furnace_exact(const Furnace& furnace);
 struct FurnaceRender {
   std::vector<double> pixel_means;
   std::size_t not_finite = 0;
+  std::size_t pixel_count() const { return pixel_means.size() + not_finite; }
 };
 FurnaceRender render_furnace(int index, std::uint64_t seed, bool mis);
 // The t-test of a furnace's pixel means against `expected` at `level`, forgiving a deviation of
