@@ -18,6 +18,7 @@
 // ray by ray against an oracle (brute force on the bunny, Embree or the other BVH otherwise).
 #include "raylab/bounds.h"
 #include "raylab/camera.h"
+#include "raylab/integrator.h"
 #include "raylab/mesh_generator.h"
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
@@ -47,6 +48,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -137,13 +139,18 @@ std::vector<Bounds3> triangle_boxes(const TestMesh& mesh) {
 }
 
 struct ReferenceBvh {
-  std::string name;  // "median" or "sah"
+  std::string name;  // "median" or "sah"; "median-calls", "sah-calls": the same tree, tested by calls
   Bvh bvh;
   std::vector<glm::vec3> corners;  // in leaf order; bvh.primitive_order is the identity
+  // The same triangles for the reference traversal's inlined test (PrimitiveIntersector::
+  // triangles), as the renderer hands them over; empty: a call of test_triangle per triangle,
+  // as a student's traversal and every grader run it.
+  std::vector<TriangleEdges> edges;
+  bool tested_by_calls() const { return edges.empty(); }
 };
 
 ReferenceBvh build_reference(const TestMesh& mesh, bool sah) {
-  ReferenceBvh result{sah ? "sah" : "median", {}, {}};
+  ReferenceBvh result{sah ? "sah" : "median", {}, {}, {}};
   const std::vector<Bounds3> boxes = triangle_boxes(mesh);
   result.bvh = sah ? build_bvh_sah(boxes, kLeafSize) : build_bvh(boxes, kLeafSize);
   result.corners.reserve(mesh.corners.size());
@@ -151,14 +158,26 @@ ReferenceBvh build_reference(const TestMesh& mesh, bool sah) {
     for (int k = 0; k < 3; ++k) result.corners.push_back(mesh.corners[3 * std::size_t(primitive) + k]);
     primitive = static_cast<std::uint32_t>(&primitive - result.bvh.primitive_order.data());
   }
+  for (std::size_t i = 0; i < result.corners.size(); i += 3)
+    result.edges.push_back({result.corners[i], result.corners[i + 1] - result.corners[i],
+                            result.corners[i + 2] - result.corners[i]});
   return result;
+}
+
+// The same tree, its triangles tested by a call each (the "-calls" rows).
+ReferenceBvh tested_by_calls(const ReferenceBvh& tree) {
+  ReferenceBvh copy = tree;
+  copy.name += "-calls";
+  copy.edges.clear();
+  return copy;
 }
 
 // Traces rays[begin, end) (every `stride`-th); writes t (infinity for a miss) when t_out.
 void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std::size_t begin,
                      std::size_t end, bool any_hit, float* t_out, BvhTraversalStats& stats) {
   TriangleContext context{tree.corners.data(), {}};
-  const PrimitiveIntersector intersector{&test_triangle, &context};
+  PrimitiveIntersector intersector{&test_triangle, &context};
+  if (!tree.tested_by_calls()) intersector.triangles = tree.edges.data();
   for (std::size_t i = begin; i < end; ++i) {
     // Not const: DoNotOptimize(const T&) is deprecated since Google Benchmark 1.8.
     std::optional<BvhHit> hit = intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
@@ -437,17 +456,21 @@ std::vector<std::unique_ptr<Fixture>> make_fixtures(std::uint32_t large_triangle
   for (auto& f : fixtures) {
     f->ray_sets.push_back(primary_rays(f->mesh.bounds));
     f->ray_sets.push_back(random_rays(f->mesh.bounds, 20260101));
-    f->trees.push_back(build_reference(f->mesh, false));
-    f->trees.push_back(build_reference(f->mesh, true));
+    for (bool sah : {false, true}) {
+      f->trees.push_back(build_reference(f->mesh, sah));
+      f->trees.push_back(tested_by_calls(f->trees.back()));
+    }
   }
   return fixtures;
 }
 
 void print_trees(const Fixture& f) {
-  for (const ReferenceBvh& tree : f.trees)
+  for (const ReferenceBvh& tree : f.trees) {
+    if (tree.tested_by_calls()) continue;  // the tree printed just before
     std::printf("  %-12s %-7s %9zu triangles  %9zu nodes  depth %2d  SAH cost %8.2f\n",
                 f.mesh.name.c_str(), tree.name.c_str(), f.mesh.triangle_count(), tree.bvh.nodes.size(),
                 bvh_depth(tree.bvh), bvh_sah_cost(tree.bvh));
+  }
 }
 
 // What the BVH answers are checked against: brute force on the small mesh, else Embree, else
@@ -513,10 +536,20 @@ void check_and_count(const Fixture& f, const Embree* embree, std::vector<TraceRo
   for (const RaySet& set : f.ray_sets)
     for (bool any_hit : {false, true}) {
       Oracle oracle = trace_oracle(f, set, any_hit, embree, rows);
+      std::vector<float> inline_t;  // the tree before a "-calls" tree: the same tree, inlined tests
       for (const ReferenceBvh& tree : f.trees) {
         std::vector<float> t(set.rays.size(), kInfinity);
         BvhTraversalStats stats;
         trace_reference(tree, set.rays, 0, set.rays.size(), any_hit, t.data(), stats);
+        if (tree.tested_by_calls()) {
+          // The inlined test must give the stage function's bits: compared exactly.
+          std::size_t differ = 0;
+          for (std::size_t i = 0; i < t.size(); ++i) differ += t[i] != inline_t[i] ? 1 : 0;
+          std::printf("  %-12s %-12s %-7s %-7s vs inlined tests: %zu of %zu rays differ%s\n", f.mesh.name.c_str(),
+                      tree.name.c_str(), set.name.c_str(), any_hit ? "any" : "closest", differ, t.size(),
+                      differ == 0 ? "" : " <-- CHECK");
+        }
+        inline_t = t;
         const auto n = static_cast<double>(set.rays.size());
         rows.push_back({f.mesh.name, set.name, any_hit ? "any" : "closest", tree.name, 1, set.rays.size(),
                         static_cast<double>(stats.nodes_visited) / n, static_cast<double>(stats.primitives_tested) / n,
@@ -525,13 +558,14 @@ void check_and_count(const Fixture& f, const Embree* embree, std::vector<TraceRo
           oracle = {f.trees.front().name + " BVH", t, 1};
           if (&tree == &f.trees.front()) continue;
         }
-        report_disagreements(f, tree, set, any_hit, t, oracle);
+        if (!tree.tested_by_calls()) report_disagreements(f, tree, set, any_hit, t, oracle);
       }
     }
 }
 
 void check_invariants(const Fixture& f) {
   for (const ReferenceBvh& tree : f.trees) {
+    if (tree.tested_by_calls()) continue;  // the tree checked just before
     // The tree's primitives are now in leaf order: their boxes in that order.
     std::vector<Bounds3> boxes(tree.corners.size() / 3);
     for (std::size_t i = 0; i < boxes.size(); ++i)
@@ -660,28 +694,34 @@ void print_trace_summary(const std::vector<TraceRow>& rows, int threads, const S
 }
 
 // The whole renderer (raylab-reference render, without writing the image) on the course's
-// scenes, on 1 and 2 threads: rays per second as the renderer counts them, the fastest of
-// three renders, and the 2-thread speed-up measured in the same run.
+// scenes (Whitted, the bunny, the Cornell box path traced at 1 sample per pixel), on 1 and 2
+// threads, and on 1 thread with a call per triangle: rays per second as the renderer counts
+// them, the fastest of three renders, and the speed-ups measured in the same run.
 void print_render_summary() {
-  std::printf("\nRenderer (raylab-reference render, scene size, no image written; fastest of 3):\n");
-  std::printf("  %-8s %-10s %8s %9s %10s %9s\n", "scene", "size", "threads", "seconds", "Mrays/s", "speed-up");
-  for (const char* name : {"whitted", "bunny"}) {
+  std::printf("\nRenderer (raylab-reference render, scene size and integrator, 1 sample per pixel, no image written;\n"
+              "fastest of 3; speed-up: against 1 thread with the triangles tested inlined; \"calls\": a call per\n"
+              "triangle, as a student's traversal):\n");
+  std::printf("  %-8s %-10s %8s %-9s %9s %10s %9s\n", "scene", "size", "threads", "triangles", "seconds", "Mrays/s",
+              "speed-up");
+  for (const char* name : {"whitted", "bunny", "cornell"}) {
     const Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/" + name + ".json");
     double one_thread_seconds = 0.0;
-    for (int threads : {1, 2}) {
+    for (const auto& [threads, inlined] : {std::pair{1, true}, std::pair{2, true}, std::pair{1, false}}) {
       RenderSettings settings;
+      settings.integrator = integrator_from_name(scene.integrator).value_or(IntegratorKind::Whitted);  // cornell: path, 1 spp
       settings.max_depth = scene.max_depth;
       settings.threads = threads;
+      settings.tracing.reference_stages = inlined;  // this program links the reference's stages
       RenderStats best;
       for (int run = 0; run < 3; ++run) {
         RenderStats stats;
         benchmark::DoNotOptimize(render(scene, settings, &stats));
         if (run == 0 || stats.seconds < best.seconds) best = stats;
       }
-      if (threads == 1) one_thread_seconds = best.seconds;
-      std::printf("  %-8s %4dx%-5d %8d %9.3f %10.2f %8.2fx\n", name, scene.camera.width, scene.camera.height,
-                  threads, best.seconds, static_cast<double>(best.work.rays()) / best.seconds * 1e-6,
-                  one_thread_seconds / best.seconds);
+      if (threads == 1 && inlined) one_thread_seconds = best.seconds;
+      std::printf("  %-8s %4dx%-5d %8d %-9s %9.3f %10.2f %8.2fx\n", name, scene.camera.width, scene.camera.height,
+                  threads, inlined ? "inlined" : "calls", best.seconds,
+                  static_cast<double>(best.work.rays()) / best.seconds * 1e-6, one_thread_seconds / best.seconds);
     }
   }
 }

@@ -247,6 +247,7 @@ int main(int argc, char** argv) {
 
     RenderSettings settings;
     settings.integrator = IntegratorKind::Path;
+    settings.tracing.reference_stages = true;  // this program links solutions/, as raylab-reference
     settings.samples_per_pixel = reference_spp;
     settings.max_depth = kMaxDepth;
     settings.roulette_probability = kRoulette;
@@ -270,7 +271,9 @@ int main(int argc, char** argv) {
                 reference_stats.seconds, reference_stats.threads, shown, reference.mean.pixels().size(),
                 std::sqrt(reference_variance));
 
-    const SceneGeometry geometry(scene);
+    TracingFunctions reference_tracing;
+    reference_tracing.reference_stages = true;  // as raylab-reference
+    const SceneGeometry geometry(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, reference_tracing);
     const RenderContext context(scene, geometry, kMaxDepth, Skips{}, kRoulette);
     std::filesystem::create_directories(output);
     std::ofstream csv(output + "/path_error.csv");

@@ -35,7 +35,9 @@ struct Timed {
   double seconds = 0.0;
 };
 
-Timed render_best_of(const Scene& scene, const RenderSettings& settings, int repetitions) {
+// As raylab-reference renders: this program links solutions/ (TracingFunctions::reference_stages).
+Timed render_best_of(const Scene& scene, RenderSettings settings, int repetitions) {
+  settings.tracing.reference_stages = true;
   Timed best;
   best.seconds = 1e30;
   for (int i = 0; i < repetitions; ++i) {

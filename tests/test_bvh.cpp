@@ -1,6 +1,8 @@
 // The reference BVH (solutions/05_bvh) beyond what the autograder's small meshes reach: trees
-// of 64k primitives and more, whose top subtrees the reference builds on several threads, and
-// the node array's cache-line layout that raylab/stages/05_bvh.h promises.
+// of 64k primitives and more, whose top subtrees the reference builds on several threads, the
+// node array's cache-line layout that raylab/stages/05_bvh.h promises, and the reference
+// traversal's inlined triangle test (PrimitiveIntersector::triangles), which must give the
+// stage-03 calls' answers bit for bit, on adversarial rays too.
 #include "raylab/mesh_generator.h"
 #include "raylab/stages/03_triangle.h"
 #include "raylab/bvh_tools.h"
@@ -11,7 +13,10 @@
 
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <random>
+#include <string>
+#include <vector>
 
 namespace raylab {
 namespace {
@@ -77,6 +82,95 @@ TEST(ReferenceBvh, LargeSahTreeIsSoundAndFindsTheClosestHits) {
 
 TEST(ReferenceBvh, LargeMedianTreeIsSoundAndFindsTheClosestHits) {
   expect_sound_tree(build_bvh(large_mesh().boxes, kLeafSize), "build_bvh");
+}
+
+// Rays that a slightly different triangle test would answer differently: through vertices and
+// edge midpoints (shared by two triangles), in a triangle's plane, stopping exactly at a hit,
+// starting on a triangle, along an axis (zero direction components), and broken ones (NaN,
+// zero direction, infinite origin).
+std::vector<Ray> adversarial_rays(const Mesh& mesh) {
+  std::vector<Ray> rays;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
+  const auto triangle_count = static_cast<std::uint32_t>(mesh.boxes.size());
+  for (int r = 0; r < 400; ++r) {
+    const std::uint32_t t = static_cast<std::uint32_t>(random() % triangle_count);
+    const glm::vec3 p0 = mesh.corner(t, 0), p1 = mesh.corner(t, 1), p2 = mesh.corner(t, 2);
+    const glm::vec3 outside = glm::normalize(glm::vec3(uniform(random), uniform(random), uniform(random))) * 3.0f;
+    Ray ray;
+    ray.origin = outside;
+    switch (r % 8) {
+      case 0: ray.direction = p0 - outside; break;                    // a vertex, not normalised
+      case 1: ray.direction = 0.5f * (p0 + p1) - outside; break;      // an edge's midpoint
+      case 2: ray.origin = p0 - (p1 - p0); ray.direction = p1 - p0; break;  // along an edge
+      case 3: ray.origin = (p0 + p1 + p2) / 3.0f; ray.direction = glm::normalize(outside); break;  // from a triangle
+      case 4: ray.direction = glm::vec3(0.0f, 0.0f, -1.0f); ray.origin = glm::vec3(p0.x, p0.y, 3.0f); break;
+      case 5: ray.direction = (p0 + p1 + p2) / 3.0f - outside; break;  // then stopped exactly at its hit
+      case 6: ray.direction = glm::vec3(std::numeric_limits<float>::quiet_NaN(), 1.0f, 0.0f); break;
+      default: ray.direction = r % 16 == 7 ? glm::vec3(0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+               if (r % 16 != 7) ray.origin = glm::vec3(-std::numeric_limits<float>::infinity(), 0.0f, 0.0f);
+    }
+    rays.push_back(ray);
+  }
+  return rays;
+}
+
+std::string text_of(const std::optional<BvhHit>& hit) {
+  if (!hit) return "no hit";
+  return "t " + std::to_string(hit->t_hit) + " on " + std::to_string(hit->primitive);
+}
+
+TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
+  // The renderer hands the reference traversal its triangles (TriangleEdges) so that it tests
+  // them inlined; every answer, t to the bit, and every count must be those of calling stage 03.
+  const Mesh& mesh = large_mesh();
+  const testkit::IndexedTriangles triangles{&mesh.triangles.positions, &mesh.triangles.indices, &intersect_ray_triangle};
+  const PrimitiveIntersector by_calls = testkit::intersector_over(triangles);
+  std::vector<TriangleEdges> edges;
+  for (std::uint32_t t = 0; t < mesh.boxes.size(); ++t)
+    edges.push_back({mesh.corner(t, 0), mesh.corner(t, 1) - mesh.corner(t, 0), mesh.corner(t, 2) - mesh.corner(t, 0)});
+  PrimitiveIntersector inlined = by_calls;
+  inlined.triangles = edges.data();
+
+  std::vector<Ray> rays = adversarial_rays(mesh);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
+  for (int r = 0; r < 2000; ++r) {  // and ordinary ones, from inside and outside
+    Ray ray;
+    ray.origin = glm::vec3(uniform(random), uniform(random), uniform(random)) * (r % 2 ? 0.3f : 3.0f);
+    ray.direction = glm::vec3(uniform(random), uniform(random), uniform(random));
+    rays.push_back(ray);
+  }
+  int hits = 0, failures = 0;
+  for (const Bvh& bvh : {build_bvh(mesh.boxes, kLeafSize), build_bvh_sah(mesh.boxes, kLeafSize)}) {
+    for (std::size_t r = 0; r < rays.size() && failures < 5; ++r) {
+      Ray ray = rays[r];
+      if (r < 400 && r % 8 == 5) {  // stop exactly at the first hit: it must be excluded by both
+        BvhTraversalStats ignored;
+        if (const std::optional<BvhHit> first = intersect_bvh(bvh, ray, by_calls, false, ignored)) ray.t_max = first->t_hit;
+      }
+      for (bool any_hit : {false, true}) {
+        BvhTraversalStats calls_stats, inlined_stats;
+        const std::optional<BvhHit> expected = intersect_bvh(bvh, ray, by_calls, any_hit, calls_stats);
+        const std::optional<BvhHit> got = intersect_bvh(bvh, ray, inlined, any_hit, inlined_stats);
+        hits += expected ? 1 : 0;
+        const bool same = got.has_value() == expected.has_value() &&
+                          (!got || (std::memcmp(&got->t_hit, &expected->t_hit, sizeof(float)) == 0 &&
+                                    got->primitive == expected->primitive));
+        const bool same_work = calls_stats.nodes_visited == inlined_stats.nodes_visited &&
+                               calls_stats.primitives_tested == inlined_stats.primitives_tested;
+        if (!same || !same_work) {
+          ++failures;
+          ADD_FAILURE() << "ray " << r << " (" << ray << "), " << (any_hit ? "any" : "closest") << " hit: inlined "
+                        << text_of(got) << " after " << inlined_stats.nodes_visited << " nodes and "
+                        << inlined_stats.primitives_tested << " triangles; by calls " << text_of(expected) << " after "
+                        << calls_stats.nodes_visited << " nodes and " << calls_stats.primitives_tested << " triangles";
+        }
+      }
+    }
+  }
+  // The comparison proves little unless many rays hit: most of the ordinary ones do.
+  EXPECT_GT(hits, 2000) << "queries that hit, of " << 4 * rays.size();
 }
 
 TEST(ReferenceBvh, MultiThreadedBuildIsDeterministic) {

@@ -2,6 +2,7 @@
 // background, hard shadows without light leaks, and no shadow acne at grazing light.
 // Scenes are written as JSON in the test and read through parse_scene, like any scene file.
 #include "raylab/geometry.h"
+#include "raylab/integrator.h"
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
 #include "raylab/stages/01_camera_rays.h"
@@ -56,6 +57,45 @@ TEST(Render, OneAndTwoThreadsGiveIdenticalPixels) {
   EXPECT_GT(not_background, 32 * 24 / 20)
       << "pixels other than the background, out of " << 32 * 24 << " (the spheres and floor "
          "cover about a tenth of the picture)";
+}
+
+// Renders `scene_file` at 64 x 48 with and without TracingFunctions::reference_stages and
+// expects the same pixels, bit for bit.
+void expect_same_image_with_reference_stages(const std::string& scene_file, int samples_per_pixel) {
+  Scene scene = load_scene(source_path(scene_file));
+  scene.camera.width = 64;
+  scene.camera.height = 48;
+  RenderSettings by_calls;
+  by_calls.integrator = *integrator_from_name(scene.integrator);
+  by_calls.max_depth = scene.max_depth;
+  by_calls.samples_per_pixel = samples_per_pixel;
+  RenderSettings inlined = by_calls;
+  inlined.tracing.reference_stages = true;
+  // The bunny has a tree, and so do the Cornell box's two boxes (the walls, of two triangles
+  // each, are tested one triangle after the other, by calls, either way).
+  const SceneGeometry geometry(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, inlined.tracing);
+  ASSERT_GT(geometry.bvh_count(), 0u) << scene_file;
+  const Image expected = render(scene, by_calls);
+  const Image got = render(scene, inlined);
+  int differing = 0;
+  for (int y = 0; y < expected.height(); ++y)
+    for (int x = 0; x < expected.width(); ++x)
+      if (std::memcmp(&got.at(x, y), &expected.at(x, y), sizeof(glm::vec3)) != 0 && ++differing <= 5)
+        ADD_FAILURE() << scene_file << ", pixel (" << x << ", " << y << "): inlined " << got.at(x, y)
+                      << ", by calls " << expected.at(x, y);
+  EXPECT_EQ(differing, 0) << scene_file;
+  int not_background = 0;
+  for (const glm::vec3& pixel : got.pixels()) not_background += pixel != scene.background;
+  EXPECT_GT(not_background, 64 * 48 / 10) << scene_file << ": pixels other than the background";
+}
+
+TEST(Render, ReferenceStagesInlinedTrianglesGiveTheSameImage) {
+  // raylab-reference lets the reference traversal test a mesh's triangles itself, inlined
+  // (TracingFunctions::reference_stages); the picture must be the one of a call per triangle,
+  // bit for bit: camera rays, shadow rays (any hit) and reflections off the bunny's BVH, and
+  // the Cornell box's paths.
+  expect_same_image_with_reference_stages("scenes/bunny.json", 1);
+  expect_same_image_with_reference_stages("scenes/cornell.json", 4);
 }
 
 TEST(Render, EmptySceneIsAllBackground) {

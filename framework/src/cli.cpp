@@ -36,6 +36,7 @@ struct RenderOptions {
   std::string variance_path;  // empty: no variance image
   bool quiet = false;
   bool watertight = false;
+  bool reference_stages = false;  // the program links solutions/ (LinkedStages::Reference)
 };
 
 int run_render(const RenderOptions& options) {
@@ -63,6 +64,7 @@ int run_render(const RenderOptions& options) {
   settings.roulette_probability = options.roulette;
   settings.threads = options.threads;
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
+  settings.tracing.reference_stages = options.reference_stages;
   settings.show_progress = !options.quiet && RAYLAB_ISATTY(stderr);
   RenderStats stats;
   const RenderOutput output = render_with_variance(scene, settings, &stats);
@@ -79,10 +81,11 @@ int run_render(const RenderOptions& options) {
 
 }  // namespace
 
-int run_cli(int argc, char** argv) {
+int run_cli(int argc, char** argv, LinkedStages stages) {
   CLI::App app{"raylab: a step-by-step ray tracer (course kit)"};
   app.require_subcommand(1);
   RenderOptions options;
+  options.reference_stages = stages == LinkedStages::Reference;
   CLI::App* render_command = app.add_subcommand("render", "Render a scene file to an image");
   render_command->add_option("scene", options.scene_path, "Scene file (JSON), e.g. scenes/whitted.json")->required();
   render_command->add_option("-o,--output", options.output_path, "Output image: .png, .exr or .ppm")->required();

@@ -13,6 +13,14 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
   Query query{this, &record, /*any_hit=*/false};
   const std::optional<float> t_hit = intersect_objects(ray, query);
   if (!t_hit || record.kind == Kind::None) return std::nullopt;
+  if (record.triangle_hit_pending) {
+    // Found by the reference traversal's inlined test, which keeps no barycentrics: the same
+    // test through the stage function gives them (and the same t).
+    const Triangle& tri = triangles_[record.index];
+    const std::optional<TriangleHit> details = intersect_triangle_(ray, tri.p0, tri.p1, tri.p2);
+    if (!details) return std::nullopt;
+    record.triangle_hit = *details;
+  }
   const Kind kind = record.kind;
   const std::size_t index = record.index;
   const TriangleHit& triangle_hit = record.triangle_hit;

@@ -84,9 +84,7 @@ std::optional<float> SceneGeometry::intersect_every_object(const Ray& ray, Query
   for (std::uint32_t i = 0; i < sphere_count; ++i) {
     if (const std::optional<float> t = intersect_sphere_(search, spheres[i].center, spheres[i].radius)) {
       search.t_max = *t;
-      best.kind = Kind::Sphere;
-      best.index = i;
-      best.t_hit = *t;
+      best.set_sphere(i, *t);
     }
   }
   for (std::size_t m = 0; m < mesh_count; ++m) {
@@ -104,10 +102,7 @@ std::optional<float> SceneGeometry::intersect_every_object(const Ray& ray, Query
       const Triangle& tri = triangles[i];
       if (const std::optional<TriangleHit> hit = intersect_triangle_(search, tri.p0, tri.p1, tri.p2)) {
         search.t_max = hit->t_hit;
-        best.kind = Kind::Triangle;
-        best.index = i;
-        best.t_hit = hit->t_hit;
-        best.triangle_hit = *hit;
+        best.set_triangle(i, *hit);
       }
     }
   }

@@ -29,12 +29,7 @@ std::optional<float> SceneGeometry::test_triangle(void* context, const Ray& ray,
   const Triangle& tri = query.mesh_triangles[triangle];
   const std::optional<TriangleHit> hit = query.geometry->intersect_triangle_(ray, tri.p0, tri.p1, tri.p2);
   if (!hit) return std::nullopt;
-  if (hit->t_hit < query.record->t_hit) {
-    query.record->kind = Kind::Triangle;
-    query.record->index = query.mesh_first_triangle + triangle;
-    query.record->t_hit = hit->t_hit;
-    query.record->triangle_hit = *hit;
-  }
+  if (hit->t_hit < query.record->t_hit) query.record->set_triangle(query.mesh_first_triangle + triangle, *hit);
   return hit->t_hit;
 }
 
@@ -48,7 +43,8 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
   query.mesh_first_triangle = mesh.first_triangle;
   if (!mesh.bvh.nodes.empty()) {
     BvhTraversalStats stats;
-    const PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
+    PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
+    if (hand_triangles_to_traversal_) intersector.triangles = triangle_edges_.data() + mesh.first_triangle;
     if (query.any_hit) {
       const std::optional<BvhHit> hit = intersect_bvh(mesh.bvh, ray, intersector, true, stats);
       return hit ? std::optional<float>(hit->t_hit) : std::nullopt;
@@ -62,15 +58,17 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     query.record = query_record;
     if (!hit || hit->primitive >= mesh.triangle_count) return std::nullopt;
     const std::uint32_t returned = mesh.first_triangle + hit->primitive;
-    if (mesh_record.kind != Kind::Triangle || mesh_record.index != returned || mesh_record.t_hit != hit->t_hit) {
+    if (hand_triangles_to_traversal_) {
+      // The reference traversal tested the triangles itself, inlined: the details of the hit
+      // are computed at the end, if it is still the closest (geometry.cpp).
+      mesh_record.set_triangle_pending(returned, hit->t_hit);
+    } else if (mesh_record.kind != Kind::Triangle || mesh_record.index != returned || mesh_record.t_hit != hit->t_hit) {
       // The traversal returned another triangle than the closest one reported to the test
       // (a tie, or a traversal that is wrong): shade the one it returned.
       const Triangle& tri = triangles_[returned];
       const std::optional<TriangleHit> details = intersect_triangle_(ray, tri.p0, tri.p1, tri.p2);
       if (!details) return std::nullopt;
-      mesh_record.kind = Kind::Triangle;
-      mesh_record.index = returned;
-      mesh_record.triangle_hit = *details;
+      mesh_record.set_triangle(returned, *details);
     }
     mesh_record.t_hit = hit->t_hit;
     if (hit->t_hit < query_record->t_hit) *query_record = mesh_record;
@@ -92,11 +90,7 @@ std::optional<float> SceneGeometry::intersect_object(std::uint32_t object, const
   if (object < spheres_.size()) {
     const Sphere& sphere = spheres_[object];
     const std::optional<float> t = intersect_sphere_(ray, sphere.center, sphere.radius);
-    if (t && *t < query.record->t_hit) {
-      query.record->kind = Kind::Sphere;
-      query.record->index = object;
-      query.record->t_hit = *t;
-    }
+    if (t && *t < query.record->t_hit) query.record->set_sphere(object, *t);
     return t;
   }
   return intersect_mesh(meshes_[object - spheres_.size()], ray, query);

@@ -6,10 +6,13 @@
 // primitive), the SAH bins all three axes in one pass and gets the children's bounds from its
 // partition pass, trees of 64k primitives and more build their top subtrees on several
 // threads (the same tree bit for bit), and the traversal inlines the reference's own box test
-// (solutions/04_box/box_slabs.h) and tests both children at their parent.
+// (solutions/04_box/box_slabs.h) and tests both children at their parent, and tests the
+// renderer's triangles with the reference's own stage-03 test inlined
+// (solutions/03_triangle/moller_trumbore.h; PrimitiveIntersector::triangles).
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
 
+#include "../03_triangle/moller_trumbore.h"
 #include "../04_box/box_slabs.h"
 
 #include <algorithm>
@@ -305,16 +308,20 @@ Bvh build_bvh_sah(const std::vector<Bounds3>& primitive_bounds, int max_leaf_siz
   return Builder(primitive_bounds, max_leaf_size).build(/*use_sah=*/true);
 }
 
+namespace {
+
 // One loop for both queries (any_hit is a flag, not a second copy of the loop). Both children
 // of an inner node are tested at once, at the parent (they share a cache line), with the box
 // test inlined (box_slabs.h); the nearer by entry distance is visited next and the farther
 // waits on a fixed stack with its entry distance, so that it is skipped without a second box
 // test if a closer hit is found meanwhile. The counts are the contract's: one node visited per
-// box tested, one primitive tested per intersector call.
-std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray,
-                                    const PrimitiveIntersector& intersector, bool any_hit,
-                                    BvhTraversalStats& stats) {
-  if (bvh.nodes.empty()) return std::nullopt;
+// box tested, one primitive tested per primitive test.
+//
+// test_primitive(search, primitive) returns the hit's t or nullopt, as intersector.test does;
+// a template parameter, so that the reference's triangle test is inlined into the leaf loop.
+template <typename TestPrimitive>
+std::optional<BvhHit> traverse(const Bvh& bvh, const Ray& ray, bool any_hit, BvhTraversalStats& stats,
+                               const TestPrimitive& test_primitive) {
   const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
   const glm::vec3 origin = ray.origin;
   const BvhNode* nodes = bvh.nodes.data();
@@ -359,7 +366,7 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray,
       for (std::uint32_t i = node.first_index; i < leaf_end; ++i) {
         const std::uint32_t primitive = primitive_order[i];
         ++primitives_tested;
-        if (const std::optional<float> t = intersector.test(intersector.context, search, primitive)) {
+        if (const std::optional<float> t = test_primitive(search, primitive)) {
           search.t_max = *t;
           closest = BvhHit{*t, primitive};
           if (any_hit) break;
@@ -381,6 +388,30 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray,
   stats.nodes_visited += nodes_visited;
   stats.primitives_tested += primitives_tested;
   return closest;
+}
+
+}  // namespace
+
+// The renderer's meshes come with their triangles (PrimitiveIntersector::triangles): then
+// the reference's own Moller-Trumbore (moller_trumbore.h, the same source as its stage 03)
+// runs inlined in the leaf loop, instead of two indirect calls per triangle (intersector.test
+// into the framework, the framework into stage 03). Same hits, same bits.
+std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray,
+                                    const PrimitiveIntersector& intersector, bool any_hit,
+                                    BvhTraversalStats& stats) {
+  if (bvh.nodes.empty()) return std::nullopt;
+  if (const TriangleEdges* triangles = intersector.triangles) {
+    return traverse(bvh, ray, any_hit, stats, [triangles](const Ray& search, std::uint32_t primitive) {
+      const TriangleEdges& triangle = triangles[primitive];
+      TriangleHit hit;
+      return reference::moller_trumbore(search, triangle.p0, triangle.edge_01, triangle.edge_02, hit)
+                 ? std::optional<float>(hit.t_hit)
+                 : std::nullopt;
+    });
+  }
+  return traverse(bvh, ray, any_hit, stats, [&intersector](const Ray& search, std::uint32_t primitive) {
+    return intersector.test(intersector.context, search, primitive);
+  });
 }
 
 }  // namespace raylab

@@ -24,6 +24,7 @@ struct MisVariant {
   bool half_weights = false;            // both samples weighted 1/2: unbiased, but not the power heuristic
   bool textbook_heuristic = false;      // power_heuristic: pdf_f^2 / (pdf_f^2 + pdf_g^2), counts ignored, no guard
   bool counts_outside_square = false;   // power_heuristic: n_f pdf_f^2 / (...), no guard for an infinite pdf
+  bool other_weight = false;            // power_heuristic: (n_g pdf_g)^2 / (...), the other strategy's weight
   // Correct variants.
   bool ratio_form = false;              // power_heuristic as 1 / (1 + (g / f)^2); light densities summed here
 };
@@ -142,6 +143,12 @@ float power_heuristic(int count_f, float pdf_f, int count_g, float pdf_g) {
     return n_f * pdf_f * pdf_f / (n_f * pdf_f * pdf_f + n_g * pdf_g * pdf_g);
   }
   if (v.half_weights) return submission::heuristic(submission::MisVariant{}, n_f * pdf_f, n_g * pdf_g);
+  if (v.other_weight) {
+    const float f = n_f * pdf_f, g = n_g * pdf_g;
+    if (std::isinf(f)) return 1.0f;
+    if (!(f > 0.0f)) return 0.0f;
+    return g * g / (f * f + g * g);
+  }
   return submission::heuristic(v, n_f * pdf_f, n_g * pdf_g);
 }
 glm::vec3 path_radiance_mis(const RenderContext& context, const Ray& camera_ray, Sampler& sampler) {

@@ -3,7 +3,12 @@
 
 namespace raylab {
 
+// Which stage library the program links: raylab links assignments/, raylab-reference links
+// solutions/. Only a program of the reference's stages lets the renderer use their fast
+// paths (TracingFunctions::reference_stages in geometry.h).
+enum class LinkedStages { Student, Reference };
+
 // Runs `raylab render ...` etc. Returns the exit status (ExitStatus in error.h); never throws.
-int run_cli(int argc, char** argv);
+int run_cli(int argc, char** argv, LinkedStages stages = LinkedStages::Student);
 
 }  // namespace raylab

@@ -65,6 +65,12 @@ struct TracingFunctions {
   std::optional<float> (*sphere)(const Ray& ray, const glm::vec3& center, float radius) = nullptr;
   std::optional<TriangleHit> (*triangle)(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1,
                                          const glm::vec3& p2) = nullptr;
+  // Set only by programs whose stages are all the reference's (raylab-reference, bench/):
+  // then, with stage 03's Moller-Trumbore test, the geometry hands the traversal its meshes'
+  // triangles (PrimitiveIntersector::triangles), which the reference traversal tests inlined
+  // instead of a call per triangle: the same hits, faster. Never in a student's program or a
+  // grader, whose stage 03 may be another than the reference's.
+  bool reference_stages = false;
   bool replaces_primitive_tests() const { return sphere != nullptr || triangle != nullptr; }
 };
 
@@ -113,6 +119,29 @@ class SceneGeometry {
     std::uint32_t index = 0;  // into spheres_ or triangles_
     float t_hit = kInfinity;  // kInfinity while kind == Kind::None
     TriangleHit triangle_hit;
+    // A triangle found by the reference traversal's inlined test: triangle_hit is not filled
+    // yet; intersect() computes it once, for the closest hit only.
+    bool triangle_hit_pending = false;
+
+    void set_sphere(std::uint32_t sphere, float t) {
+      kind = Kind::Sphere;
+      index = sphere;
+      t_hit = t;
+      triangle_hit_pending = false;
+    }
+    void set_triangle(std::uint32_t triangle, const TriangleHit& hit) {
+      kind = Kind::Triangle;
+      index = triangle;
+      t_hit = hit.t_hit;
+      triangle_hit = hit;
+      triangle_hit_pending = false;
+    }
+    void set_triangle_pending(std::uint32_t triangle, float t) {
+      kind = Kind::Triangle;
+      index = triangle;
+      t_hit = t;
+      triangle_hit_pending = true;
+    }
   };
   struct Query;
 
@@ -132,6 +161,10 @@ class SceneGeometry {
   const Scene& scene_;
   std::vector<Sphere> spheres_;
   std::vector<Triangle> triangles_;
+  // triangles_ as TriangleEdges (same order), for the reference traversal; empty unless
+  // TracingFunctions::reference_stages and the Moller-Trumbore test.
+  std::vector<TriangleEdges> triangle_edges_;
+  bool hand_triangles_to_traversal_ = false;
   std::vector<MeshPart> meshes_;
   Bvh objects_bvh_;  // over spheres_ then meshes_; empty: test every object
   // The stub stage ("05_bvh" or "04_box") that made us fall back to testing every primitive;

@@ -60,6 +60,12 @@ Bvh build_bvh_sah(const std::vector<Bounds3>& primitive_bounds, int max_leaf_siz
 
 // ---- Traversal --------------------------------------------------------------------------
 
+// One triangle as the reference's traversal tests it: its first vertex and its two edges from
+// there, p1 - p0 and p2 - p0.
+struct TriangleEdges {
+  glm::vec3 p0{0.0f}, edge_01{0.0f}, edge_02{0.0f};
+};
+
 // How the traversal tests one primitive: a plain function pointer and the caller's context.
 //
 // Why this shape: the traversal is a stage function, compiled in a separate library from the
@@ -80,7 +86,15 @@ struct PrimitiveIntersector {
   using TestFunction = std::optional<float> (*)(void* context, const Ray& ray, std::uint32_t primitive);
   TestFunction test = nullptr;
   void* context = nullptr;
+  // Not for your traversal: ignore it and call `test` (stage 05's tests never set it). The
+  // renderer sets it when the primitives are a mesh's triangles tested with stage 03's
+  // Moller-Trumbore: then triangles[primitive] is the triangle `test` would test, so that the
+  // reference's traversal can run its own inlined test on a whole leaf instead of a call per
+  // triangle (docs/performance.md). A traversal that does so counts each triangle it tests
+  // in stats.primitives_tested, as a call of `test`.
+  const TriangleEdges* triangles = nullptr;
 };
+
 
 // The work one query did, counted the same way by every correct traversal (bench/, grader).
 struct BvhTraversalStats {
