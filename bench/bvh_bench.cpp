@@ -700,7 +700,8 @@ void print_trace_summary(const std::vector<TraceRow>& rows, int threads, const S
 void print_render_summary() {
   std::printf("\nRenderer (raylab-reference render, scene size and integrator, 1 sample per pixel, no image written;\n"
               "fastest of 3; speed-up: against 1 thread with the triangles tested inlined; \"calls\": a call per\n"
-              "triangle, as a student's traversal):\n");
+              "triangle, as a student's traversal; the path tracer counts its camera rays only, so the Cornell\n"
+              "box's Mrays/s are millions of paths per second):\n");
   std::printf("  %-8s %-10s %8s %-9s %9s %10s %9s\n", "scene", "size", "threads", "triangles", "seconds", "Mrays/s",
               "speed-up");
   for (const char* name : {"whitted", "bunny", "cornell"}) {
