@@ -2,6 +2,7 @@
 // sample index, dimension), stratified over a pixel's samples; means and variances of the
 // mean as defined in film.h; more samples per pixel, same bytes at any thread count.
 #include "raylab/film.h"
+#include "raylab/integrator.h"
 #include "raylab/render.h"
 #include "raylab/sampler.h"
 #include "raylab/scene_loader.h"
@@ -170,6 +171,96 @@ TEST(Render, MoreSamplesPerPixelSmoothEdgesAndKeepFlatAreasExact) {
     }
   EXPECT_GT(flat, scene.camera.width);  // at least the background row
   EXPECT_GT(edges, 10);                 // the spheres' outlines are no longer one colour
+}
+
+TEST(PixelConvergence, TheConfidenceIntervalRuleOnKnownSamples) {
+  // 32 samples alternating 0 and 2 in green (illuminance 0 and 2 x 0.7152; the scale cancels):
+  // mean 1, s^2 = (64 - 32) / 31, so the interval 1.96 s / sqrt(32) is 0.35203 of the mean.
+  PixelConvergence pixel;
+  for (int i = 0; i < 32; ++i) pixel.add(glm::vec3(0.0f, i % 2 ? 2.0f : 0.0f, 0.0f));
+  EXPECT_EQ(pixel.count(), 32u);
+  EXPECT_TRUE(pixel.converged(0.353));
+  EXPECT_FALSE(pixel.converged(0.351));
+
+  PixelConvergence constant;  // no spread: known after 2 samples, at any tolerance
+  constant.add(glm::vec3(0.3f, 0.2f, 0.1f));
+  EXPECT_FALSE(constant.converged(1.0)) << "one sample says nothing about the spread";
+  constant.add(glm::vec3(0.3f, 0.2f, 0.1f));
+  EXPECT_TRUE(constant.converged(1e-6));
+
+  PixelConvergence black;  // mean 0, no spread: nothing more to learn
+  black.add(glm::vec3(0.0f));
+  black.add(glm::vec3(0.0f));
+  EXPECT_TRUE(black.converged(0.05));
+
+  PixelConvergence broken;
+  broken.add(glm::vec3(1.0f));
+  broken.add(glm::vec3(std::nanf(""), 0.0f, 0.0f));
+  broken.add(glm::vec3(1.0f));
+  EXPECT_FALSE(broken.converged(1.0)) << "a NaN sample never counts as converged";
+
+  // Red counts 0.2126, blue 0.0722: the same spread in red is a wider interval than in blue
+  // relative to a white mean.
+  PixelConvergence red, blue;
+  for (int i = 0; i < 32; ++i) {
+    red.add(glm::vec3(i % 2 ? 2.0f : 0.0f, 1.0f, 1.0f));
+    blue.add(glm::vec3(1.0f, 1.0f, i % 2 ? 2.0f : 0.0f));
+  }
+  // Both means are 1 (in illuminance); the spreads are 0.2126 and 0.0722 of the zero-to-two one.
+  EXPECT_FALSE(red.converged(0.35203 * 0.2126 * 0.99));
+  EXPECT_TRUE(red.converged(0.35203 * 0.2126 * 1.01));
+  EXPECT_FALSE(blue.converged(0.35203 * 0.0722 * 0.99));
+  EXPECT_TRUE(blue.converged(0.35203 * 0.0722 * 1.01));
+}
+
+TEST(Render, AdaptiveSamplingSpendsSamplesWhereTheNoiseIsAndIsTheSameAtAnyThreadCount) {
+  Scene scene = load_scene(source_path("scenes/cornell.json"));
+  scene.camera.width = 24;
+  scene.camera.height = 24;
+  RenderSettings settings;
+  settings.integrator = IntegratorKind::Path;
+  settings.max_depth = scene.max_depth;
+  settings.samples_per_pixel = 256;
+  settings.adaptive_tolerance = 0.05f;
+  settings.threads = 2;
+  const RenderOutput two = render_with_variance(scene, settings);
+  settings.threads = 1;
+  const RenderOutput one = render_with_variance(scene, settings);
+  EXPECT_EQ(one.mean.pixels(), two.mean.pixels()) << "adaptive: 1 and 2 threads differ";
+  EXPECT_EQ(one.sample_rate.pixels(), two.sample_rate.pixels()) << "adaptive: 1 and 2 threads took other samples";
+
+  // Pixels stop after a whole number of batches of 32: the brightly lit ones early, the dim,
+  // noisy corners after all 256.
+  int at_first_batch = 0, at_most = 0, between = 0;
+  for (const glm::vec3& rate : one.sample_rate.pixels()) {
+    const float samples = rate.x * 256.0f;
+    EXPECT_EQ(rate.x, rate.y);
+    EXPECT_EQ(std::fmod(samples, 32.0f), 0.0f) << samples << " samples: not a whole number of batches";
+    if (samples == 32.0f) ++at_first_batch;
+    else if (samples == 256.0f) ++at_most;
+    else ++between;
+  }
+  EXPECT_GT(at_first_batch + between, 24 * 24 / 20) << "few pixels stopped early";
+  EXPECT_GT(at_most, 0) << "no pixel took all its samples";
+
+  // The same picture as without adaptive sampling, within the noise: the image's mean
+  // illuminance within 2%.
+  settings.adaptive_tolerance = 0.0f;
+  const Image full = render(scene, settings);
+  EXPECT_TRUE(full.width() == 24 && one.sample_rate.width() == 24);
+  auto mean_illuminance = [](const Image& image) {
+    double sum = 0.0;
+    for (const glm::vec3& p : image.pixels()) sum += 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
+    return sum / static_cast<double>(image.pixels().size());
+  };
+  EXPECT_NEAR(mean_illuminance(one.mean), mean_illuminance(full), 0.02 * mean_illuminance(full));
+  EXPECT_EQ(render_with_variance(scene, settings).sample_rate.width(), 0) << "no sample rate without --adaptive";
+
+  settings.adaptive_tolerance = -0.1f;
+  EXPECT_THROW((void)render(scene, settings), std::invalid_argument);
+  settings.adaptive_tolerance = 0.05f;
+  settings.adaptive_batch = 1;
+  EXPECT_THROW((void)render(scene, settings), std::invalid_argument);
 }
 
 TEST(Render, RefusesSampleCountsOutsideTheLimits) {

@@ -34,6 +34,8 @@ struct RenderOptions {
   std::uint64_t seed = 0;
   std::string integrator;     // empty: the scene's ("integrator", whitted by default)
   std::string variance_path;  // empty: no variance image
+  float adaptive = 0.0f;      // --adaptive: 0 (off) or the tolerance
+  std::string sample_rate_path;  // empty: no sample-rate image
   bool quiet = false;
   bool watertight = false;
   bool reference_stages = false;  // the program links solutions/ (LinkedStages::Reference)
@@ -42,6 +44,10 @@ struct RenderOptions {
 int run_render(const RenderOptions& options) {
   check_image_extension(options.output_path);
   if (!options.variance_path.empty()) check_image_extension(options.variance_path);
+  if (!options.sample_rate_path.empty()) {
+    check_image_extension(options.sample_rate_path);
+    if (options.adaptive == 0.0f) throw UsageError("--sample-rate: only with --adaptive (without it every pixel gets --spp samples)");
+  }
   if (!options.integrator.empty() && !integrator_from_name(options.integrator))
     throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct, path, mis)");
   Scene scene = load_scene(options.scene_path);
@@ -60,6 +66,7 @@ int run_render(const RenderOptions& options) {
   settings.samples_per_pixel = options.samples_per_pixel;
   settings.seed = options.seed;
   settings.track_variance = !options.variance_path.empty();
+  settings.adaptive_tolerance = options.adaptive;
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.roulette_probability = options.roulette;
   settings.threads = options.threads;
@@ -71,9 +78,20 @@ int run_render(const RenderOptions& options) {
   const Image& image = output.mean;
   write_image(image, options.output_path);
   if (!options.variance_path.empty()) write_image(output.variance_of_mean, options.variance_path);
+  if (!options.sample_rate_path.empty()) write_image(output.sample_rate, options.sample_rate_path);
+  std::string samples = std::to_string(settings.samples_per_pixel) + " spp";
+  if (options.adaptive != 0.0f) {
+    double rate_sum = 0.0;
+    for (const glm::vec3& rate : output.sample_rate.pixels()) rate_sum += rate.x;
+    char text[96];
+    std::snprintf(text, sizeof text, "adaptive, %.1f of at most %d spp on average",
+                  rate_sum / static_cast<double>(output.sample_rate.pixels().size()) * settings.samples_per_pixel,
+                  settings.samples_per_pixel);
+    samples = text;
+  }
   if (!options.quiet)
-    std::fprintf(stderr, "rendered %s: %dx%d at %d spp in %.3f s on %d threads (%.2f Mrays/s) -> %s\n",
-                 options.scene_path.c_str(), image.width(), image.height(), settings.samples_per_pixel, stats.seconds,
+    std::fprintf(stderr, "rendered %s: %dx%d at %s in %.3f s on %d threads (%.2f Mrays/s) -> %s\n",
+                 options.scene_path.c_str(), image.width(), image.height(), samples.c_str(), stats.seconds,
                  stats.threads, stats.seconds > 0 ? stats.work.rays() / stats.seconds * 1e-6 : 0.0,
                  options.output_path.c_str());
   return kExitOk;
@@ -110,6 +128,12 @@ int run_cli(int argc, char** argv, LinkedStages stages) {
   render_command->add_option("--seed", options.seed, "Seed of the random numbers (default 0)");
   render_command->add_option("--variance", options.variance_path,
                              "Also write each pixel's variance of the mean (.exr keeps it linear)");
+  render_command->add_option("--adaptive", options.adaptive,
+                             "Adaptive sampling: stop a pixel's samples (checked every 32) once the 95% confidence "
+                             "interval of its mean is within this fraction of it, e.g. 0.05 (--spp: the most a pixel gets)")
+      ->check(CLI::Range(0.0001f, 1.0f));
+  render_command->add_option("--sample-rate", options.sample_rate_path,
+                             "With --adaptive: also write each pixel's samples as a fraction of --spp (white: all of them)");
   render_command->add_flag("--watertight", options.watertight,
                            "Use the watertight triangle test (stage 03b) instead of stage 03's");
   render_command->add_flag("-q,--quiet", options.quiet, "No progress and no summary line");

@@ -52,17 +52,25 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   if (settings.samples_per_pixel < 1 || settings.samples_per_pixel > kMaxSamplesPerPixel)
     throw std::invalid_argument("samples per pixel must be in [1, " + std::to_string(kMaxSamplesPerPixel) +
                                 "], got " + std::to_string(settings.samples_per_pixel));
+  const bool adaptive = settings.adaptive_tolerance != 0.0f;
+  if (adaptive && !(settings.adaptive_tolerance > 0.0f && settings.adaptive_tolerance <= 1.0f))
+    throw std::invalid_argument("adaptive sampling: the tolerance must be in (0, 1], got " +
+                                std::to_string(settings.adaptive_tolerance));
+  if (adaptive && settings.adaptive_batch < 2)
+    throw std::invalid_argument("adaptive sampling: a batch must be at least 2 samples, got " +
+                                std::to_string(settings.adaptive_batch));
   const Camera& camera = scene.camera;
   RenderOutput output;
   output.mean = Image(camera.width, camera.height);
   if (settings.track_variance) output.variance_of_mean = Image(camera.width, camera.height);
+  if (adaptive) output.sample_rate = Image(camera.width, camera.height);
   const SceneGeometry geometry(scene, settings.skips.no_bvh_for_small_sets ? Acceleration::Bvh : Acceleration::BvhAlways,
                                settings.triangle_test, settings.tracing);
   const auto camera_ray = settings.tracing.camera_ray ? settings.tracing.camera_ray : generate_camera_ray;
   const RenderContext context(scene, geometry, settings.max_depth, settings.skips, settings.roulette_probability);
   const Integrator integrator(settings.integrator);
   const int samples_per_pixel = settings.samples_per_pixel;
-  const bool one_plain_sample = samples_per_pixel == 1 && !settings.track_variance;
+  const bool one_plain_sample = samples_per_pixel == 1 && !settings.track_variance && !adaptive;
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
 
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
@@ -93,11 +101,20 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
               output.mean.at(x, y) = integrator.li(context, ray, sampler, tile_stats);
               continue;
             }
+            PixelConvergence convergence;  // adaptive sampling: a pixel's samples depend on it alone
             for (int sample = 0; sample < samples_per_pixel; ++sample) {
               sampler.start_pixel_sample(x, y, sample);
               const Ray ray = camera_ray(camera, x, y, sampler.get_pixel_2d());
-              film->add_sample(x - tile.x0, y - tile.y0, integrator.li(context, ray, sampler, tile_stats));
+              const glm::vec3 value = integrator.li(context, ray, sampler, tile_stats);
+              film->add_sample(x - tile.x0, y - tile.y0, value);
+              if (!adaptive) continue;
+              convergence.add(value);
+              if ((sample + 1) % settings.adaptive_batch == 0 && convergence.converged(settings.adaptive_tolerance))
+                break;
             }
+            if (adaptive)
+              output.sample_rate.at(x, y) = glm::vec3(static_cast<float>(
+                  static_cast<double>(convergence.count()) / static_cast<double>(samples_per_pixel)));
             output.mean.at(x, y) = film->mean_at(x - tile.x0, y - tile.y0);
             if (settings.track_variance)
               output.variance_of_mean.at(x, y) = film->variance_of_mean_at(x - tile.x0, y - tile.y0);

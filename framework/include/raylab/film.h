@@ -11,6 +11,8 @@
 #include "raylab/image.h"
 #include "raylab/math.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -61,6 +63,35 @@ class Film {
   std::vector<std::uint32_t> counts_;
   std::vector<glm::dvec3> sums_;           // the sum of each pixel's samples
   std::vector<glm::dvec3> squared_error_;  // sum of squared deviations from the mean (Welford's M2)
+};
+
+// Adaptive sampling (CS184's rule, docs/09_path.md, section 7): a pixel has samples enough
+// when the 95% confidence interval of its mean illuminance lies within `tolerance` of that mean,
+//   1.96 sigma / sqrt(n) <= tolerance * mean,
+// with sigma the samples' standard deviation (divided by n - 1) and the illuminance of a
+// sample 0.2126 R + 0.7152 G + 0.0722 B. The renderer asks after every batch of samples.
+class PixelConvergence {
+ public:
+  void add(const glm::vec3& sample) {
+    const double illuminance = 0.2126 * sample.x + 0.7152 * sample.y + 0.0722 * sample.z;
+    sum_ += illuminance;
+    sum_of_squares_ += illuminance * illuminance;
+    ++count_;
+  }
+  std::uint32_t count() const { return count_; }
+  // False with fewer than 2 samples, or while a sample is NaN or infinite.
+  bool converged(double tolerance) const {
+    if (count_ < 2u) return false;
+    const double n = static_cast<double>(count_);
+    const double mean = sum_ / n;
+    // s^2 = (sum x^2 - n mean^2) / (n - 1), never below 0 (rounding).
+    const double variance = std::max(0.0, (sum_of_squares_ - sum_ * mean) / (n - 1.0));
+    return 1.96 * std::sqrt(variance / n) <= tolerance * mean;
+  }
+
+ private:
+  double sum_ = 0.0, sum_of_squares_ = 0.0;
+  std::uint32_t count_ = 0;
 };
 
 }  // namespace raylab

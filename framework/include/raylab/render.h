@@ -20,7 +20,12 @@ namespace raylab {
 
 struct RenderSettings {
   IntegratorKind integrator = IntegratorKind::Whitted;
-  int samples_per_pixel = 1;    // --spp; 1: one ray through each pixel's centre
+  int samples_per_pixel = 1;    // --spp; 1: one ray through each pixel's centre (with
+                                // adaptive_tolerance: the most a pixel gets)
+  // --adaptive: 0 (off), or stop a pixel's samples once its mean is known to this relative
+  // tolerance (PixelConvergence in film.h), asked after every adaptive_batch samples.
+  float adaptive_tolerance = 0.0f;
+  int adaptive_batch = 32;
   std::uint64_t seed = 0;       // changes every random number (an independent render)
   bool track_variance = false;  // also give each pixel's variance of the mean (render_with_variance)
   int max_depth = 5;
@@ -46,6 +51,8 @@ constexpr int kMaxSamplesPerPixel = 1 << 20;
 struct RenderOutput {
   Image mean;              // each pixel's mean over its samples: the picture
   Image variance_of_mean;  // per pixel and channel, s^2 / n (film.h); 0 x 0 unless track_variance
+  Image sample_rate;       // with adaptive_tolerance: each pixel's samples / samples_per_pixel (in
+                           // all three channels); 0 x 0 otherwise
 };
 
 // Renders scene.camera's view: each pixel's mean, and its variance of the mean when
