@@ -35,6 +35,7 @@ struct RenderOptions {
   std::string integrator;     // empty: the scene's ("integrator", whitted by default)
   std::string variance_path;  // empty: no variance image
   float adaptive = 0.0f;      // --adaptive: 0 (off) or the tolerance
+  int adaptive_batch = 32;    // --adaptive-batch
   std::string sample_rate_path;  // empty: no sample-rate image
   bool quiet = false;
   bool watertight = false;
@@ -67,6 +68,7 @@ int run_render(const RenderOptions& options) {
   settings.seed = options.seed;
   settings.track_variance = !options.variance_path.empty();
   settings.adaptive_tolerance = options.adaptive;
+  settings.adaptive_batch = options.adaptive_batch;
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.roulette_probability = options.roulette;
   settings.threads = options.threads;
@@ -129,9 +131,12 @@ int run_cli(int argc, char** argv, LinkedStages stages) {
   render_command->add_option("--variance", options.variance_path,
                              "Also write each pixel's variance of the mean (.exr keeps it linear)");
   render_command->add_option("--adaptive", options.adaptive,
-                             "Adaptive sampling: stop a pixel's samples (checked every 32) once the 95% confidence "
+                             "Adaptive sampling: stop a pixel's samples (checked every --adaptive-batch) once the 95% confidence "
                              "interval of its mean is within this fraction of it, e.g. 0.05 (--spp: the most a pixel gets)")
       ->check(CLI::Range(0.0001f, 1.0f));
+  render_command->add_option("--adaptive-batch", options.adaptive_batch,
+                             "With --adaptive: check a pixel after every this many samples (default 32)")
+      ->check(CLI::Range(2, kMaxSamplesPerPixel));
   render_command->add_option("--sample-rate", options.sample_rate_path,
                              "With --adaptive: also write each pixel's samples as a fraction of --spp (white: all of them)");
   render_command->add_flag("--watertight", options.watertight,

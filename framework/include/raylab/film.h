@@ -70,6 +70,9 @@ class Film {
 //   1.96 sigma / sqrt(n) <= tolerance * mean,
 // with sigma the samples' standard deviation (divided by n - 1) and the illuminance of a
 // sample 0.2126 R + 0.7152 G + 0.0722 B. The renderer asks after every batch of samples.
+// One change from CS184: a pixel whose samples are all 0 so far (mean and spread 0, which the
+// rule takes as known) is not done. In a dim corner most paths find no light, and a first
+// batch of only zeros would leave a black pixel where the picture is not black.
 class PixelConvergence {
  public:
   void add(const glm::vec3& sample) {
@@ -79,11 +82,12 @@ class PixelConvergence {
     ++count_;
   }
   std::uint32_t count() const { return count_; }
-  // False with fewer than 2 samples, or while a sample is NaN or infinite.
+  // False with fewer than 2 samples, while they are all 0, or while a sample is NaN or infinite.
   bool converged(double tolerance) const {
     if (count_ < 2u) return false;
     const double n = static_cast<double>(count_);
     const double mean = sum_ / n;
+    if (!(mean > 0.0)) return false;
     // s^2 = (sum x^2 - n mean^2) / (n - 1), never below 0 (rounding).
     const double variance = std::max(0.0, (sum_of_squares_ - sum_ * mean) / (n - 1.0));
     return 1.96 * std::sqrt(variance / n) <= tolerance * mean;
