@@ -677,7 +677,7 @@ bool print_trace_row(const TraceRow& row, int thread_count, const std::vector<Tr
     if (row.accelerator != "brute") std::snprintf(nodes, sizeof nodes, "%.1f", row.nodes_per_ray);
     std::snprintf(triangles, sizeof triangles, "%.1f", row.triangles_per_ray);
   }
-  std::printf("  %-12s %-8s %-8s %-7d %-8s %9.2f %12s %11s %11s\n", row.mesh.c_str(), row.rays.c_str(),
+  std::printf("  %-12s %-8s %-8s %-7d %-12s %9.2f %12s %11s %11s\n", row.mesh.c_str(), row.rays.c_str(),
               row.query.c_str(), thread_count, row.accelerator.c_str(), 1e-6 / per_ray, ratio, nodes, triangles);
   return true;
 }
@@ -685,7 +685,7 @@ bool print_trace_row(const TraceRow& row, int thread_count, const std::vector<Tr
 void print_trace_summary(const std::vector<TraceRow>& rows, int threads, const SecondsByName& seconds) {
   std::printf("\nTraversal (time vs Embree: this accelerator's time per ray / Embree's, same rays,\n"
               "same threads; nodes and triangles per ray are exact counts, single-threaded pass):\n");
-  std::printf("  %-12s %-8s %-8s %-7s %-8s %9s %12s %11s %11s\n", "mesh", "rays", "query", "threads", "accel",
+  std::printf("  %-12s %-8s %-8s %-7s %-12s %9s %12s %11s %11s\n", "mesh", "rays", "query", "threads", "accel",
               "Mrays/s", "vs Embree", "nodes/ray", "tris/ray");
   for (const TraceRow& row : rows) {
     if (!print_trace_row(row, 1, rows, seconds)) continue;

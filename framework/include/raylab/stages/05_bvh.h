@@ -95,7 +95,6 @@ struct PrimitiveIntersector {
   const TriangleEdges* triangles = nullptr;
 };
 
-
 // The work one query did, counted the same way by every correct traversal (bench/, grader).
 struct BvhTraversalStats {
   std::uint64_t nodes_visited = 0;      // node boxes tested against the ray
