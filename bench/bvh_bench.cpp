@@ -159,8 +159,7 @@ ReferenceBvh build_reference(const TestMesh& mesh, bool sah) {
     primitive = static_cast<std::uint32_t>(&primitive - result.bvh.primitive_order.data());
   }
   for (std::size_t i = 0; i < result.corners.size(); i += 3)
-    result.edges.push_back({result.corners[i], result.corners[i + 1] - result.corners[i],
-                            result.corners[i + 2] - result.corners[i]});
+    result.edges.push_back(TriangleEdges::of(result.corners[i], result.corners[i + 1], result.corners[i + 2]));
   return result;
 }
 

@@ -128,7 +128,7 @@ TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
   const PrimitiveIntersector by_calls = testkit::intersector_over(triangles);
   std::vector<TriangleEdges> edges;
   for (std::uint32_t t = 0; t < mesh.boxes.size(); ++t)
-    edges.push_back({mesh.corner(t, 0), mesh.corner(t, 1) - mesh.corner(t, 0), mesh.corner(t, 2) - mesh.corner(t, 0)});
+    edges.push_back(TriangleEdges::of(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)));
   PrimitiveIntersector inlined = by_calls;
   inlined.triangles = edges.data();
 

@@ -57,16 +57,16 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
     part.triangle_count = static_cast<std::uint32_t>(triangles_.size()) - part.first_triangle;
     meshes_.push_back(std::move(part));
   }
-  hand_triangles_to_traversal_ = tracing.reference_stages && !tracing.replaces_primitive_tests() &&
-                                 triangle_test == TriangleTest::MollerTrumbore;
   if (acceleration == Acceleration::BvhAlways) brute_force_limit_ = 0;
   if (tracing.replaces_primitive_tests()) acceleration = Acceleration::BruteForce;
   if (acceleration != Acceleration::BruteForce) build_bvhs();
-  if (bvh_count() == 0) hand_triangles_to_traversal_ = false;  // brute force, or stage 05 a stub
+  // bvh_count() is 0 when testing every primitive (brute force, or stage 05 a stub).
+  hand_triangles_to_traversal_ = tracing.reference_stages && !tracing.replaces_primitive_tests() &&
+                                 triangle_test == TriangleTest::MollerTrumbore && bvh_count() > 0;
   if (hand_triangles_to_traversal_) {
     triangle_edges_.reserve(triangles_.size());
     for (const Triangle& triangle : triangles_)
-      triangle_edges_.push_back({triangle.p0, triangle.p1 - triangle.p0, triangle.p2 - triangle.p0});
+      triangle_edges_.push_back(TriangleEdges::of(triangle.p0, triangle.p1, triangle.p2));
   }
 }
 

@@ -64,6 +64,10 @@ Bvh build_bvh_sah(const std::vector<Bounds3>& primitive_bounds, int max_leaf_siz
 // there, p1 - p0 and p2 - p0.
 struct TriangleEdges {
   glm::vec3 p0{0.0f}, edge_01{0.0f}, edge_02{0.0f};
+
+  static TriangleEdges of(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+    return {p0, p1 - p0, p2 - p0};
+  }
 };
 
 // How the traversal tests one primitive: a plain function pointer and the caller's context.
