@@ -216,6 +216,76 @@ TEST(Lambertian, IsReciprocalAndReflectsNothingThroughTheSurface) {
   }
 }
 
+Bsdf microfacet(float alpha, const glm::vec3& reflectance) {
+  Bsdf bsdf;
+  bsdf.kind = BsdfKind::Microfacet;
+  bsdf.alpha = alpha;
+  bsdf.reflectance = reflectance;
+  return bsdf;
+}
+
+// The framework's microfacet BSDF on the reference stage 10 (any frame, either side).
+TEST(Microfacet, SampleFAgreesWithFAndPdf) {
+  Pcg32 random(17u);
+  for (const float alpha : {0.01f, 0.2f, 0.9f}) {
+    const Bsdf bsdf = microfacet(alpha, glm::vec3(0.9f, 0.6f, 0.3f));
+    int samples = 0;
+    for (int i = 0; i < 2000; ++i) {
+      const glm::vec3 normal = random_unit_vector(random), wo = random_unit_vector(random);
+      const auto sample = bsdf_sample_f(bsdf, normal, wo, random.next_float(), glm::vec2(random.next_float(), random.next_float()));
+      if (!sample) continue;
+      ++samples;
+      ASSERT_GT(glm::dot(sample->wi, normal) * glm::dot(wo, normal), 0.0f) << "wi on wo's side";
+      ASSERT_FALSE(sample->is_specular);
+      ASSERT_EQ(sample->f, bsdf_f(bsdf, normal, wo, sample->wi));
+      ASSERT_EQ(sample->pdf, bsdf_pdf(bsdf, normal, wo, sample->wi));
+    }
+    EXPECT_GT(samples, 1000) << "alpha " << alpha << ": most samples land above the surface";
+  }
+}
+
+TEST(Microfacet, PdfAndEnergyIntegrateToAtMostOneAndImportanceSamplingAgrees) {
+  const glm::vec3 normal = glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f));
+  for (const float alpha : {0.3f, 0.7f}) {
+    const Bsdf bsdf = microfacet(alpha, glm::vec3(1.0f));
+    for (const glm::vec3& wo : {normal, glm::normalize(glm::vec3(0.1f, 0.4f, 0.8f)), glm::normalize(glm::vec3(0.9f, 0.1f, 0.2f))}) {
+      const double pdf_integral =
+          integrate_over_sphere([&](const glm::vec3& wi) { return bsdf_pdf(bsdf, normal, wo, wi); }, 800, 400);
+      EXPECT_LE(pdf_integral, 1.0 + 2e-3) << "alpha " << alpha << " wo " << wo;
+      EXPECT_GT(pdf_integral, 0.5) << "alpha " << alpha << " wo " << wo;
+      // A white metal reflects at most what arrives (single scattering with Smith's separable
+      // masking loses light that would scatter again between facets: about half at alpha 0.7).
+      const double reflected = integrate_over_sphere(
+          [&](const glm::vec3& wi) { return bsdf_f(bsdf, normal, wo, wi).x * std::fabs(glm::dot(normal, wi)); }, 800, 400);
+      EXPECT_LE(reflected, 1.0 + 2e-3) << "alpha " << alpha << " wo " << wo;
+      EXPECT_GT(reflected, 0.4) << "alpha " << alpha << " wo " << wo;
+      // The same integral by importance sampling: f |cos| / pdf over bsdf_sample_f's samples
+      // (a failed sample counts 0), within 4 standard errors.
+      testkit::RunningMoments moments;
+      Pcg32 random(19u);
+      for (int i = 0; i < 200000; ++i) {
+        const auto sample = bsdf_sample_f(bsdf, normal, wo, 0.5f, glm::vec2(random.next_float(), random.next_float()));
+        moments.add(sample ? sample->f.x * std::fabs(glm::dot(normal, sample->wi)) / sample->pdf : 0.0);
+      }
+      EXPECT_NEAR(moments.mean(), reflected, 4.0 * moments.standard_error() + 2e-3) << "alpha " << alpha << " wo " << wo;
+    }
+  }
+}
+
+TEST(Microfacet, IsReciprocalAndReflectsNothingThroughTheSurface) {
+  const Bsdf bsdf = microfacet(0.3f, glm::vec3(0.9f, 0.5f, 0.2f));
+  Pcg32 random(23u);
+  for (int i = 0; i < 1000; ++i) {
+    const glm::vec3 normal = random_unit_vector(random), a = random_unit_vector(random), b = random_unit_vector(random);
+    EXPECT_TRUE(testing::vec3_near(bsdf_f(bsdf, normal, a, b), bsdf_f(bsdf, normal, b, a),
+                                   1e-4f * glm::length(bsdf_f(bsdf, normal, a, b)) + 1e-6f));
+    if (glm::dot(a, normal) * glm::dot(b, normal) < 0.0f) {
+      EXPECT_EQ(bsdf_f(bsdf, normal, a, b), glm::vec3(0.0f));
+      EXPECT_EQ(bsdf_pdf(bsdf, normal, a, b), 0.0f);
+    }
+  }
+}
+
 TEST(Mirror, ReflectsAboutTheNormalWithWeightReflectance) {
   Bsdf mirror;
   mirror.kind = BsdfKind::Mirror;
@@ -492,6 +562,34 @@ TEST(BsdfOf, EachMaterialKindGetsItsBsdf) {
   material.kind = MaterialKind::ReflectiveRefractive;
   EXPECT_EQ(bsdf_of(material, glm::vec3(0.8f)).kind, BsdfKind::Dielectric);
   EXPECT_EQ(bsdf_of(material, glm::vec3(0.8f)).ior, material.index_of_refraction);
+  material.kind = MaterialKind::Microfacet;
+  material.alpha = 0.125f;
+  material.reflectance = glm::vec3(0.9f, 0.6f, 0.3f);
+  const Bsdf metal = bsdf_of(material, glm::vec3(0.8f));
+  EXPECT_EQ(metal.kind, BsdfKind::Microfacet);
+  EXPECT_EQ(metal.alpha, 0.125f);
+  EXPECT_EQ(metal.reflectance, material.reflectance);
+  EXPECT_FALSE(metal.is_specular()) << "the lights are sampled at a rough metal";
+}
+
+TEST(BsdfOf, MicrofacetMaterialsAreReadWithTheirRoughness) {
+  const Scene scene = parse_scene(R"({ "camera": {}, "materials": {
+    "copper": { "type": "microfacet", "alpha": 0.25, "reflectance": [0.955, 0.638, 0.538] } },
+    "objects": [ { "type": "sphere", "center": [0, 0, -5], "radius": 1, "material": "copper" } ] })", "metal.json", ".");
+  ASSERT_EQ(scene.materials.size(), 1u);
+  EXPECT_EQ(scene.materials[0].kind, MaterialKind::Microfacet);
+  EXPECT_FLOAT_EQ(scene.materials[0].alpha, 0.25f);
+  for (const char* bad : {R"("alpha": 0)", R"("alpha": 1.5)", R"("alpha": 0.2, "kd": 1)", R"("reflectance": 2)"}) {
+    const std::string text = std::string(R"({ "camera": {}, "materials": { "m": { "type": "microfacet", )") + bad +
+                             R"( } }, "objects": [ { "type": "sphere", "center": [0, 0, -5], "radius": 1, "material": "m" } ] })";
+    try {
+      (void)parse_scene(text, "metal.json", ".");
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find("metal.json"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("/materials/m"), std::string::npos) << e.what();
+    }
+  }
 }
 
 

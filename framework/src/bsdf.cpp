@@ -4,6 +4,7 @@
 #include "raylab/shading.h"
 #include "raylab/stages/07_sampling.h"
 #include "raylab/stages/08_direct_light.h"
+#include "raylab/stages/10_microfacet.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,18 +12,21 @@
 namespace raylab {
 
 glm::vec3 bsdf_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, const glm::vec3& wi) {
-  if (bsdf.kind != BsdfKind::Lambertian) return glm::vec3(0.0f);
+  if (bsdf.is_specular()) return glm::vec3(0.0f);
   const float cos_o = glm::dot(normal, wo), cos_i = glm::dot(normal, wi);
   if (!(cos_o * cos_i > 0.0f)) return glm::vec3(0.0f);  // wi on the other side: no transmission
-  return lambertian_f(bsdf.albedo);
+  if (bsdf.kind == BsdfKind::Lambertian) return lambertian_f(bsdf.albedo);
+  const Frame frame(cos_o > 0.0f ? normal : -normal);  // on wo's side, as bsdf_sample_f
+  return microfacet_f(frame.to_local(wo), frame.to_local(wi), bsdf.alpha, bsdf.reflectance);
 }
 
 float bsdf_pdf(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, const glm::vec3& wi) {
-  if (bsdf.kind != BsdfKind::Lambertian) return 0.0f;
+  if (bsdf.is_specular()) return 0.0f;
   const float cos_o = glm::dot(normal, wo), cos_i = glm::dot(normal, wi);
   if (!(cos_o * cos_i > 0.0f)) return 0.0f;
-  const glm::vec3 facing_normal = cos_o > 0.0f ? normal : -normal;  // on wo's side, as bsdf_sample_f
-  return cosine_hemisphere_pdf(Frame(facing_normal).to_local(wi));
+  const Frame frame(cos_o > 0.0f ? normal : -normal);  // on wo's side, as bsdf_sample_f
+  if (bsdf.kind == BsdfKind::Lambertian) return cosine_hemisphere_pdf(frame.to_local(wi));
+  return microfacet_pdf(frame.to_local(wo), frame.to_local(wi), bsdf.alpha);
 }
 
 std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo,
@@ -40,6 +44,22 @@ std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& norma
       if (!(cos_i > 0.0f)) return std::nullopt;
       sample.f = lambertian_f(bsdf.albedo);
       sample.pdf = cosine_hemisphere_pdf(local);
+      if (!(sample.pdf > 0.0f) || !std::isfinite(sample.pdf)) return std::nullopt;
+      return sample;
+    }
+    case BsdfKind::Microfacet: {
+      const Frame frame(facing_normal);
+      const glm::vec3 local_wo = frame.to_local(wo);
+      if (!(local_wo.z > 0.0f)) return std::nullopt;  // rounding at a grazing wo
+      const glm::vec3 local_wi = sample_microfacet_wi(local_wo, u, bsdf.alpha);
+      if (!(local_wi.z > 0.0f)) return std::nullopt;  // mirrored below the surface: no sample
+      sample.wi = glm::normalize(frame.to_world(local_wi));
+      if (!(glm::dot(facing_normal, sample.wi) > 0.0f)) return std::nullopt;
+      // f and pdf of the direction returned, as bsdf_f and bsdf_pdf compute them (the same bits:
+      // near a shiny lobe's peak a rounding of wi changes D by more than float precision).
+      const glm::vec3 returned_wi = frame.to_local(sample.wi);
+      sample.f = microfacet_f(local_wo, returned_wi, bsdf.alpha, bsdf.reflectance);
+      sample.pdf = microfacet_pdf(local_wo, returned_wi, bsdf.alpha);
       if (!(sample.pdf > 0.0f) || !std::isfinite(sample.pdf)) return std::nullopt;
       return sample;
     }
@@ -99,6 +119,11 @@ Bsdf bsdf_of(const Material& material, const glm::vec3& diffuse_color) {
     case MaterialKind::ReflectiveRefractive:
       bsdf.kind = BsdfKind::Dielectric;
       bsdf.ior = material.index_of_refraction;
+      break;
+    case MaterialKind::Microfacet:
+      bsdf.kind = BsdfKind::Microfacet;
+      bsdf.alpha = material.alpha;
+      bsdf.reflectance = material.reflectance;
       break;
   }
   return bsdf;

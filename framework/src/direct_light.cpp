@@ -47,8 +47,8 @@ glm::vec3 direct_light_li(const RenderContext& context, const Ray& camera_ray, S
       continue;
     }
 
-    // A diffuse surface: one sample of the light arriving straight from the lights (stage 08).
-    if (lights.empty() || bsdf.albedo == glm::vec3(0.0f)) return radiance;
+    // A diffuse or rough surface: one sample of the light arriving straight from the lights (stage 08).
+    if (lights.empty() || bsdf.is_black()) return radiance;
     ++stats.shadow_rays;
     return radiance + throughput * estimate_direct_light(context, *hit, bsdf, wo, sampler);
   }

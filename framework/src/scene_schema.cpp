@@ -44,8 +44,10 @@ Material read_material(const JsonReader& r, const json& node, const std::string&
   else if (type == "reflective_refractive") m.kind = MaterialKind::ReflectiveRefractive;
   else if (type == "diffuse") m.kind = MaterialKind::Diffuse;
   else if (type == "mirror") m.kind = MaterialKind::Mirror;
+  else if (type == "microfacet") m.kind = MaterialKind::Microfacet;
   else r.fail(path + "/type", "unknown material type '" + type +
-                                   "' (expected diffuse_glossy, reflective, reflective_refractive, diffuse or mirror)");
+                                   "' (expected diffuse_glossy, reflective, reflective_refractive, diffuse, mirror or "
+                                   "microfacet)");
   switch (m.kind) {
     case MaterialKind::Diffuse:
       r.check_keys(node, path, {"type", "diffuse_color", "checkerboard", "emission"});
@@ -54,6 +56,9 @@ Material read_material(const JsonReader& r, const json& node, const std::string&
       break;
     case MaterialKind::Mirror:
       r.check_keys(node, path, {"type", "reflectance", "emission"});
+      break;
+    case MaterialKind::Microfacet:
+      r.check_keys(node, path, {"type", "reflectance", "alpha", "emission"});
       break;
     default:
       r.check_keys(node, path, {"type", "diffuse_color", "checkerboard", "kd", "ks", "specular_exponent",
@@ -64,8 +69,10 @@ Material read_material(const JsonReader& r, const json& node, const std::string&
   if (node.contains("reflectance")) {
     m.reflectance = r.color(node["reflectance"], path + "/reflectance", "reflectance");
     if (glm::any(glm::greaterThan(m.reflectance, glm::vec3(1.0f))))
-      r.fail(path + "/reflectance", "a mirror reflects at most all the light: components must be <= 1");
+      r.fail(path + "/reflectance", "a surface reflects at most all the light: components must be <= 1");
   }
+  if (node.contains("alpha"))
+    m.alpha = static_cast<float>(r.number(node["alpha"], path + "/alpha", kMinMicrofacetAlpha, 1.0));
   if (node.contains("diffuse_color")) m.diffuse_color = r.color(node["diffuse_color"], path + "/diffuse_color");
   if (m.kind == MaterialKind::Diffuse && glm::any(glm::greaterThan(m.diffuse_color, glm::vec3(1.0f))))
     r.fail(path + "/diffuse_color", "a diffuse surface reflects at most all the light: its albedo components must be <= 1");

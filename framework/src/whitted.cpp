@@ -57,6 +57,7 @@ glm::vec3 trace(const RenderContext& context, const Ray& ray, int depth, RayKind
       return plus_emission(bounce(reflectance, reflect(direction, normal), RayKind::Reflection));
     }
     case MaterialKind::Mirror:
+    case MaterialKind::Microfacet:  // its alpha -> 0 limit: Whitted shading has no rough reflection
       return plus_emission(material.reflectance * bounce(1.0f, reflect(direction, normal), RayKind::Reflection));
     case MaterialKind::DiffuseGlossy:
     case MaterialKind::Diffuse:  // kd 1, ks 0 (scene_schema.cpp)

@@ -12,6 +12,9 @@
 //             (pdf = |cos| / pi).
 // Mirror      perfect specular reflection, weight reflectance * Fresnel (fresnel_ior > 0: the
 //             dielectric Fresnel reflectance of GAMES101's "reflective"; 0: none).
+// Microfacet  a rough metal (stage 10's microfacet_f on wo's side), sampled by stage 10's
+//             sample_microfacet_wi (pdf microfacet_pdf): not specular, so the integrators
+//             sample the lights at it, as at a Lambertian surface.
 // Dielectric  glass: reflection with probability F (Fresnel), refraction with 1 - F; the
 //             refracted radiance is scaled by (eta_incident / eta_transmitted)^2 (pbrt-v4's
 //             radiance transport).
@@ -28,16 +31,23 @@
 
 namespace raylab {
 
-enum class BsdfKind : std::uint8_t { Lambertian, Mirror, Dielectric };
+enum class BsdfKind : std::uint8_t { Lambertian, Mirror, Dielectric, Microfacet };
 
 struct Bsdf {
   BsdfKind kind = BsdfKind::Lambertian;
   glm::vec3 albedo{0.0f};       // Lambertian: in [0, 1] per channel
-  glm::vec3 reflectance{1.0f};  // Mirror
+  glm::vec3 reflectance{1.0f};  // Mirror; Microfacet: at normal incidence (Schlick)
   float fresnel_ior = 0.0f;     // Mirror: 0 = no Fresnel weight
   float ior = 1.5f;             // Dielectric: inside / outside
+  float alpha = 0.2f;           // Microfacet: GGX's roughness
 
-  bool is_specular() const { return kind != BsdfKind::Lambertian; }
+  // A delta lobe (mirror, glass): no light sampling, f and pdf 0 for any given pair.
+  bool is_specular() const { return kind == BsdfKind::Mirror || kind == BsdfKind::Dielectric; }
+  // Reflects no light at all (a black diffuse surface, a metal of reflectance 0): nothing to sample.
+  bool is_black() const {
+    return (kind == BsdfKind::Lambertian && albedo == glm::vec3(0.0f)) ||
+           (kind == BsdfKind::Microfacet && reflectance == glm::vec3(0.0f));
+  }
 };
 
 struct BsdfSample {
@@ -61,7 +71,7 @@ float bsdf_pdf(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, c
 // The BSDF of a material at a hit: diffuse and diffuse_glossy are Lambertian with albedo
 // diffuse colour (times kd for diffuse_glossy: its Phong lobe is Whitted-only), reflective a
 // Fresnel-weighted mirror, mirror a mirror of its reflectance, reflective_refractive a
-// dielectric. `diffuse_color` is the material's colour at the hit (checkerboard included).
+// dielectric, microfacet a microfacet BSDF of its alpha and reflectance. `diffuse_color` is the material's colour at the hit (checkerboard included).
 Bsdf bsdf_of(const Material& material, const glm::vec3& diffuse_color);
 
 }  // namespace raylab

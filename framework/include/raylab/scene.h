@@ -11,7 +11,7 @@
 
 namespace raylab {
 
-// The three material kinds of GAMES101 assignment 5, and two for Monte Carlo rendering.
+// The three material kinds of GAMES101 assignment 5, and three for Monte Carlo rendering.
 // How each one reflects: shading (Whitted) and bsdf.h (bsdf_of).
 enum class MaterialKind {
   DiffuseGlossy,          // Lambert diffuse + Phong highlight, lit by the point lights
@@ -19,6 +19,8 @@ enum class MaterialKind {
   ReflectiveRefractive,   // glass: Fresnel-weighted reflection + refraction
   Diffuse,                // Lambertian of albedo diffuse_color (kd 1, ks 0 under Whitted)
   Mirror,                 // a perfect mirror of colour `reflectance`
+  Microfacet,             // a rough metal: GGX of roughness alpha, Schlick's Fresnel from
+                          // `reflectance` at normal incidence (stage 10; a mirror under Whitted)
 };
 
 // A texture over the (s, t) coordinates of a mesh: checkers with `scale` periods per unit
@@ -39,12 +41,17 @@ struct Material {
   float ks = 0.2f;                           // specular weight
   float specular_exponent = 25.0f;
   float index_of_refraction = 1.3f;
-  glm::vec3 reflectance{1.0f};  // Mirror
+  glm::vec3 reflectance{1.0f};  // Mirror; Microfacet: the reflectance at normal incidence
+  float alpha = 0.2f;           // Microfacet: GGX's roughness parameter, in [kMinMicrofacetAlpha, 1]
   // Radiance emitted (W / (m^2 sr) per channel) from the surface's front, the side its
   // geometric normal points to: every object of an emitting material is an area light
   // (lights.h).
   glm::vec3 emission{0.0f};
 };
+
+// The smallest roughness a microfacet material may have: below it D(h) = 1 / (pi alpha^2) at the
+// normal outgrows float precision in the path tracer's weights (use a mirror instead).
+constexpr float kMinMicrofacetAlpha = 1e-3f;
 
 struct Sphere {
   glm::vec3 center{0.0f};

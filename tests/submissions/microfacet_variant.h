@@ -1,0 +1,85 @@
+// Grader self-test submissions of stage 10_microfacet share this implementation: each one sets
+// the flags of its mistakes and defines the stage's functions with them, so that a submission
+// file says only what it changes. Every function calls the others as a student's would (f calls
+// D and G1, wi's sampler and density the half vector's), so a wrong D also shows in f.
+#pragma once
+
+#include "raylab/stages/10_microfacet.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab::submission {
+
+struct MicrofacetVariant {
+  bool d_alpha_squared_first = false;   // D with alpha^2 in place of alpha (a "roughness" squared)
+  bool d_no_inverse_pi = false;         // D without 1 / pi
+  bool f_no_masking = false;            // f without G1(wo) G1(wi)
+  bool f_fresnel_at_normal = false;     // Schlick's Fresnel at wi.z instead of dot(wi, h)
+  bool half_vector_no_sqrt = false;     // tan(theta) = alpha u / (1 - u)
+  bool pdf_no_jacobian = false;         // microfacet_pdf = the half vector's density
+};
+
+inline MicrofacetVariant microfacet_variant() {
+  MicrofacetVariant v;
+  MICROFACET_VARIANT(v);
+  return v;
+}
+
+}  // namespace raylab::submission
+
+namespace raylab {
+
+float ggx_distribution(const glm::vec3& half_vector, float alpha) {
+  const submission::MicrofacetVariant v = submission::microfacet_variant();
+  const float c = half_vector.z;
+  if (!(c > 0.0f)) return 0.0f;
+  const float a = v.d_alpha_squared_first ? alpha * alpha : alpha;
+  const float a2 = a * a, k = (a2 - 1.0f) * c * c + 1.0f;
+  return a2 / ((v.d_no_inverse_pi ? 1.0f : 3.14159265f) * k * k);
+}
+
+float ggx_smith_g1(const glm::vec3& direction, float alpha) {
+  const float c = direction.z;
+  if (!(c > 0.0f)) return 0.0f;
+  const float c2 = std::min(1.0f, c * c);
+  return 2.0f / (1.0f + std::sqrt(1.0f + alpha * alpha * (1.0f - c2) / c2));
+}
+
+glm::vec3 microfacet_f(const glm::vec3& wo, const glm::vec3& wi, float alpha, const glm::vec3& specular_color) {
+  const submission::MicrofacetVariant v = submission::microfacet_variant();
+  if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return glm::vec3(0.0f);
+  const glm::vec3 h = glm::normalize(wo + wi);
+  const float m = 1.0f - std::clamp(v.f_fresnel_at_normal ? wi.z : glm::dot(wi, h), 0.0f, 1.0f);
+  const glm::vec3 fresnel = specular_color + (glm::vec3(1.0f) - specular_color) * (m * m * m * m * m);
+  const float masking = v.f_no_masking ? 1.0f : ggx_smith_g1(wo, alpha) * ggx_smith_g1(wi, alpha);
+  return fresnel * (ggx_distribution(h, alpha) * masking / (4.0f * wo.z * wi.z));
+}
+
+glm::vec3 sample_ggx_half_vector(glm::vec2 uniform_random, float alpha) {
+  const submission::MicrofacetVariant v = submission::microfacet_variant();
+  const float u = uniform_random.x;
+  const float tan2 = v.half_vector_no_sqrt ? std::pow(alpha * u / (1.0f - u), 2.0f) : alpha * alpha * u / (1.0f - u);
+  const float cos_theta = 1.0f / std::sqrt(1.0f + tan2);
+  const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
+  const float phi = 6.28318531f * uniform_random.y;
+  return glm::vec3(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta);
+}
+
+float ggx_half_vector_pdf(const glm::vec3& half_vector, float alpha) {
+  return half_vector.z > 0.0f ? ggx_distribution(half_vector, alpha) * half_vector.z : 0.0f;
+}
+
+glm::vec3 sample_microfacet_wi(const glm::vec3& wo, glm::vec2 uniform_random, float alpha) {
+  const glm::vec3 h = sample_ggx_half_vector(uniform_random, alpha);
+  return 2.0f * glm::dot(wo, h) * h - wo;
+}
+
+float microfacet_pdf(const glm::vec3& wo, const glm::vec3& wi, float alpha) {
+  const submission::MicrofacetVariant v = submission::microfacet_variant();
+  if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return 0.0f;
+  const glm::vec3 h = glm::normalize(wo + wi);
+  return ggx_half_vector_pdf(h, alpha) / (v.pdf_no_jacobian ? 1.0f : 4.0f * std::fabs(glm::dot(wo, h)));
+}
+
+}  // namespace raylab
