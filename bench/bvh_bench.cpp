@@ -5,7 +5,8 @@
 // Meshes: the Stanford bunny (scenes/bunny.obj, 3674 triangles) and a displaced sphere of
 // about N triangles (default 1,000,000) made by make_displaced_sphere: no big files.
 // Accelerators: brute force (bunny only: every ray tests every triangle), the reference
-// median-split BVH, the reference binned-SAH BVH, and Embree (3 or 4) when CMake found it.
+// median-split BVH, the reference binned-SAH BVH, the SAH tree collapsed into a 4-wide one
+// (stage 05c, "sah-wide"), and Embree (3 or 4) when CMake found it.
 // Rays: "primary" (a 512 x 384 camera framing the mesh) and "random" (origins spread over
 // 1.5 times the mesh's box, directions uniform on the sphere), each traced as closest hit
 // and as any hit (t_max = infinity). Each timed iteration traces the whole set on one thread
@@ -26,6 +27,7 @@
 #include "raylab/stages/03_triangle.h"
 #include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
+#include "raylab/stages/05c_wide_bvh.h"
 #include "raylab/testkit/random_values.h"
 #include "raylab/testkit/triangles.h"
 
@@ -146,11 +148,13 @@ struct ReferenceBvh {
   // triangles), as the renderer hands them over; empty: a call of test_triangle per triangle,
   // as a student's traversal and every grader run it.
   std::vector<TriangleEdges> edges;
+  // "sah-wide": bvh collapsed into a 4-wide tree (stage 05c), traversed by intersect_bvh4.
+  std::optional<Bvh4> wide;
   bool tested_by_calls() const { return edges.empty(); }
 };
 
 ReferenceBvh build_reference(const TestMesh& mesh, bool sah) {
-  ReferenceBvh result{sah ? "sah" : "median", {}, {}, {}};
+  ReferenceBvh result{sah ? "sah" : "median", {}, {}, {}, std::nullopt};
   const std::vector<Bounds3> boxes = triangle_boxes(mesh);
   result.bvh = sah ? build_bvh_sah(boxes, kLeafSize) : build_bvh(boxes, kLeafSize);
   result.corners.reserve(mesh.corners.size());
@@ -171,6 +175,14 @@ ReferenceBvh tested_by_calls(const ReferenceBvh& tree) {
   return copy;
 }
 
+// The same tree collapsed into a 4-wide one (the "-wide" rows), its triangles tested inlined.
+ReferenceBvh collapsed(const ReferenceBvh& tree) {
+  ReferenceBvh copy = tree;
+  copy.name += "-wide";
+  copy.wide = collapse_bvh4(tree.bvh);
+  return copy;
+}
+
 // Traces rays[begin, end) (every `stride`-th); writes t (infinity for a miss) when t_out.
 void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std::size_t begin,
                      std::size_t end, bool any_hit, float* t_out, BvhTraversalStats& stats) {
@@ -179,7 +191,8 @@ void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std
   if (!tree.tested_by_calls()) intersector.triangles = tree.edges.data();
   for (std::size_t i = begin; i < end; ++i) {
     // Not const: DoNotOptimize(const T&) is deprecated since Google Benchmark 1.8.
-    std::optional<BvhHit> hit = intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
+    std::optional<BvhHit> hit = tree.wide ? intersect_bvh4(*tree.wide, rays[i], intersector, any_hit, stats)
+                                          : intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
     if (t_out) t_out[i] = hit ? hit->t_hit : kInfinity;
     benchmark::DoNotOptimize(hit);
   }
@@ -459,6 +472,7 @@ std::vector<std::unique_ptr<Fixture>> make_fixtures(std::uint32_t large_triangle
       f->trees.push_back(build_reference(f->mesh, sah));
       f->trees.push_back(tested_by_calls(f->trees.back()));
     }
+    f->trees.push_back(collapsed(f->trees[2]));  // the SAH tree
   }
   return fixtures;
 }
@@ -466,6 +480,11 @@ std::vector<std::unique_ptr<Fixture>> make_fixtures(std::uint32_t large_triangle
 void print_trees(const Fixture& f) {
   for (const ReferenceBvh& tree : f.trees) {
     if (tree.tested_by_calls()) continue;  // the tree printed just before
+    if (tree.wide) {
+      std::printf("  %-12s %-8s %9zu triangles  %9zu nodes of 4 children at most\n", f.mesh.name.c_str(),
+                  tree.name.c_str(), f.mesh.triangle_count(), tree.wide->nodes.size());
+      continue;
+    }
     std::printf("  %-12s %-7s %9zu triangles  %9zu nodes  depth %2d  SAH cost %8.2f\n",
                 f.mesh.name.c_str(), tree.name.c_str(), f.mesh.triangle_count(), tree.bvh.nodes.size(),
                 bvh_depth(tree.bvh), bvh_sah_cost(tree.bvh));
@@ -564,7 +583,7 @@ void check_and_count(const Fixture& f, const Embree* embree, std::vector<TraceRo
 
 void check_invariants(const Fixture& f) {
   for (const ReferenceBvh& tree : f.trees) {
-    if (tree.tested_by_calls()) continue;  // the tree checked just before
+    if (tree.tested_by_calls() || tree.wide) continue;  // the tree checked just before
     // The tree's primitives are now in leaf order: their boxes in that order.
     std::vector<Bounds3> boxes(tree.corners.size() / 3);
     for (std::size_t i = 0; i < boxes.size(); ++i)

@@ -114,16 +114,6 @@ std::optional<float> test_through_judge(void*, const Ray& ray, std::uint32_t pri
   return in.get_optional<float>();
 }
 
-struct CountingContext {
-  PrimitiveIntersector inner;
-  std::uint64_t tests = 0;
-};
-std::optional<float> counting_test(void* context, const Ray& ray, std::uint32_t primitive) {
-  auto* counting = static_cast<CountingContext*>(context);
-  ++counting->tests;
-  return counting->inner.test(counting->inner.context, ray, primitive);
-}
-
 void serve_intersect_bvh(Reader& in, Writer& out) {
   static Bvh bvh;                          // what the judge sent for earlier calls
   static std::vector<Triangle> triangles;
@@ -133,10 +123,10 @@ void serve_intersect_bvh(Reader& in, Writer& out) {
   if (grader_test) grading::receive(in, triangles);
   const auto ray = in.get<Ray>();
   const bool any_hit = in.get<std::uint8_t>() != 0;
-  CountingContext counting{grader_test ? PrimitiveIntersector{grading::grader_triangle_test, &triangles}
+  grading::CountedTests counting{grader_test ? PrimitiveIntersector{grading::grader_triangle_test, &triangles}
                                        : PrimitiveIntersector{test_through_judge, nullptr}};
   BvhTraversalStats stats;
-  const std::optional<BvhHit> hit = intersect_bvh(bvh, ray, PrimitiveIntersector{counting_test, &counting}, any_hit, stats);
+  const std::optional<BvhHit> hit = intersect_bvh(bvh, ray, PrimitiveIntersector{grading::counting_test, &counting}, any_hit, stats);
   out.put_optional(hit);
   out.put<std::uint64_t>(stats.nodes_visited);
   out.put<std::uint64_t>(counting.tests);

@@ -360,12 +360,22 @@ TraversalWork reference_traversal_work(const Bvh& bvh, const TestMesh& mesh, con
 int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
                              const Message& what) {
   const PrimitiveIntersector intersector = intersector_for(mesh);
+  return compare_traversal_with_brute_force(
+      [&](const Ray& ray) {
+        BvhTraversalStats stats;
+        return intersect_bvh(bvh, ray, intersector, any_hit, stats);
+      },
+      &bvh, mesh, rays, any_hit, what);
+}
+
+int compare_traversal_with_brute_force(const std::function<std::optional<BvhHit>(const Ray&)>& traversal,
+                                       const Bvh* boxes_on_the_way, const TestMesh& mesh, const std::vector<Ray>& rays,
+                                       bool any_hit, const Message& what) {
   int differences = 0;
   for (std::size_t r = 0; r < rays.size(); ++r) {
     const Ray& ray = rays[r];
     const std::optional<BvhHit> expected = brute_force_closest(mesh, ray);
-    BvhTraversalStats stats;
-    const std::optional<BvhHit> got = intersect_bvh(bvh, ray, intersector, any_hit, stats);
+    const std::optional<BvhHit> got = traversal(ray);
     bool ok = got.has_value() == expected.has_value();
     if (ok && got && !any_hit) ok = got->t_hit == expected->t_hit;  // same primitive test: exactly equal
     if (ok && got && any_hit) ok = got->primitive < mesh.triangles.size() && test_triangle(mesh, ray, got->primitive).has_value();
@@ -379,7 +389,9 @@ int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::ve
     else if (!got && expected) {
       // Whose code dropped the hit: your box test (stage 04), if it misses a box on the way
       // to the hit; otherwise the traversal.
-      if (const std::optional<Bounds3> missed = box_wrongly_missed(bvh, ray, expected->primitive)) {
+      const std::optional<Bounds3> missed =
+          boxes_on_the_way ? box_wrongly_missed(*boxes_on_the_way, ray, expected->primitive) : std::nullopt;
+      if (missed) {
         add_hint({MessageId::bvh_box_test_misses,
                   {{"zero_component", zero_component ? std::vector<Message>{MessageId::bvh_zero_component_note}
                                                      : std::vector<Message>{}},

@@ -7,6 +7,7 @@
 #include "raylab/stages/05_bvh.h"
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -81,5 +82,10 @@ inline bool children_in_range(const Bvh& bvh, const BvhNode& node) {
 // Returns the number of rays that differ.
 int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
                              const Message& what);
+// The same for any traversal (ray -> its answer). `boxes_on_the_way`, if given, is the binary
+// tree whose box tests (your stage 04) are checked when a hit is lost, to tell whose code lost it.
+int compare_traversal_with_brute_force(const std::function<std::optional<BvhHit>(const Ray&)>& traversal,
+                                       const Bvh* boxes_on_the_way, const TestMesh& mesh, const std::vector<Ray>& rays,
+                                       bool any_hit, const Message& what);
 
 }  // namespace raylab::grading

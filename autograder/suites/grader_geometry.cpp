@@ -69,6 +69,12 @@ std::optional<float> grader_triangle_test(void* triangles, const Ray& ray, std::
   return hit ? std::optional<float>(hit->t_hit) : std::nullopt;
 }
 
+std::optional<float> counting_test(void* counted_tests, const Ray& ray, std::uint32_t primitive) {
+  auto* counted = static_cast<CountedTests*>(counted_tests);
+  ++counted->tests;
+  return counted->inner.test(counted->inner.context, ray, primitive);
+}
+
 TracingFunctions grader_tracing() {
   TracingFunctions tracing;
   tracing.camera_ray = camera_ray_in_double;

@@ -17,6 +17,14 @@ namespace raylab::grading {
 // your stage 3.
 std::optional<float> grader_triangle_test(void* triangles, const Ray& ray, std::uint32_t primitive);
 
+// An intersector that counts its own calls, so that a traversal's work is what the server
+// counted, not what the traversal says it did: PrimitiveIntersector{counting_test, &counted}.
+struct CountedTests {
+  PrimitiveIntersector inner;
+  std::uint64_t tests = 0;
+};
+std::optional<float> counting_test(void* counted_tests, const Ray& ray, std::uint32_t primitive);
+
 // The grader's own camera rays, sphere and triangle tests (in double, with stages 01-03's
 // conventions), which stages 08 and 09 trace their scenes with: so their grades do not depend on
 // your stages 01-05, only on the stages they build on (stages.json: "needs").

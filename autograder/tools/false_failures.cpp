@@ -4,7 +4,7 @@
 // counts the rounds in which any test failed. Each stage is designed to fail a correct program
 // at most testkit::kGraderFalseFailureRate (1 in 1,000) of the time.
 //   autograder-false-failures --stage 08_direct_light --rounds 1000
-// (stages 08_direct_light, 09_path and 09b_mis.)
+// (stages 08_direct_light, 09_path, 09b_mis and 10_microfacet.)
 // For stage 09, autograder-path-false-failures also shows the tails of its region z-scores.
 #include "grading.h"
 #include "support.h"
@@ -53,13 +53,15 @@ int main(int argc, char** argv) {
   CLI::App app{"Measure a Monte Carlo stage's false failures on the reference solution"};
   std::string stage_name;
   int rounds = 100;
-  app.add_option("--stage", stage_name, "The stage (08_direct_light, 09_path or 09b_mis)")->required();
+  app.add_option("--stage", stage_name, "The stage (08_direct_light, 09_path, 09b_mis or 10_microfacet)")->required();
   app.add_option("--rounds", rounds, "How many gradings, each with other seeds")->check(CLI::Range(1, 1000000));
   CLI11_PARSE(app, argc, argv);
   const StageInfo* stage = find_stage(stage_name);
-  if (!stage || (stage->id != "08_direct_light" && stage->id != "09_path" && stage->id != "09b_mis")) {
+  if (!stage || (stage->id != "08_direct_light" && stage->id != "09_path" && stage->id != "09b_mis" &&
+                 stage->id != "10_microfacet")) {
     std::fprintf(stderr,
-                 "autograder-false-failures: %s: only 08_direct_light, 09_path and 09b_mis draw every seed through "
+                 "autograder-false-failures: %s: only 08_direct_light, 09_path, 09b_mis and 10_microfacet draw every "
+                 "seed through "
                  "test_seed() (support.h); the other stages' tests are exact or, for 07_sampling, measured "
                  "on the statistics module (docs/instructors.md)\n",
                  stage_name.c_str());

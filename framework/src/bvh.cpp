@@ -1,10 +1,12 @@
-// The framework's side of stages 04_box and 05_bvh: printing, and measuring and checking a
+// The framework's side of stages 04_box, 05_bvh and 05c_wide_bvh: printing, and measuring and checking a
 // built tree (SAH cost, depth, invariants) for the renderer, bench/ and the autograder.
 #include "raylab/bounds.h"
 #include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
+#include "raylab/stages/05c_wide_bvh.h"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace raylab {
@@ -22,6 +24,18 @@ std::ostream& operator<<(std::ostream& out, const BvhNode& node) {
     return out << " leaf: primitives " << first << " .. " << first + node.primitive_count - 1;
   return out << " inner: children " << first << ", " << first + 1 << ", split axis "
              << "xyz"[node.split_axis % 3];
+}
+
+Bvh4Node empty_bvh4_node() {
+  Bvh4Node node;
+  for (int i = 0; i < kBvh4Width; ++i) {
+    node.min_x[i] = node.min_y[i] = node.min_z[i] = std::numeric_limits<float>::infinity();
+    node.max_x[i] = node.max_y[i] = node.max_z[i] = -std::numeric_limits<float>::infinity();
+    node.child[i] = 0;
+    node.primitive_count[i] = 0;
+  }
+  node.child_count = 0;
+  return node;
 }
 
 float bvh_sah_cost(const Bvh& bvh, float traversal_cost, float primitive_cost) {

@@ -71,7 +71,8 @@ float bsdf_pdf(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, c
 // The BSDF of a material at a hit: diffuse and diffuse_glossy are Lambertian with albedo
 // diffuse colour (times kd for diffuse_glossy: its Phong lobe is Whitted-only), reflective a
 // Fresnel-weighted mirror, mirror a mirror of its reflectance, reflective_refractive a
-// dielectric, microfacet a microfacet BSDF of its alpha and reflectance. `diffuse_color` is the material's colour at the hit (checkerboard included).
+// dielectric, microfacet the microfacet BSDF of its alpha and reflectance. `diffuse_color` is
+// the material's colour at the hit (checkerboard included).
 Bsdf bsdf_of(const Material& material, const glm::vec3& diffuse_color);
 
 }  // namespace raylab

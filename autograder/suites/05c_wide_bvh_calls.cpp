@@ -1,0 +1,151 @@
+// Stage 05c's calls between the judge and the stage server (autograder/runner/stage_call.h): the
+// collapse, whose tree comes back whole (the suite checks every node), the four-box test in bulk,
+// and intersect_bvh4, whose primitive tests are the grader's own triangle test run in the server
+// on a copy of the mesh, counted there. The tree and the mesh go to the server only when they
+// differ from what it holds.
+#include "05c_wide_bvh_calls.h"
+#include "grader_geometry.h"
+#include "stage_call.h"
+
+#include <stdexcept>
+
+namespace raylab {
+namespace {
+
+using grading::protocol::Reader;
+using grading::protocol::Triangle;
+using grading::protocol::Writer;
+
+constexpr grading::StageCall kCollapse{"collapse_bvh4", "collapse_bvh4"};
+constexpr grading::StageCall kBox4{"box4_answers", "intersect_ray_box4"};
+constexpr grading::StageCall kIntersectBvh4{"intersect_bvh4", "intersect_bvh4"};
+
+}  // namespace
+
+#if RAYLAB_JUDGE
+Bvh4 collapse_bvh4(const Bvh& binary) {
+  Writer arguments;
+  arguments.put_vector(binary.nodes);
+  arguments.put_vector(binary.primitive_order);
+  return grading::remote(kCollapse, arguments, [](Reader& in) {
+    Bvh4 wide;
+    wide.nodes = in.get_vector<Bvh4Node>();
+    wide.primitive_order = in.get_vector<std::uint32_t>();
+    in.expect_end();
+    return wide;
+  });
+}
+
+namespace grading {
+
+std::vector<Box4Answer> box4_answers(const std::vector<Ray>& rays, const std::vector<Bvh4Node>& nodes) {
+  Writer arguments;
+  arguments.put_vector(rays);
+  arguments.put_vector(nodes);
+  return remote(kBox4, arguments, [&](Reader& in) {
+    auto answers = in.get_vector<Box4Answer>();
+    in.expect_end();
+    if (answers.size() != rays.size()) throw protocol::ProtocolError(MessageId::protocol_wrong_sample_count);
+    return answers;
+  });
+}
+
+}  // namespace grading
+
+unsigned intersect_ray_box4(const Ray& ray, const glm::vec3&, const Bvh4Node& node, float entry_distances[kBvh4Width]) {
+  const grading::Box4Answer answer = grading::box4_answers({ray}, {node})[0];
+  for (int i = 0; i < kBvh4Width; ++i) entry_distances[i] = answer.entry_distances[static_cast<std::size_t>(i)];
+  return answer.mask;
+}
+
+std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
+                                     bool any_hit, BvhTraversalStats& stats) {
+  if (intersector.test != &grading::grader_triangle_test)
+    throw std::logic_error("the judge calls intersect_bvh4 only with the grader's triangle test");
+  static grading::SentList<Bvh4Node> sent_nodes;
+  static grading::SentList<std::uint32_t> sent_order;
+  static grading::SentList<Triangle> sent_triangles;
+  const auto& triangles = *static_cast<const std::vector<Triangle>*>(intersector.context);
+  Writer arguments;
+  sent_nodes.put(arguments, bvh.nodes);
+  sent_order.put(arguments, bvh.primitive_order);
+  sent_triangles.put(arguments, triangles);
+  arguments.put(ray);
+  arguments.put<std::uint8_t>(any_hit);
+  struct Reply {
+    std::optional<BvhHit> hit;
+    std::uint64_t nodes_visited = 0, primitives_tested = 0;
+  };
+  const Reply reply = grading::remote(kIntersectBvh4, arguments, [](Reader& in) {
+    Reply read;
+    read.hit = in.get_optional<BvhHit>();
+    read.nodes_visited = in.get<std::uint64_t>();
+    read.primitives_tested = in.get<std::uint64_t>();
+    in.expect_end();
+    return read;
+  });
+  sent_nodes.returned(bvh.nodes);
+  sent_order.returned(bvh.primitive_order);
+  sent_triangles.returned(triangles);
+  stats.nodes_visited += reply.nodes_visited;
+  stats.primitives_tested += reply.primitives_tested;
+  return reply.hit;
+}
+
+#else
+namespace grading {
+
+std::vector<Box4Answer> box4_answers(const std::vector<Ray>& rays, const std::vector<Bvh4Node>& nodes) {
+  if (rays.size() != nodes.size()) throw std::invalid_argument("box4_answers: one node per ray");
+  std::vector<Box4Answer> answers(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    float entries[kBvh4Width] = {};
+    answers[i].mask = intersect_ray_box4(rays[i], ray_direction_inverse_of(rays[i]), nodes[i], entries);
+    for (int k = 0; k < kBvh4Width; ++k) answers[i].entry_distances[static_cast<std::size_t>(k)] = entries[k];
+  }
+  return answers;
+}
+
+}  // namespace grading
+
+namespace {
+
+void serve_collapse(Reader& in, Writer& out) {
+  Bvh binary;
+  binary.nodes = in.get_vector<BvhNode, BvhNodeAllocator<BvhNode>>();
+  binary.primitive_order = in.get_vector<std::uint32_t>();
+  const Bvh4 wide = collapse_bvh4(binary);
+  out.put_vector(wide.nodes);
+  out.put_vector(wide.primitive_order);
+}
+
+void serve_box4(Reader& in, Writer& out) {
+  const auto rays = in.get_vector<Ray>();
+  const auto nodes = in.get_vector<Bvh4Node>();
+  out.put_vector(grading::box4_answers(rays, nodes));
+}
+
+void serve_intersect_bvh4(Reader& in, Writer& out) {
+  static Bvh4 bvh;  // what the judge sent for earlier calls
+  static std::vector<Triangle> triangles;
+  grading::receive(in, bvh.nodes);
+  grading::receive(in, bvh.primitive_order);
+  grading::receive(in, triangles);
+  const auto ray = in.get<Ray>();
+  const bool any_hit = in.get<std::uint8_t>() != 0;
+  grading::CountedTests counting{PrimitiveIntersector{grading::grader_triangle_test, &triangles}};
+  BvhTraversalStats stats;
+  const std::optional<BvhHit> hit =
+      intersect_bvh4(bvh, ray, PrimitiveIntersector{grading::counting_test, &counting}, any_hit, stats);
+  out.put_optional(hit);
+  out.put<std::uint64_t>(stats.nodes_visited);
+  out.put<std::uint64_t>(counting.tests);
+}
+
+const bool kServed = grading::serve(kCollapse, serve_collapse) && grading::serve(kBox4, serve_box4) &&
+                     grading::serve(kIntersectBvh4, serve_intersect_bvh4);
+
+}  // namespace
+#endif
+
+}  // namespace raylab

@@ -1,0 +1,215 @@
+// Reference solution, stage 05c_wide_bvh (a 4-wide BVH with SIMD box tests). The contract is in
+// assignments/05c_wide_bvh/wide_bvh.cpp and docs/05c_wide_bvh.md.
+#include "raylab/stages/05c_wide_bvh.h"
+
+#include "../03_triangle/moller_trumbore.h"
+#include "../04_box/box_slabs.h"
+
+#include "raylab/math.h"
+
+#include <algorithm>
+#include <array>
+
+#if defined(__SSE2__) || defined(_M_X64)
+#include <xmmintrin.h>
+#define RAYLAB_WIDE_BVH_SSE 1
+#endif
+
+namespace raylab {
+namespace {
+
+class Collapser {
+ public:
+  Collapser(const Bvh& binary, Bvh4& wide) : binary_(binary), wide_(wide) {}
+
+  // Makes the wide node of the binary inner node `index` (or, for a leaf root, of that leaf);
+  // returns its index in wide_.nodes.
+  std::uint32_t collapse(std::uint32_t index) {
+    const auto wide_index = static_cast<std::uint32_t>(wide_.nodes.size());
+    wide_.nodes.push_back(empty_bvh4_node());
+    std::array<std::uint32_t, kBvh4Width> children{};
+    int count = 0;
+    const BvhNode& node = binary_.nodes[index];
+    if (node.is_leaf()) {
+      children[count++] = index;
+    } else {
+      children[count++] = node.first_index;
+      children[count++] = node.first_index + 1;
+    }
+    // Open the inner child of largest surface area until there are four.
+    while (count < kBvh4Width) {
+      int widest = -1;
+      float widest_area = -1.0f;
+      for (int i = 0; i < count; ++i) {
+        const BvhNode& child = binary_.nodes[children[i]];
+        if (child.is_leaf()) continue;
+        const float area = child.bounds.surface_area();
+        if (area > widest_area) {
+          widest_area = area;
+          widest = i;
+        }
+      }
+      if (widest < 0) break;
+      const std::uint32_t opened = binary_.nodes[children[widest]].first_index;
+      children[widest] = opened;
+      children[count++] = opened + 1;
+    }
+    for (int i = 0; i < count; ++i) {
+      const BvhNode& child = binary_.nodes[children[i]];
+      const Bounds3& box = child.bounds;
+      // (wide_.nodes may grow below: index it afresh each time.)
+      {
+        Bvh4Node& slot = wide_.nodes[wide_index];
+        slot.min_x[i] = box.min.x, slot.min_y[i] = box.min.y, slot.min_z[i] = box.min.z;
+        slot.max_x[i] = box.max.x, slot.max_y[i] = box.max.y, slot.max_z[i] = box.max.z;
+        slot.child_count = static_cast<std::uint8_t>(count);
+      }
+      if (child.is_leaf()) {
+        wide_.nodes[wide_index].child[i] = child.first_index;
+        wide_.nodes[wide_index].primitive_count[i] = child.primitive_count;
+      } else {
+        const std::uint32_t grandchild = collapse(children[i]);
+        wide_.nodes[wide_index].child[i] = grandchild;
+      }
+    }
+    return wide_index;
+  }
+
+ private:
+  const Bvh& binary_;
+  Bvh4& wide_;
+};
+
+}  // namespace
+
+Bvh4 collapse_bvh4(const Bvh& binary) {
+  Bvh4 wide;
+  if (binary.nodes.empty()) return wide;
+  wide.primitive_order = binary.primitive_order;
+  wide.nodes.reserve(binary.nodes.size() / 2 + 1);
+  Collapser(binary, wide).collapse(0);
+  return wide;
+}
+
+unsigned intersect_ray_box4(const Ray& ray, const glm::vec3& ray_direction_inverse, const Bvh4Node& node,
+                            float entry_distances[kBvh4Width]) {
+  const unsigned used = (1u << node.child_count) - 1u;
+#if RAYLAB_WIDE_BVH_SSE
+  // box_slabs.h four lanes at a time: the entry plane chosen by the sign of the inverse
+  // direction (the same for all four boxes), the exit scaled up by 1 + 2 gamma(3) (Ize 2013).
+  // _mm_max_ps(a, b) and _mm_min_ps(a, b) return b when a is NaN (0 * infinity: the origin on
+  // a plane the ray is parallel to), so such a slab leaves the interval as it was.
+  const float* const lows[3] = {node.min_x, node.min_y, node.min_z};
+  const float* const highs[3] = {node.max_x, node.max_y, node.max_z};
+  __m128 enter = _mm_set1_ps(ray.t_min), exit = _mm_set1_ps(ray.t_max);
+  const __m128 widen = _mm_set1_ps(1.0f + 2.0f * gamma_bound(3));
+  for (int axis = 0; axis < 3; ++axis) {
+    const float inverse = ray_direction_inverse[axis];
+    const bool negative = inverse < 0.0f;
+    const __m128 origin = _mm_set1_ps(ray.origin[axis]), scale = _mm_set1_ps(inverse);
+    const __m128 near_plane = _mm_loadu_ps(negative ? highs[axis] : lows[axis]);
+    const __m128 far_plane = _mm_loadu_ps(negative ? lows[axis] : highs[axis]);
+    const __m128 entry = _mm_mul_ps(_mm_sub_ps(near_plane, origin), scale);
+    const __m128 leave = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(far_plane, origin), scale), widen);
+    enter = _mm_max_ps(entry, enter);
+    exit = _mm_min_ps(leave, exit);
+  }
+  _mm_storeu_ps(entry_distances, enter);
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(enter, exit))) & used;
+#else
+  unsigned mask = 0;
+  for (int i = 0; i < node.child_count; ++i)
+    if (reference::ray_enters_box(ray.origin, ray_direction_inverse, node.child_bounds(i), ray.t_min, ray.t_max,
+                                  entry_distances[i]))
+      mask |= 1u << i;
+  return mask & used;
+#endif
+}
+
+namespace {
+
+// Near first: the hit children sorted by entry distance; leaves tested at once in that order,
+// inner children pushed farthest first so that the nearest is visited next. A waiting node
+// keeps its entry distance and is dropped without a box test once a closer hit is known.
+// test_primitive(search, primitive) as intersector.test: a template parameter, so that the
+// reference's triangle test is inlined into the leaf loop (as in solutions/05_bvh/bvh.cpp).
+template <typename TestPrimitive>
+std::optional<BvhHit> traverse4(const Bvh4& bvh, const Ray& ray, bool any_hit, BvhTraversalStats& stats,
+                                const TestPrimitive& test_primitive) {
+  const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
+  Ray search = ray;
+  std::optional<BvhHit> closest;
+  struct Waiting {
+    std::uint32_t node;
+    float t_enter;
+  };
+  // Each visit adds at most 4 - 1 waiting nodes, and a collapsed tree is no deeper than its
+  // binary tree (kBvhMaxDepth levels).
+  Waiting stack[4 * kBvhMaxDepth + 1];
+  int stack_size = 0;
+  stack[stack_size++] = {0, ray.t_min};
+  std::uint64_t nodes_visited = 0, primitives_tested = 0;
+  while (stack_size > 0) {
+    const Waiting waiting = stack[--stack_size];
+    if (waiting.t_enter > search.t_max) continue;
+    const Bvh4Node& node = bvh.nodes[waiting.node];
+    float entries[kBvh4Width];
+    unsigned mask = intersect_ray_box4(search, ray_direction_inverse, node, entries);
+    ++nodes_visited;
+    int order[kBvh4Width], count = 0;
+    for (; mask != 0; mask &= mask - 1) {
+      int slot = 0;
+      while (!(mask & (1u << slot))) ++slot;
+      int at = count++;
+      while (at > 0 && entries[order[at - 1]] > entries[slot]) {
+        order[at] = order[at - 1];
+        --at;
+      }
+      order[at] = slot;
+    }
+    for (int k = 0; k < count; ++k) {  // leaves, nearest first
+      const int slot = order[k];
+      if (!node.is_leaf(slot) || entries[slot] > search.t_max) continue;
+      const std::uint32_t end = node.child[slot] + node.primitive_count[slot];
+      for (std::uint32_t i = node.child[slot]; i < end; ++i) {
+        const std::uint32_t primitive = bvh.primitive_order[i];
+        ++primitives_tested;
+        if (const std::optional<float> t = test_primitive(search, primitive)) {
+          search.t_max = *t;
+          closest = BvhHit{*t, primitive};
+          if (any_hit) break;
+        }
+      }
+      if (any_hit && closest) break;
+    }
+    if (any_hit && closest) break;
+    for (int k = count - 1; k >= 0; --k) {  // inner children, farthest pushed first
+      const int slot = order[k];
+      if (!node.is_leaf(slot)) stack[stack_size++] = {node.child[slot], entries[slot]};
+    }
+  }
+  stats.nodes_visited += nodes_visited;
+  stats.primitives_tested += primitives_tested;
+  return closest;
+}
+
+}  // namespace
+
+std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
+                                     bool any_hit, BvhTraversalStats& stats) {
+  if (bvh.nodes.empty()) return std::nullopt;
+  if (const TriangleEdges* triangles = intersector.triangles) {
+    return traverse4(bvh, ray, any_hit, stats, [triangles](const Ray& search, std::uint32_t primitive) {
+      const TriangleEdges& triangle = triangles[primitive];
+      TriangleHit hit;
+      return reference::moller_trumbore(search, triangle.p0, triangle.edge_01, triangle.edge_02, hit)
+                 ? std::optional<float>(hit.t_hit)
+                 : std::nullopt;
+    });
+  }
+  return traverse4(bvh, ray, any_hit, stats, [&intersector](const Ray& search, std::uint32_t primitive) {
+    return intersector.test(intersector.context, search, primitive);
+  });
+}
+
+}  // namespace raylab
