@@ -50,24 +50,15 @@ const double kLevel = mis_test_level();
 // Not attempted only when both functions are the stub: a stub of stage 07 or 08 that the path
 // samples with costs the tests, which name that stage.
 const bool kRegistered = register_stage(kStage, [] {
-  std::optional<NotImplemented> first;
-  int stubs = 0;
-  auto probe = [&](auto call) {
-    try {
-      call();
-    } catch (const NotImplemented& e) {
-      if (e.stage_id() != kStage) return;
-      ++stubs;
-      if (!first) first = e;
-    }
-  };
-  probe([] { (void)power_heuristic(1, 1.0f, 1, 1.0f); });
-  probe([] {
-    MisScene scene;
-    scene.triangles.push_back({glm::vec3(-1, 0, -1), glm::vec3(-1, 0, 1), glm::vec3(1, 0, 0), glm::vec3(0.0f), glm::vec3(0.5f)});
-    (void)mis_scripted_paths(scene, {MisScriptedPath{glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), 0.5f, glm::vec2(0.5f), 0}});
-  });
-  if (stubs == 2 && first) throw *first;
+  throw_if_every_function_is_a_stub(
+      kStage, {[] { (void)power_heuristic(1, 1.0f, 1, 1.0f); },
+               [] {
+                 MisScene scene;
+                 scene.triangles.push_back(
+                     {glm::vec3(-1, 0, -1), glm::vec3(-1, 0, 1), glm::vec3(1, 0, 0), glm::vec3(0.0f), glm::vec3(0.5f)});
+                 (void)mis_scripted_paths(scene, {MisScriptedPath{glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), 0.5f,
+                                                                  glm::vec2(0.5f), 0}});
+               }});
 });
 
 // ---- power_heuristic -----------------------------------------------------------------------

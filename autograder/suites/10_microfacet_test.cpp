@@ -47,25 +47,14 @@ const double kLevel = testkit::sidak_level(testkit::kGraderFalseFailureRate, 4);
 constexpr double kMistakeLevel = 1e-6;  // a mistake's density "fits" the samples above this p
 
 const bool kRegistered = register_stage(kStage, [] {
-  std::optional<NotImplemented> first;
-  int stubs = 0;
-  auto probe = [&](auto call) {
-    try {
-      call();
-    } catch (const NotImplemented& e) {
-      ++stubs;
-      if (!first) first = e;
-    }
-  };
   const glm::vec3 n(0, 0, 1);
-  probe([&] { (void)ggx_distribution(n, 0.5f); });
-  probe([&] { (void)ggx_smith_g1(n, 0.5f); });
-  probe([&] { (void)microfacet_f(n, n, 0.5f, glm::vec3(1.0f)); });
-  probe([&] { (void)ggx_half_vector_samples(0.5f, {glm::vec2(0.5f)}); });
-  probe([&] { (void)ggx_half_vector_pdf(n, 0.5f); });
-  probe([&] { (void)microfacet_wi_samples(n, 0.5f, {glm::vec2(0.5f)}); });
-  probe([&] { (void)microfacet_pdf(n, n, 0.5f); });
-  if (stubs == 7 && first) throw *first;
+  throw_if_every_function_is_a_stub(
+      kStage, {[&] { (void)ggx_distribution(n, 0.5f); }, [&] { (void)ggx_smith_g1(n, 0.5f); },
+               [&] { (void)microfacet_f(n, n, 0.5f, glm::vec3(1.0f)); },
+               [&] { (void)ggx_half_vector_samples(0.5f, {glm::vec2(0.5f)}); },
+               [&] { (void)ggx_half_vector_pdf(n, 0.5f); },
+               [&] { (void)microfacet_wi_samples(n, 0.5f, {glm::vec2(0.5f)}); },
+               [&] { (void)microfacet_pdf(n, n, 0.5f); }});
 });
 
 MessageArg section(int number) {
@@ -145,55 +134,60 @@ struct ValueCase {
   float got;
 };
 
-// Whether the student's ggx_distribution is right (asked once; other tests' hints name it).
-bool distribution_is_right() {
-  static const bool right = [] {
-    for (const float alpha : kAlphas)
-      for (const float c : kCosines) {
-        const glm::vec3 h = direction(c, 0.7f);
-        if (!close(ggx_distribution(h, alpha), ggx_d(h.z, alpha))) return false;
-      }
-    return true;
-  }();
-  return right;
+// Fails with the first case whose value is not exact(case). Returns whether the diagnosis should
+// go on: false when every value is right, or when it is done here (a value not finite; only the
+// values below the surface wrong, which must be 0).
+template <typename Exact>
+bool fail_first_wrong(const char* function, const std::vector<ValueCase>& cases, const Exact& exact, int section_number) {
+  const auto wrong = std::find_if(cases.begin(), cases.end(), [&](const ValueCase& k) { return !close(k.got, exact(k)); });
+  if (wrong == cases.end()) return false;
+  fail_value(call_text(function, {text(wrong->vector), text(wrong->alpha)}), text(wrong->got),
+             text(static_cast<float>(exact(*wrong))));
+  if (hint_if_not_finite(function, {wrong->got}, {MessageId::microfacet_advice_division, {section(section_number)}}))
+    return false;
+  if (std::all_of(cases.begin(), cases.end(),
+                  [&](const ValueCase& k) { return k.vector.z <= 0.0f || close(k.got, exact(k)); })) {
+    add_hint({MessageId::microfacet_below_not_zero, {{"function", function}, section(section_number)}});
+    return false;
+  }
+  return true;
 }
 
+// The student's function(direction, alpha) at every alpha of kAlphas and cosine of kCosines
+// (directions at azimuth phi).
+template <typename Function>
+std::vector<ValueCase> value_cases(float phi, const Function& function) {
+  std::vector<ValueCase> cases;
+  for (const float alpha : kAlphas)
+    for (const float c : kCosines) {
+      const glm::vec3 v = direction(c, phi);
+      cases.push_back({v, alpha, function(v, alpha)});
+    }
+  return cases;
+}
+
+double exact_distribution(const ValueCase& k) { return ggx_d(k.vector.z, k.alpha); }
+double exact_smith_g1(const ValueCase& k) { return smith_g1(k.vector.z, k.alpha); }
+double exact_half_vector_pdf(const ValueCase& k) { return ggx_d(k.vector.z, k.alpha) * std::max(0.0f, k.vector.z); }
+
+template <typename Exact>
+bool all_close(const std::vector<ValueCase>& cases, const Exact& exact) {
+  return std::all_of(cases.begin(), cases.end(), [&](const ValueCase& k) { return close(k.got, exact(k)); });
+}
+
+// Whether the student's D and G1 are right (asked once; other tests' hints name them).
+bool distribution_is_right() {
+  static const bool right = all_close(value_cases(0.7f, ggx_distribution), exact_distribution);
+  return right;
+}
 bool smith_g1_is_right() {
-  static const bool right = [] {
-    for (const float alpha : kAlphas)
-      for (const float c : kCosines) {
-        const glm::vec3 v = direction(c, 2.1f);
-        if (!close(ggx_smith_g1(v, alpha), smith_g1(v.z, alpha))) return false;
-      }
-    return true;
-  }();
+  static const bool right = all_close(value_cases(2.1f, ggx_smith_g1), exact_smith_g1);
   return right;
 }
 
 GRADED_TEST(kStage, Stage10Microfacet, GgxDistribution, 5) {
-  std::vector<ValueCase> cases;
-  for (const float alpha : kAlphas)
-    for (const float c : kCosines) {
-      const glm::vec3 h = direction(c, 0.7f);
-      cases.push_back({h, alpha, ggx_distribution(h, alpha)});
-    }
-  const ValueCase* wrong = nullptr;
-  for (const ValueCase& k : cases)
-    if (!close(k.got, ggx_d(k.vector.z, k.alpha))) {
-      wrong = &k;
-      break;
-    }
-  if (!wrong) return;
-  fail_value(call_text("ggx_distribution", {text(wrong->vector), text(wrong->alpha)}), text(wrong->got),
-             text(static_cast<float>(ggx_d(wrong->vector.z, wrong->alpha))));
-  if (hint_if_not_finite("ggx_distribution", {wrong->got}, {MessageId::microfacet_advice_division, {section(2)}})) return;
-  // Only the cases below the surface wrong: the formula is right where it applies.
-  if (std::all_of(cases.begin(), cases.end(), [](const ValueCase& k) {
-        return k.vector.z <= 0.0f || close(k.got, ggx_d(k.vector.z, k.alpha));
-      })) {
-    add_hint({MessageId::microfacet_below_not_zero, {{"function", "ggx_distribution"}, section(2)}});
-    return;
-  }
+  const std::vector<ValueCase> cases = value_cases(0.7f, ggx_distribution);
+  if (!fail_first_wrong("ggx_distribution", cases, exact_distribution, 2)) return;
   // The fitted model: GGX or Beckmann, alpha as it is or not, with or without 1 / pi.
   struct Model {
     bool beckmann;
@@ -236,28 +230,8 @@ GRADED_TEST(kStage, Stage10Microfacet, GgxDistribution, 5) {
 // ---- G1 ------------------------------------------------------------------------------------
 
 GRADED_TEST(kStage, Stage10Microfacet, SmithG1, 4) {
-  std::vector<ValueCase> cases;
-  for (const float alpha : kAlphas)
-    for (const float c : kCosines) {
-      const glm::vec3 v = direction(c, 2.1f);
-      cases.push_back({v, alpha, ggx_smith_g1(v, alpha)});
-    }
-  const ValueCase* wrong = nullptr;
-  for (const ValueCase& k : cases)
-    if (!close(k.got, smith_g1(k.vector.z, k.alpha))) {
-      wrong = &k;
-      break;
-    }
-  if (!wrong) return;
-  fail_value(call_text("ggx_smith_g1", {text(wrong->vector), text(wrong->alpha)}), text(wrong->got),
-             text(static_cast<float>(smith_g1(wrong->vector.z, wrong->alpha))));
-  if (hint_if_not_finite("ggx_smith_g1", {wrong->got}, {MessageId::microfacet_advice_division, {section(3)}})) return;
-  if (std::all_of(cases.begin(), cases.end(), [](const ValueCase& k) {
-        return k.vector.z <= 0.0f || close(k.got, smith_g1(k.vector.z, k.alpha));
-      })) {
-    add_hint({MessageId::microfacet_below_not_zero, {{"function", "ggx_smith_g1"}, section(3)}});
-    return;
-  }
+  const std::vector<ValueCase> cases = value_cases(2.1f, ggx_smith_g1);
+  if (!fail_first_wrong("ggx_smith_g1", cases, exact_smith_g1, 3)) return;
   if (std::all_of(cases.begin(), cases.end(), [](const ValueCase& k) { return k.vector.z <= 0.0f || close(k.got, 1.0); })) {
     add_hint({MessageId::microfacet_g1_no_masking, {section(3)}});
     return;
@@ -404,23 +378,8 @@ GRADED_TEST(kStage, Stage10Microfacet, MicrofacetF, 6) {
 // ---- The half vectors' density -------------------------------------------------------------
 
 GRADED_TEST(kStage, Stage10Microfacet, HalfVectorPdf, 3) {
-  std::vector<ValueCase> cases;
-  for (const float alpha : kAlphas)
-    for (const float c : kCosines) {
-      const glm::vec3 h = direction(c, 1.3f);
-      cases.push_back({h, alpha, ggx_half_vector_pdf(h, alpha)});
-    }
-  auto exact = [](const ValueCase& k) { return ggx_d(k.vector.z, k.alpha) * std::max(0.0f, k.vector.z); };
-  const ValueCase* wrong = nullptr;
-  for (const ValueCase& k : cases)
-    if (!close(k.got, exact(k))) {
-      wrong = &k;
-      break;
-    }
-  if (!wrong) return;
-  fail_value(call_text("ggx_half_vector_pdf", {text(wrong->vector), text(wrong->alpha)}), text(wrong->got),
-             text(static_cast<float>(exact(*wrong))));
-  if (hint_if_not_finite("ggx_half_vector_pdf", {wrong->got}, {MessageId::microfacet_advice_division, {section(5)}})) return;
+  const std::vector<ValueCase> cases = value_cases(1.3f, ggx_half_vector_pdf);
+  if (!fail_first_wrong("ggx_half_vector_pdf", cases, exact_half_vector_pdf, 5)) return;
   const bool own_d = !distribution_is_right();
   for (const bool students_d : {false, true}) {
     if (students_d && !own_d) continue;
@@ -676,12 +635,7 @@ GRADED_TEST(kStage, Stage10Microfacet, MicrofacetPdf, 3) {
     add_hint({MessageId::microfacet_below_not_zero, {{"function", "microfacet_pdf"}, section(6)}});
     return;
   }
-  bool own_pdf_h = false;
-  for (const float alpha : kAlphas)
-    for (const float c : kCosines) {
-      const glm::vec3 h = direction(c, 0.9f);
-      if (!close(ggx_half_vector_pdf(h, alpha), ggx_d(h.z, alpha) * std::max(0.0f, h.z))) own_pdf_h = true;
-    }
+  const bool own_pdf_h = !all_close(value_cases(1.3f, ggx_half_vector_pdf), exact_half_vector_pdf);
   for (const Jacobian jacobian : {Jacobian::Right, Jacobian::Missing, Jacobian::AtNormal, Jacobian::FourMissing})
     for (const bool students : {false, true}) {
       if ((students && !own_pdf_h) || (!students && jacobian == Jacobian::Right)) continue;

@@ -396,6 +396,8 @@ int compare_traversal_with_brute_force(const std::function<std::optional<BvhHit>
                   {{"zero_component", zero_component ? std::vector<Message>{MessageId::bvh_zero_component_note}
                                                      : std::vector<Message>{}},
                    {"ray", ray_text(ray)}, {"box", box_text(*missed)}, {"t", std::to_string(expected->t_hit)}}});
+      } else if (!boxes_on_the_way) {
+        add_hint(MessageId::bvh_misses_hit_somewhere);  // whose box tests, this comparison cannot tell
       } else if (zero_component) {
         add_hint(MessageId::bvh_misses_zero_component);
       } else {

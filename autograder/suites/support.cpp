@@ -2,6 +2,7 @@
 
 #include "grading.h"
 
+#include "raylab/error.h"
 #include "raylab/stage_table.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -29,6 +31,21 @@ bool hint_non_finite(const MessageArg& what, std::initializer_list<float> result
   return false;
 }
 }  // namespace
+
+void throw_if_every_function_is_a_stub(const char* stage_id, std::initializer_list<std::function<void()>> calls) {
+  std::optional<NotImplemented> first;
+  std::size_t stubs = 0;
+  for (const std::function<void()>& call : calls) {
+    try {
+      call();
+    } catch (const NotImplemented& e) {
+      if (e.stage_id() != stage_id) continue;
+      ++stubs;
+      if (!first) first = e;
+    }
+  }
+  if (stubs == calls.size() && first) throw *first;
+}
 
 bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice) {
   return hint_non_finite({"what", what}, results, advice);

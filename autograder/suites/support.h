@@ -25,6 +25,12 @@ namespace raylab::grading {
 // Draw one value per statement (or in a braced list): the order in which a function's
 // arguments are evaluated differs between compilers, and the cases must not.
 
+// The probe of a stage of several functions (register_stage's): makes each call, and throws the
+// first NotImplemented of `stage_id` only when every call threw one, so that the stage is "not
+// attempted" while all its functions are stubs (and each test of a written function is graded).
+// A stub of another stage that a call goes through is that stage's to report: not counted.
+void throw_if_every_function_is_a_stub(const char* stage_id, std::initializer_list<std::function<void()>> calls);
+
 // The first check of every stage's diagnosis: when one of the student's `results` is not a
 // number, adds the hint "returns NaN (<what> = NaN): <advice>" (or "returns infinity") and
 // returns true, so no later hint reads a NaN as a wrong number ("a hit behind the ray").

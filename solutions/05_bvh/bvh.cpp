@@ -12,8 +12,8 @@
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
 
-#include "../03_triangle/moller_trumbore.h"
 #include "../04_box/box_slabs.h"
+#include "leaf_test.h"
 
 #include <algorithm>
 #include <array>
@@ -393,24 +393,15 @@ std::optional<BvhHit> traverse(const Bvh& bvh, const Ray& ray, bool any_hit, Bvh
 }  // namespace
 
 // The renderer's meshes come with their triangles (PrimitiveIntersector::triangles): then
-// the reference's own Moller-Trumbore (moller_trumbore.h, the same source as its stage 03)
-// runs inlined in the leaf loop, instead of two indirect calls per triangle (intersector.test
-// into the framework, the framework into stage 03). Same hits, same bits.
+// the reference's own Moller-Trumbore runs inlined in the leaf loop, instead of two indirect
+// calls per triangle (intersector.test into the framework, the framework into stage 03)
+// (leaf_test.h).
 std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray,
                                     const PrimitiveIntersector& intersector, bool any_hit,
                                     BvhTraversalStats& stats) {
   if (bvh.nodes.empty()) return std::nullopt;
-  if (const TriangleEdges* triangles = intersector.triangles) {
-    return traverse(bvh, ray, any_hit, stats, [triangles](const Ray& search, std::uint32_t primitive) {
-      const TriangleEdges& triangle = triangles[primitive];
-      TriangleHit hit;
-      return reference::moller_trumbore(search, triangle.p0, triangle.edge_01, triangle.edge_02, hit)
-                 ? std::optional<float>(hit.t_hit)
-                 : std::nullopt;
-    });
-  }
-  return traverse(bvh, ray, any_hit, stats, [&intersector](const Ray& search, std::uint32_t primitive) {
-    return intersector.test(intersector.context, search, primitive);
+  return reference::with_leaf_test(intersector, [&](const auto& test_primitive) {
+    return traverse(bvh, ray, any_hit, stats, test_primitive);
   });
 }
 

@@ -2,8 +2,8 @@
 // assignments/05c_wide_bvh/wide_bvh.cpp and docs/05c_wide_bvh.md.
 #include "raylab/stages/05c_wide_bvh.h"
 
-#include "../03_triangle/moller_trumbore.h"
 #include "../04_box/box_slabs.h"
+#include "../05_bvh/leaf_test.h"
 
 #include "raylab/math.h"
 
@@ -198,17 +198,8 @@ std::optional<BvhHit> traverse4(const Bvh4& bvh, const Ray& ray, bool any_hit, B
 std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
                                      bool any_hit, BvhTraversalStats& stats) {
   if (bvh.nodes.empty()) return std::nullopt;
-  if (const TriangleEdges* triangles = intersector.triangles) {
-    return traverse4(bvh, ray, any_hit, stats, [triangles](const Ray& search, std::uint32_t primitive) {
-      const TriangleEdges& triangle = triangles[primitive];
-      TriangleHit hit;
-      return reference::moller_trumbore(search, triangle.p0, triangle.edge_01, triangle.edge_02, hit)
-                 ? std::optional<float>(hit.t_hit)
-                 : std::nullopt;
-    });
-  }
-  return traverse4(bvh, ray, any_hit, stats, [&intersector](const Ray& search, std::uint32_t primitive) {
-    return intersector.test(intersector.context, search, primitive);
+  return reference::with_leaf_test(intersector, [&](const auto& test_primitive) {
+    return traverse4(bvh, ray, any_hit, stats, test_primitive);
   });
 }
 
