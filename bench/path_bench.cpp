@@ -26,6 +26,10 @@
 //   light-cosine-cmj   the same with the kit's stratified samples (raylab/sampler.h): the reference
 //   mis                light sampling and cosine-weighted directions, both counting emission, weighted
 //                      by the power heuristic (Veach), stratified samples
+//   raylab-reference   not a replica: the renderer itself, render() as raylab-reference render
+//                      --integrator path runs it (stage 09's path_radiance, the reference's
+//                      geometry), on one thread, with another seed than the reference image's
+//                      (at 1 spp it shoots through each pixel's centre, as the renderer does)
 // The peer row: GAMES101 assignment 7 as a student completed it, 784x784 at 16 spp, one thread, on
 // this machine: 31.8 s (1,436 s as shipped, a new random_device and mt19937 per number). Its error is
 // taken as the games101 strategy's at 16 spp (with jittered pixel positions: the peer shoots every
@@ -68,7 +72,7 @@ constexpr float kRoulette = 0.8f;
 constexpr double kPeerSeconds = 31.8;  // GAMES101 assignment 7, 784x784, 16 spp, one thread
 constexpr int kPeerWidth = 784, kPeerSamples = 16;
 
-enum class Strategy { BsdfUniform, BsdfCosine, Games101, LightCosine, LightCosineCmj, Mis };
+enum class Strategy { BsdfUniform, BsdfCosine, Games101, LightCosine, LightCosineCmj, Mis, Renderer };
 
 struct StrategyInfo {
   Strategy strategy;
@@ -82,6 +86,7 @@ constexpr StrategyInfo kStrategies[] = {
     {Strategy::LightCosine, "light-cosine", true, false, false, false},
     {Strategy::LightCosineCmj, "light-cosine-cmj", true, false, true, false},
     {Strategy::Mis, "mis", true, false, true, true},
+    {Strategy::Renderer, "raylab-reference", true, false, true, false},
 };
 
 // The mis strategy weighs with stage 09b's power_heuristic (the reference's, linked here) and the
@@ -172,10 +177,17 @@ struct Timed {
 // One thread: every pixel, samples_per_pixel paths. Independent strategies draw each sample from
 // a sampler of its own seed; stratified ones from one sampler of the pixel's samples.
 Timed render_strategy(const Scene& scene, const RenderContext& context, const StrategyInfo& strategy,
-                      int samples_per_pixel) {
+                      int samples_per_pixel, const RenderSettings& renderer) {
   const Camera& camera = scene.camera;
   Timed result{Image(camera.width, camera.height), 0.0};
   const std::clock_t start = std::clock();
+  if (strategy.strategy == Strategy::Renderer) {
+    RenderSettings settings = renderer;
+    settings.samples_per_pixel = samples_per_pixel;
+    result.image = render(scene, settings);
+    result.seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+    return result;
+  }
   Sampler stratified(samples_per_pixel, 2);
   for (int y = 0; y < camera.height; ++y)
     for (int x = 0; x < camera.width; ++x) {
@@ -282,11 +294,15 @@ int main(int argc, char** argv) {
     std::vector<std::vector<Point>> curves;
     std::vector<double> paths_per_second;
     const double pixels = static_cast<double>(width) * width;
+    RenderSettings renderer = settings;  // the raylab-reference row: one thread, another seed
+    renderer.threads = 1;
+    renderer.seed = 2;
+    renderer.track_variance = false;
     for (const StrategyInfo& strategy : kStrategies) {
       std::vector<Point> curve;
       double seconds = 0.0, paths = 0.0;
       for (int spp = 1; spp <= max_spp; spp *= 2) {
-        const Timed timed = render_strategy(scene, context, strategy, spp);
+        const Timed timed = render_strategy(scene, context, strategy, spp, renderer);
         const double rmse = std::sqrt(std::max(0.0, mean_squared_error(timed.image, reference)));
         curve.push_back({spp, timed.seconds, rmse});
         seconds += timed.seconds;

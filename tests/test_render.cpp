@@ -59,43 +59,96 @@ TEST(Render, OneAndTwoThreadsGiveIdenticalPixels) {
          "cover about a tenth of the picture)";
 }
 
-// Renders `scene_file` at 64 x 48 with and without TracingFunctions::reference_stages and
-// expects the same pixels, bit for bit.
-void expect_same_image_with_reference_stages(const std::string& scene_file, int samples_per_pixel) {
+// The scene's geometry with and without TracingFunctions::reference_stages (one SAH tree over
+// every triangle, tested inlined, against a median tree per mesh and a call per triangle) must
+// find the same closest t for every ray, bit for bit, and the same occlusion: camera rays at
+// 64 x 48, and rays from points spread over the scene's box in every direction. The triangle
+// found may differ only on a tie (two triangles at the same t: a shared edge, a box's face on
+// the floor), and then the same t is what this checks.
+void expect_same_hits_with_reference_stages(const std::string& scene_file) {
   Scene scene = load_scene(source_path(scene_file));
   scene.camera.width = 64;
   scene.camera.height = 48;
-  RenderSettings by_calls;
-  by_calls.integrator = *integrator_from_name(scene.integrator);
-  by_calls.max_depth = scene.max_depth;
-  by_calls.samples_per_pixel = samples_per_pixel;
-  RenderSettings inlined = by_calls;
-  inlined.tracing.reference_stages = true;
-  // The bunny has a tree, and so do the Cornell box's two boxes (the walls, of two triangles
-  // each, are tested one triangle after the other, by calls, either way).
-  const SceneGeometry geometry(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, inlined.tracing);
-  ASSERT_GT(geometry.bvh_count(), 0u) << scene_file;
-  const Image expected = render(scene, by_calls);
-  const Image got = render(scene, inlined);
-  int differing = 0;
-  for (int y = 0; y < expected.height(); ++y)
-    for (int x = 0; x < expected.width(); ++x)
-      if (std::memcmp(&got.at(x, y), &expected.at(x, y), sizeof(glm::vec3)) != 0 && ++differing <= 5)
-        ADD_FAILURE() << scene_file << ", pixel (" << x << ", " << y << "): inlined " << got.at(x, y)
-                      << ", by calls " << expected.at(x, y);
-  EXPECT_EQ(differing, 0) << scene_file;
-  int not_background = 0;
-  for (const glm::vec3& pixel : got.pixels()) not_background += pixel != scene.background;
-  EXPECT_GT(not_background, 64 * 48 / 10) << scene_file << ": pixels other than the background";
+  TracingFunctions reference_stages;
+  reference_stages.reference_stages = true;
+  const SceneGeometry by_calls(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore);
+  const SceneGeometry inlined(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, reference_stages);
+  ASSERT_GT(by_calls.bvh_count(), 0u) << scene_file;
+  ASSERT_EQ(inlined.bvh_count(), 1u) << scene_file << ": one tree over every triangle";
+  Bounds3 scene_box;
+  for (const TriangleMesh& mesh : scene.meshes)
+    for (const glm::vec3& position : mesh.positions) scene_box.extend(position);
+  std::vector<Ray> rays;
+  for (int y = 0; y < scene.camera.height; ++y)
+    for (int x = 0; x < scene.camera.width; ++x)
+      rays.push_back(generate_camera_ray(scene.camera, x, y, glm::vec2(0.5f)));
+  std::uint32_t state = 12345u;  // a fixed sequence, the same on every platform
+  const auto next_unit = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>(state >> 8) / 16777216.0f;
+  };
+  for (int i = 0; i < 20000; ++i) {
+    Ray ray;
+    ray.origin = scene_box.min + glm::vec3(next_unit(), next_unit(), next_unit()) * (scene_box.max - scene_box.min);
+    ray.direction = glm::vec3(next_unit(), next_unit(), next_unit()) * 2.0f - 1.0f;
+    if (i % 2 == 1) ray.t_max = next_unit() * 200.0f;  // shadow rays stop short
+    rays.push_back(ray);
+  }
+  int hits = 0, differing = 0;
+  for (const Ray& ray : rays) {
+    const std::optional<SurfaceHit> expected = by_calls.intersect(ray), got = inlined.intersect(ray);
+    const bool expected_occluded = by_calls.occluded(ray), got_occluded = inlined.occluded(ray);
+    hits += expected.has_value();
+    const bool same = expected.has_value() == got.has_value() && expected_occluded == got_occluded &&
+                      (!expected || std::memcmp(&expected->t_hit, &got->t_hit, sizeof(float)) == 0);
+    if (!same && ++differing <= 5)
+      ADD_FAILURE() << scene_file << ", ray from " << ray.origin << " along " << ray.direction << " to t "
+                    << ray.t_max << ": one tree " << (got ? got->t_hit : -1.0f) << " occluded " << got_occluded
+                    << ", by calls " << (expected ? expected->t_hit : -1.0f) << " occluded " << expected_occluded;
+  }
+  EXPECT_EQ(differing, 0) << scene_file << " over " << rays.size() << " rays";
+  EXPECT_GT(hits, static_cast<int>(rays.size()) / 4) << scene_file << ": rays that hit something";
 }
 
-TEST(Render, ReferenceStagesInlinedTrianglesGiveTheSameImage) {
-  // raylab-reference lets the reference traversal test a mesh's triangles itself, inlined
-  // (TracingFunctions::reference_stages); the picture must be the one of a call per triangle,
-  // bit for bit: camera rays, shadow rays (any hit) and reflections off the bunny's BVH, and
-  // the Cornell box's paths.
-  expect_same_image_with_reference_stages("scenes/bunny.json", 1);
-  expect_same_image_with_reference_stages("scenes/cornell.json", 4);
+TEST(Render, ReferenceStagesFindTheSameHits) {
+  expect_same_hits_with_reference_stages("scenes/bunny.json");
+  expect_same_hits_with_reference_stages("scenes/cornell.json");
+}
+
+TEST(Render, ReferenceStagesGiveTheSameImage) {
+  // raylab-reference's geometry (one tree, inlined triangle tests) renders the picture of a
+  // call per triangle: bit for bit for the bunny (camera rays, shadow rays and reflections,
+  // no ties on its mesh); for the Cornell box's paths up to a path that met a tie somewhere
+  // (a different triangle at the same t gives a point an ulp away, and the path goes on from
+  // there): at most 1% of the pixels, each within 1% of its value.
+  for (const std::string scene_file : {"scenes/bunny.json", "scenes/cornell.json"}) {
+    Scene scene = load_scene(source_path(scene_file));
+    scene.camera.width = 64;
+    scene.camera.height = 48;
+    RenderSettings by_calls;
+    by_calls.integrator = *integrator_from_name(scene.integrator);
+    by_calls.max_depth = scene.max_depth;
+    by_calls.samples_per_pixel = scene_file == "scenes/bunny.json" ? 1 : 4;
+    RenderSettings inlined = by_calls;
+    inlined.tracing.reference_stages = true;
+    const Image expected = render(scene, by_calls);
+    const Image got = render(scene, inlined);
+    const int allowed = scene_file == "scenes/bunny.json" ? 0 : 64 * 48 / 100;
+    int differing = 0;
+    for (int y = 0; y < expected.height(); ++y)
+      for (int x = 0; x < expected.width(); ++x) {
+        const glm::vec3 a = got.at(x, y), b = expected.at(x, y);
+        if (std::memcmp(&a, &b, sizeof(glm::vec3)) == 0) continue;
+        ++differing;
+        const bool close = glm::all(glm::lessThanEqual(glm::abs(a - b), 0.01f * glm::abs(b) + 1e-6f));
+        if ((allowed == 0 || !close) && differing <= 5)
+          ADD_FAILURE() << scene_file << ", pixel (" << x << ", " << y << "): one tree " << a << ", by calls " << b;
+      }
+    EXPECT_LE(differing, allowed) << scene_file;
+    int not_background = 0;
+    for (const glm::vec3& pixel : got.pixels()) not_background += pixel != scene.background;
+    EXPECT_GT(not_background, 64 * 48 / 10) << scene_file << ": pixels other than the background";
+  }
 }
 
 TEST(Render, EmptySceneIsAllBackground) {

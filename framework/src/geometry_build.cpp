@@ -10,6 +10,7 @@
 #include "raylab/stages/02_sphere.h"
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
+#include "raylab/stages/05c_wide_bvh.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -44,10 +45,19 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
                           : triangle_test == TriangleTest::Watertight ? intersect_ray_triangle_watertight
                                                                       : intersect_ray_triangle),
       intersect_sphere_(tracing.sphere ? tracing.sphere : intersect_ray_sphere) {
+  // The reference's own stages (raylab-reference, bench/) trace every triangle of the scene
+  // through one SAH tree (stage 05b), 4 wide (stage 05c): no tree per mesh under a tree over the objects, and no
+  // calls for the small meshes (a wall of two triangles) that a per-mesh tree would not pay
+  // for. The same closest hits; a student's program keeps a median tree per mesh, as the
+  // header says.
+  reference_trees_ = tracing.reference_stages && !tracing.replaces_primitive_tests();
   for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
     const TriangleMesh& mesh = scene.meshes[m];
-    MeshPart part;
-    part.first_triangle = static_cast<std::uint32_t>(triangles_.size());
+    if (meshes_.empty() || !reference_trees_) {
+      meshes_.emplace_back();
+      meshes_.back().first_triangle = static_cast<std::uint32_t>(triangles_.size());
+    }
+    MeshPart& part = meshes_.back();
     for (std::uint32_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
       const Triangle triangle{mesh.positions[mesh.indices[i]], mesh.positions[mesh.indices[i + 1]],
                               mesh.positions[mesh.indices[i + 2]], m, i};
@@ -55,7 +65,6 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
       triangles_.push_back(triangle);
     }
     part.triangle_count = static_cast<std::uint32_t>(triangles_.size()) - part.first_triangle;
-    meshes_.push_back(std::move(part));
   }
   if (acceleration == Acceleration::BvhAlways) brute_force_limit_ = 0;
   if (tracing.replaces_primitive_tests()) acceleration = Acceleration::BruteForce;
@@ -79,8 +88,9 @@ void SceneGeometry::build_bvhs() {
       boxes.reserve(mesh.triangle_count);
       for (std::uint32_t i = 0; i < mesh.triangle_count; ++i)
         boxes.push_back(triangle_bounds(first[i].p0, first[i].p1, first[i].p2));
-      mesh.bvh = build_bvh(boxes, kBvhLeafSize);
-      check_tree(mesh.bvh, boxes, scene_.meshes[first->mesh].name);
+      mesh.bvh = reference_trees_ ? build_bvh_sah(boxes, kBvhLeafSize) : build_bvh(boxes, kBvhLeafSize);
+      const bool one_mesh = first->mesh == first[mesh.triangle_count - 1].mesh;
+      check_tree(mesh.bvh, boxes, one_mesh ? scene_.meshes[first->mesh].name : "the scene's triangles");
       // Store the triangles in leaf order, so that a leaf's triangles are adjacent in memory;
       // the BVH's primitive_order then becomes the identity.
       std::vector<Triangle> reordered;
@@ -90,6 +100,7 @@ void SceneGeometry::build_bvhs() {
         mesh.bvh.primitive_order[i] = i;
       }
       std::copy(reordered.begin(), reordered.end(), first);
+      if (reference_trees_) mesh.wide = collapse_bvh4(mesh.bvh);
     }
     const std::size_t object_count = spheres_.size() + meshes_.size();
     if (object_count > brute_force_limit_) {

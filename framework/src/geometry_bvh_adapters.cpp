@@ -5,6 +5,7 @@
 #include "geometry_query.h"
 
 #include "raylab/stages/05_bvh.h"
+#include "raylab/stages/05c_wide_bvh.h"
 
 namespace raylab {
 
@@ -45,8 +46,13 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     BvhTraversalStats stats;
     PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
     if (hand_triangles_to_traversal_) intersector.triangles = triangle_edges_.data() + mesh.first_triangle;
+    // The reference's own programs traverse the 4-wide tree (same leaves, same hits).
+    const auto traverse = [&](bool any_hit) {
+      return mesh.wide.nodes.empty() ? intersect_bvh(mesh.bvh, ray, intersector, any_hit, stats)
+                                     : intersect_bvh4(mesh.wide, ray, intersector, any_hit, stats);
+    };
     if (query.any_hit) {
-      const std::optional<BvhHit> hit = intersect_bvh(mesh.bvh, ray, intersector, true, stats);
+      const std::optional<BvhHit> hit = traverse(true);
       return hit ? std::optional<float>(hit->t_hit) : std::nullopt;
     }
     // This mesh's own closest hit is recorded apart from the query's (which may hold a closer
@@ -54,7 +60,7 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     HitRecord* const query_record = query.record;
     HitRecord mesh_record;
     query.record = &mesh_record;
-    const std::optional<BvhHit> hit = intersect_bvh(mesh.bvh, ray, intersector, false, stats);
+    const std::optional<BvhHit> hit = traverse(false);
     query.record = query_record;
     if (!hit || hit->primitive >= mesh.triangle_count) return std::nullopt;
     const std::uint32_t returned = mesh.first_triangle + hit->primitive;

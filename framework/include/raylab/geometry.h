@@ -3,7 +3,9 @@
 //
 // Acceleration (stages 04_box, 05_bvh): every mesh of more than a few triangles gets its own
 // BVH over its triangles, and a scene of more than a few objects (spheres and meshes) a
-// top-level BVH over the objects' boxes; smaller sets are tested one by one. If build_bvh,
+// top-level BVH over the objects' boxes; smaller sets are tested one by one. (The reference's
+// own programs, TracingFunctions::reference_stages, put every triangle under one SAH tree
+// collapsed to 4 wide, stages 05b and 05c, and test the triangles inlined.) If build_bvh,
 // intersect_bvh or intersect_ray_box is still a stub (throws NotImplemented), the geometry
 // tests every primitive and says so once per process on stderr, at the first query:
 // "raylab: stage 05_bvh not implemented yet: testing every primitive (slow)": a student who has not reached stage 5 can still render.
@@ -22,6 +24,7 @@
 #include "raylab/stages/03_triangle.h"
 #include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/05_bvh.h"
+#include "raylab/stages/05c_wide_bvh.h"
 
 #include <cstdint>
 #include <optional>
@@ -66,10 +69,12 @@ struct TracingFunctions {
   std::optional<TriangleHit> (*triangle)(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1,
                                          const glm::vec3& p2) = nullptr;
   // Set only by programs whose stages are all the reference's (raylab-reference, bench/):
-  // then, with stage 03's Moller-Trumbore test, the geometry hands the traversal its meshes'
-  // triangles (PrimitiveIntersector::triangles), which the reference traversal tests inlined
-  // instead of a call per triangle: the same hits, faster. Never in a student's program or a
-  // grader, whose stage 03 may be another than the reference's.
+  // then every triangle of the scene goes under one tree, built by the SAH (stage 05b) and
+  // collapsed to 4 wide (stage 05c), and with stage 03's Moller-Trumbore test the geometry
+  // hands the traversal the triangles (PrimitiveIntersector::triangles), which the reference
+  // traversal tests inlined instead of a call per triangle: the same closest t, faster (the
+  // triangle found may differ on a tie). Never in a student's program or a grader, whose
+  // stages may be others than the reference's.
   bool reference_stages = false;
   bool replaces_primitive_tests() const { return sphere != nullptr || triangle != nullptr; }
 };
@@ -111,6 +116,7 @@ class SceneGeometry {
     std::uint32_t triangle_count = 0;
     Bounds3 bounds;
     Bvh bvh;  // empty: test every triangle
+    Bvh4 wide;  // reference_trees_ only: bvh collapsed to 4 wide (stage 05c), traversed instead
   };
   // The closest hit a query's primitive tests have reported so far (by the framework's own
   // comparison of t, whatever order a traversal calls the tests in), and its details.
@@ -165,6 +171,10 @@ class SceneGeometry {
   // TracingFunctions::reference_stages and the Moller-Trumbore test.
   std::vector<TriangleEdges> triangle_edges_;
   bool hand_triangles_to_traversal_ = false;
+  // TracingFunctions::reference_stages (and no tests of its own): one part for every mesh's
+  // triangles, under a tree of the reference's SAH build (stage 05b) collapsed to 4 wide
+  // (stage 05c).
+  bool reference_trees_ = false;
   std::vector<MeshPart> meshes_;
   Bvh objects_bvh_;  // over spheres_ then meshes_; empty: test every object
   // The stub stage ("05_bvh" or "04_box") that made us fall back to testing every primitive;
