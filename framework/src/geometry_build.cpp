@@ -69,6 +69,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
   if (acceleration == Acceleration::BvhAlways) brute_force_limit_ = 0;
   if (tracing.replaces_primitive_tests()) acceleration = Acceleration::BruteForce;
   if (acceleration != Acceleration::BruteForce) build_bvhs();
+  only_one_tree_ = spheres_.empty() && meshes_.size() == 1 && !meshes_.front().bvh.nodes.empty();
   // bvh_count() is 0 when testing every primitive (brute force, or stage 05 a stub).
   hand_triangles_to_traversal_ = tracing.reference_stages && !tracing.replaces_primitive_tests() &&
                                  triangle_test == TriangleTest::MollerTrumbore && bvh_count() > 0;

@@ -91,8 +91,12 @@ Bvh4 collapse_bvh4(const Bvh& binary) {
   return wide;
 }
 
-unsigned intersect_ray_box4(const Ray& ray, const glm::vec3& ray_direction_inverse, const Bvh4Node& node,
-                            float entry_distances[kBvh4Width]) {
+namespace {
+
+// intersect_ray_box4's test, here so that the traversal below has it inlined (a call per node
+// spills the ray's registers; as stage 05's reference inlines box_slabs.h).
+inline unsigned box4_test(const Ray& ray, const glm::vec3& ray_direction_inverse, const Bvh4Node& node,
+                          float entry_distances[kBvh4Width]) {
   const unsigned used = (1u << node.child_count) - 1u;
 #if RAYLAB_WIDE_BVH_SSE
   // box_slabs.h four lanes at a time: the entry plane chosen by the sign of the inverse
@@ -126,6 +130,13 @@ unsigned intersect_ray_box4(const Ray& ray, const glm::vec3& ray_direction_inver
 #endif
 }
 
+}  // namespace
+
+unsigned intersect_ray_box4(const Ray& ray, const glm::vec3& ray_direction_inverse, const Bvh4Node& node,
+                            float entry_distances[kBvh4Width]) {
+  return box4_test(ray, ray_direction_inverse, node, entry_distances);
+}
+
 namespace {
 
 // Near first: the hit children sorted by entry distance; leaves tested at once in that order,
@@ -154,7 +165,7 @@ std::optional<BvhHit> traverse4(const Bvh4& bvh, const Ray& ray, bool any_hit, B
     if (waiting.t_enter > search.t_max) continue;
     const Bvh4Node& node = bvh.nodes[waiting.node];
     float entries[kBvh4Width];
-    unsigned mask = intersect_ray_box4(search, ray_direction_inverse, node, entries);
+    unsigned mask = box4_test(search, ray_direction_inverse, node, entries);
     ++nodes_visited;
     int order[kBvh4Width], count = 0;
     for (; mask != 0; mask &= mask - 1) {

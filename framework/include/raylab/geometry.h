@@ -175,6 +175,8 @@ class SceneGeometry {
   // triangles, under a tree of the reference's SAH build (stage 05b) collapsed to 4 wide
   // (stage 05c).
   bool reference_trees_ = false;
+  // No spheres, and every triangle under one tree: a query goes straight to that tree.
+  bool only_one_tree_ = false;
   std::vector<MeshPart> meshes_;
   Bvh objects_bvh_;  // over spheres_ then meshes_; empty: test every object
   // The stub stage ("05_bvh" or "04_box") that made us fall back to testing every primitive;
