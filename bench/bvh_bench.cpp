@@ -6,7 +6,8 @@
 // about N triangles (default 1,000,000) made by make_displaced_sphere: no big files.
 // Accelerators: brute force (bunny only: every ray tests every triangle), the reference
 // median-split BVH, the reference binned-SAH BVH, the SAH tree collapsed into a 4-wide one
-// (stage 05c, "sah-wide"), and Embree (3 or 4) when CMake found it.
+// (stage 05c; "sah-wide": its leaves' triangles tested four at a time, as the renderer does;
+// "sah-wide-serial": one after another), and Embree (3 or 4) when CMake found it.
 // Rays: "primary" (a 512 x 384 camera framing the mesh) and "random" (origins spread over
 // 1.5 times the mesh's box, directions uniform on the sphere), each traced as closest hit
 // and as any hit (t_max = infinity). Each timed iteration traces the whole set on one thread
@@ -150,11 +151,14 @@ struct ReferenceBvh {
   std::vector<TriangleEdges> edges;
   // "sah-wide": bvh collapsed into a 4-wide tree (stage 05c), traversed by intersect_bvh4.
   std::optional<Bvh4> wide;
+  // "sah-wide": the triangles also as columns (PrimitiveIntersector::columns), tested four at
+  // a time, as the renderer hands them over; "sah-wide-serial": without, one after another.
+  std::vector<float> columns;
   bool tested_by_calls() const { return edges.empty(); }
 };
 
 ReferenceBvh build_reference(const TestMesh& mesh, bool sah) {
-  ReferenceBvh result{sah ? "sah" : "median", {}, {}, {}, std::nullopt};
+  ReferenceBvh result{sah ? "sah" : "median", {}, {}, {}, std::nullopt, {}};
   const std::vector<Bounds3> boxes = triangle_boxes(mesh);
   result.bvh = sah ? build_bvh_sah(boxes, kLeafSize) : build_bvh(boxes, kLeafSize);
   result.corners.reserve(mesh.corners.size());
@@ -175,11 +179,13 @@ ReferenceBvh tested_by_calls(const ReferenceBvh& tree) {
   return copy;
 }
 
-// The same tree collapsed into a 4-wide one (the "-wide" rows), its triangles tested inlined.
-ReferenceBvh collapsed(const ReferenceBvh& tree) {
+// The same tree collapsed into a 4-wide one (the "-wide" rows), its triangles tested inlined,
+// four at a time or (the "-wide-serial" rows) one after another.
+ReferenceBvh collapsed(const ReferenceBvh& tree, bool four_at_a_time) {
   ReferenceBvh copy = tree;
-  copy.name += "-wide";
+  copy.name += four_at_a_time ? "-wide" : "-wide-serial";
   copy.wide = collapse_bvh4(tree.bvh);
+  if (four_at_a_time) copy.columns = triangle_columns(copy.edges.data(), copy.wide->primitive_order);
   return copy;
 }
 
@@ -189,6 +195,7 @@ void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std
   TriangleContext context{tree.corners.data(), {}};
   PrimitiveIntersector intersector{&test_triangle, &context};
   if (!tree.tested_by_calls()) intersector.triangles = tree.edges.data();
+  if (!tree.columns.empty()) intersector.columns = {tree.columns.data(), tree.wide->primitive_order.size() + 3};
   for (std::size_t i = begin; i < end; ++i) {
     // Not const: DoNotOptimize(const T&) is deprecated since Google Benchmark 1.8.
     std::optional<BvhHit> hit = tree.wide ? intersect_bvh4(*tree.wide, rays[i], intersector, any_hit, stats)
@@ -472,7 +479,8 @@ std::vector<std::unique_ptr<Fixture>> make_fixtures(std::uint32_t large_triangle
       f->trees.push_back(build_reference(f->mesh, sah));
       f->trees.push_back(tested_by_calls(f->trees.back()));
     }
-    f->trees.push_back(collapsed(f->trees[2]));  // the SAH tree
+    f->trees.push_back(collapsed(f->trees[2], true));  // the SAH tree
+    f->trees.push_back(collapsed(f->trees[2], false));
   }
   return fixtures;
 }
@@ -481,11 +489,11 @@ void print_trees(const Fixture& f) {
   for (const ReferenceBvh& tree : f.trees) {
     if (tree.tested_by_calls()) continue;  // the tree printed just before
     if (tree.wide) {
-      std::printf("  %-12s %-8s %9zu triangles  %9zu nodes of 4 children at most\n", f.mesh.name.c_str(),
+      std::printf("  %-12s %-15s %9zu triangles  %9zu nodes of 4 children at most\n", f.mesh.name.c_str(),
                   tree.name.c_str(), f.mesh.triangle_count(), tree.wide->nodes.size());
       continue;
     }
-    std::printf("  %-12s %-7s %9zu triangles  %9zu nodes  depth %2d  SAH cost %8.2f\n",
+    std::printf("  %-12s %-15s %9zu triangles  %9zu nodes  depth %2d  SAH cost %8.2f\n",
                 f.mesh.name.c_str(), tree.name.c_str(), f.mesh.triangle_count(), tree.bvh.nodes.size(),
                 bvh_depth(tree.bvh), bvh_sah_cost(tree.bvh));
   }
@@ -533,7 +541,7 @@ void report_disagreements(const Fixture& f, const ReferenceBvh& tree, const RayS
       oracle.t[i] = oracle.t[i] < kInfinity ? 0.0f : kInfinity;
     }
   const std::vector<std::size_t> bad = disagreements(compared, oracle.t, oracle.stride);
-  std::printf("  %-12s %-7s %-7s %-7s vs %-12s: %zu of %zu rays disagree\n", f.mesh.name.c_str(),
+  std::printf("  %-12s %-15s %-7s %-7s vs %-12s: %zu of %zu rays disagree\n", f.mesh.name.c_str(),
               tree.name.c_str(), set.name.c_str(), any_hit ? "any" : "closest", oracle.name.c_str(), bad.size(),
               set.rays.size() / oracle.stride);
   for (std::size_t k = 0; k < std::min<std::size_t>(bad.size(), 3); ++k) {
@@ -563,7 +571,7 @@ void check_and_count(const Fixture& f, const Embree* embree, std::vector<TraceRo
           // The inlined test must give the stage function's bits: compared exactly.
           std::size_t differ = 0;
           for (std::size_t i = 0; i < t.size(); ++i) differ += t[i] != inline_t[i] ? 1 : 0;
-          std::printf("  %-12s %-12s %-7s %-7s vs inlined tests: %zu of %zu rays differ%s\n", f.mesh.name.c_str(),
+          std::printf("  %-12s %-15s %-7s %-7s vs inlined tests: %zu of %zu rays differ%s\n", f.mesh.name.c_str(),
                       tree.name.c_str(), set.name.c_str(), any_hit ? "any" : "closest", differ, t.size(),
                       differ == 0 ? "" : " <-- CHECK");
         }
@@ -695,7 +703,7 @@ bool print_trace_row(const TraceRow& row, int thread_count, const std::vector<Tr
     if (row.accelerator != "brute") std::snprintf(nodes, sizeof nodes, "%.1f", row.nodes_per_ray);
     std::snprintf(triangles, sizeof triangles, "%.1f", row.triangles_per_ray);
   }
-  std::printf("  %-12s %-8s %-8s %-7d %-12s %9.2f %12s %11s %11s\n", row.mesh.c_str(), row.rays.c_str(),
+  std::printf("  %-12s %-8s %-8s %-7d %-15s %9.2f %12s %11s %11s\n", row.mesh.c_str(), row.rays.c_str(),
               row.query.c_str(), thread_count, row.accelerator.c_str(), 1e-6 / per_ray, ratio, nodes, triangles);
   return true;
 }
@@ -703,7 +711,7 @@ bool print_trace_row(const TraceRow& row, int thread_count, const std::vector<Tr
 void print_trace_summary(const std::vector<TraceRow>& rows, int threads, const SecondsByName& seconds) {
   std::printf("\nTraversal (time vs Embree: this accelerator's time per ray / Embree's, same rays,\n"
               "same threads; nodes and triangles per ray are exact counts, single-threaded pass):\n");
-  std::printf("  %-12s %-8s %-8s %-7s %-12s %9s %12s %11s %11s\n", "mesh", "rays", "query", "threads", "accel",
+  std::printf("  %-12s %-8s %-8s %-7s %-15s %9s %12s %11s %11s\n", "mesh", "rays", "query", "threads", "accel",
               "Mrays/s", "vs Embree", "nodes/ray", "tris/ray");
   for (const TraceRow& row : rows) {
     if (!print_trace_row(row, 1, rows, seconds)) continue;

@@ -6,6 +6,11 @@ add_library(raylab_options INTERFACE)
 target_compile_options(raylab_options INTERFACE
   $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Wall -Wextra -Wpedantic -Wshadow>
   $<$<CXX_COMPILER_ID:MSVC>:/W4>)
+# No fused multiply-adds the source did not write: with -march=native (or any target with
+# FMA) GCC and Clang would fuse a * b + c differently in scalar and SSE code, and the
+# reference's four-at-a-time triangle test (solutions/05_bvh/leaf_test.h) must give the bits
+# of its scalar test. (MSVC does not contract unless asked with /fp:contract.)
+target_compile_options(raylab_options INTERFACE $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-ffp-contract=off>)
 if(RAYLAB_WERROR)
   target_compile_options(raylab_options INTERFACE
     $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Werror> $<$<CXX_COMPILER_ID:MSVC>:/WX>)

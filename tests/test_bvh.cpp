@@ -7,6 +7,7 @@
 #include "raylab/stages/03_triangle.h"
 #include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
+#include "raylab/stages/05c_wide_bvh.h"
 #include "raylab/testkit/triangles.h"
 
 #include <gtest/gtest.h>
@@ -122,7 +123,9 @@ std::string text_of(const std::optional<BvhHit>& hit) {
 
 TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
   // The renderer hands the reference traversal its triangles (TriangleEdges) so that it tests
-  // them inlined; every answer, t to the bit, and every count must be those of calling stage 03.
+  // them inlined, and their columns in leaf order so that it tests four at a time; every
+  // answer, t to the bit, and every count must be those of calling stage 03, for the binary
+  // traversal and for the 4-wide one (stage 05c).
   const Mesh& mesh = large_mesh();
   const testkit::IndexedTriangles triangles{&mesh.triangles.positions, &mesh.triangles.indices, &intersect_ray_triangle};
   const PrimitiveIntersector by_calls = testkit::intersector_over(triangles);
@@ -142,35 +145,52 @@ TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
     rays.push_back(ray);
   }
   int hits = 0, failures = 0;
-  for (const Bvh& bvh : {build_bvh(mesh.boxes, kLeafSize), build_bvh_sah(mesh.boxes, kLeafSize)}) {
+  // Leaves of up to 9 triangles too: then a leaf is tested four, four and one at a time.
+  for (const Bvh& bvh : {build_bvh(mesh.boxes, kLeafSize), build_bvh_sah(mesh.boxes, kLeafSize), build_bvh(mesh.boxes, 9)}) {
+    const Bvh4 wide = collapse_bvh4(bvh);
+    // In the tree's leaf order (here not the triangles' own order): positions, not primitives.
+    const std::vector<float> columns = triangle_columns(edges.data(), bvh.primitive_order);
+    PrimitiveIntersector four_at_a_time = inlined;
+    four_at_a_time.columns = {columns.data(), bvh.primitive_order.size() + 3};
     for (std::size_t r = 0; r < rays.size() && failures < 5; ++r) {
       Ray ray = rays[r];
-      if (r < 400 && r % 8 == 5) {  // stop exactly at the first hit: it must be excluded by both
+      if (r < 400 && r % 8 == 5) {  // stop exactly at the first hit: it must be excluded by all
         BvhTraversalStats ignored;
         if (const std::optional<BvhHit> first = intersect_bvh(bvh, ray, by_calls, false, ignored)) ray.t_max = first->t_hit;
       }
       for (bool any_hit : {false, true}) {
-        BvhTraversalStats calls_stats, inlined_stats;
-        const std::optional<BvhHit> expected = intersect_bvh(bvh, ray, by_calls, any_hit, calls_stats);
-        const std::optional<BvhHit> got = intersect_bvh(bvh, ray, inlined, any_hit, inlined_stats);
-        hits += expected ? 1 : 0;
-        const bool same = got.has_value() == expected.has_value() &&
-                          (!got || (std::memcmp(&got->t_hit, &expected->t_hit, sizeof(float)) == 0 &&
-                                    got->primitive == expected->primitive));
-        const bool same_work = calls_stats.nodes_visited == inlined_stats.nodes_visited &&
-                               calls_stats.primitives_tested == inlined_stats.primitives_tested;
-        if (!same || !same_work) {
-          ++failures;
-          ADD_FAILURE() << "ray " << r << " (" << ray << "), " << (any_hit ? "any" : "closest") << " hit: inlined "
-                        << text_of(got) << " after " << inlined_stats.nodes_visited << " nodes and "
-                        << inlined_stats.primitives_tested << " triangles; by calls " << text_of(expected) << " after "
-                        << calls_stats.nodes_visited << " nodes and " << calls_stats.primitives_tested << " triangles";
+        for (bool wide_tree : {false, true}) {
+          const auto trace = [&](const PrimitiveIntersector& intersector, BvhTraversalStats& stats) {
+            return wide_tree ? intersect_bvh4(wide, ray, intersector, any_hit, stats)
+                             : intersect_bvh(bvh, ray, intersector, any_hit, stats);
+          };
+          BvhTraversalStats calls_stats;
+          const std::optional<BvhHit> expected = trace(by_calls, calls_stats);
+          hits += expected ? 1 : 0;
+          for (const PrimitiveIntersector* intersector : {&inlined, &four_at_a_time}) {
+            BvhTraversalStats stats;
+            const std::optional<BvhHit> got = trace(*intersector, stats);
+            const bool same = got.has_value() == expected.has_value() &&
+                              (!got || (std::memcmp(&got->t_hit, &expected->t_hit, sizeof(float)) == 0 &&
+                                        got->primitive == expected->primitive));
+            const bool same_work = calls_stats.nodes_visited == stats.nodes_visited &&
+                                   calls_stats.primitives_tested == stats.primitives_tested;
+            if (!same || !same_work) {
+              ++failures;
+              ADD_FAILURE() << "ray " << r << " (" << ray << "), " << (any_hit ? "any" : "closest") << " hit, "
+                            << (wide_tree ? "4-wide" : "binary") << " tree: "
+                            << (intersector == &inlined ? "inlined " : "four at a time ") << text_of(got) << " after "
+                            << stats.nodes_visited << " nodes and " << stats.primitives_tested
+                            << " triangles; by calls " << text_of(expected) << " after " << calls_stats.nodes_visited
+                            << " nodes and " << calls_stats.primitives_tested << " triangles";
+            }
+          }
         }
       }
     }
   }
   // The comparison proves little unless many rays hit: most of the ordinary ones do.
-  EXPECT_GT(hits, 2000) << "queries that hit, of " << 4 * rays.size();
+  EXPECT_GT(hits, 6000) << "queries that hit, of " << 12 * rays.size();
 }
 
 TEST(ReferenceBvh, MultiThreadedBuildIsDeterministic) {

@@ -69,7 +69,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
   if (acceleration == Acceleration::BvhAlways) brute_force_limit_ = 0;
   if (tracing.replaces_primitive_tests()) acceleration = Acceleration::BruteForce;
   if (acceleration != Acceleration::BruteForce) build_bvhs();
-  only_one_tree_ = spheres_.empty() && meshes_.size() == 1 && !meshes_.front().bvh.nodes.empty();
+  only_one_tree_ = reference_trees_ && spheres_.empty() && meshes_.size() == 1 && !meshes_.front().bvh.nodes.empty();
   // bvh_count() is 0 when testing every primitive (brute force, or stage 05 a stub).
   hand_triangles_to_traversal_ = tracing.reference_stages && !tracing.replaces_primitive_tests() &&
                                  triangle_test == TriangleTest::MollerTrumbore && bvh_count() > 0;
@@ -77,6 +77,10 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
     triangle_edges_.reserve(triangles_.size());
     for (const Triangle& triangle : triangles_)
       triangle_edges_.push_back(TriangleEdges::of(triangle.p0, triangle.p1, triangle.p2));
+    // The reference's trees also get the triangles as columns, for its four-at-a-time leaf test.
+    for (MeshPart& mesh : meshes_)
+      if (!mesh.wide.nodes.empty())
+        mesh.columns = triangle_columns(triangle_edges_.data() + mesh.first_triangle, mesh.wide.primitive_order);
   }
 }
 
@@ -130,7 +134,10 @@ void SceneGeometry::build_bvhs() {
       (void)intersect_bvh(*probe_bvh, probe, hits_nothing, /*any_hit=*/false, stats);
     }
   } catch (const NotImplemented& error) {
-    for (MeshPart& mesh : meshes_) mesh.bvh = Bvh();
+    for (MeshPart& mesh : meshes_) {
+      mesh.bvh = Bvh();
+      mesh.wide = Bvh4();
+    }
     objects_bvh_ = Bvh();
     fallback_stage_ = error.stage_id();
   }

@@ -45,7 +45,10 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
   if (!mesh.bvh.nodes.empty()) {
     BvhTraversalStats stats;
     PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
-    if (hand_triangles_to_traversal_) intersector.triangles = triangle_edges_.data() + mesh.first_triangle;
+    if (hand_triangles_to_traversal_) {
+      intersector.triangles = triangle_edges_.data() + mesh.first_triangle;
+      if (!mesh.columns.empty()) intersector.columns = {mesh.columns.data(), mesh.wide.primitive_order.size() + 3};
+    }
     // The reference's own programs traverse the 4-wide tree (same leaves, same hits).
     const auto traverse = [&](bool any_hit) {
       return mesh.wide.nodes.empty() ? intersect_bvh(mesh.bvh, ray, intersector, any_hit, stats)

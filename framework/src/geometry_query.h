@@ -17,10 +17,10 @@ struct SceneGeometry::Query {
   std::uint32_t mesh_first_triangle = 0;     // ... and that triangle's index in triangles_
 };
 
-// Straight into the one tree when it is all there is (no spheres, one mesh or the reference's
-// programs), else through the top-level BVH (geometry_bvh_adapters.cpp), or without one,
-// every object in turn (geometry_brute_force.cpp). Inline, so that the public queries call
-// either directly.
+// Straight into the one tree when it is all there is (the reference's programs, a scene
+// without spheres), else through the top-level BVH (geometry_bvh_adapters.cpp), or without
+// one, every object in turn (geometry_brute_force.cpp). Inline, so that the public queries
+// call either directly.
 inline std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& query) const {
   if (only_one_tree_) return intersect_mesh(meshes_.front(), ray, query);
   if (!objects_bvh_.nodes.empty()) return intersect_objects_through_bvh(ray, query);

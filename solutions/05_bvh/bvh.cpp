@@ -317,15 +317,14 @@ namespace {
 // test if a closer hit is found meanwhile. The counts are the contract's: one node visited per
 // box tested, one primitive tested per primitive test.
 //
-// test_primitive(search, primitive) returns the hit's t or nullopt, as intersector.test does;
-// a template parameter, so that the reference's triangle test is inlined into the leaf loop.
-template <typename TestPrimitive>
+// test_leaf(search, begin, end, any_hit, closest, tested) tests a leaf's primitives
+// (leaf_test.h); a template parameter, so that the reference's triangle test is inlined.
+template <typename TestLeaf>
 std::optional<BvhHit> traverse(const Bvh& bvh, const Ray& ray, bool any_hit, BvhTraversalStats& stats,
-                               const TestPrimitive& test_primitive) {
+                               const TestLeaf& test_leaf) {
   const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
   const glm::vec3 origin = ray.origin;
   const BvhNode* nodes = bvh.nodes.data();
-  const std::uint32_t* primitive_order = bvh.primitive_order.data();
 
   Ray search = ray;
   std::optional<BvhHit> closest;
@@ -362,16 +361,8 @@ std::optional<BvhHit> traverse(const Bvh& bvh, const Ray& ray, bool any_hit, Bvh
         continue;
       }
     } else {
-      const std::uint32_t leaf_end = node.first_index + node.primitive_count;
-      for (std::uint32_t i = node.first_index; i < leaf_end; ++i) {
-        const std::uint32_t primitive = primitive_order[i];
-        ++primitives_tested;
-        if (const std::optional<float> t = test_primitive(search, primitive)) {
-          search.t_max = *t;
-          closest = BvhHit{*t, primitive};
-          if (any_hit) break;
-        }
-      }
+      test_leaf(search, node.first_index, node.first_index + node.primitive_count, any_hit, closest,
+                primitives_tested);
       if (any_hit && closest) break;
     }
     // Next: the nearest waiting node that a closer hit has not ruled out.
@@ -400,8 +391,8 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray,
                                     const PrimitiveIntersector& intersector, bool any_hit,
                                     BvhTraversalStats& stats) {
   if (bvh.nodes.empty()) return std::nullopt;
-  return reference::with_leaf_test(intersector, [&](const auto& test_primitive) {
-    return traverse(bvh, ray, any_hit, stats, test_primitive);
+  return reference::with_leaf_test(intersector, bvh.primitive_order.data(), [&](const auto& test_leaf) {
+    return traverse(bvh, ray, any_hit, stats, test_leaf);
   });
 }
 

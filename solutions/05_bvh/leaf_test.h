@@ -1,34 +1,153 @@
 // How the reference traversals (solutions/05_bvh/bvh.cpp, solutions/05c_wide_bvh/wide_bvh.cpp)
-// test a leaf's primitives: with the reference's own Moller-Trumbore (moller_trumbore.h, the
-// same source as its stage 03) inlined, when the renderer hands over the mesh's triangles
-// (PrimitiveIntersector::triangles), else by a call of intersector.test each. Same hits, same
-// bits. Not part of any student contract.
+// test a leaf's primitives. By a call of intersector.test each, as the contract says; when the
+// renderer hands over the triangles (PrimitiveIntersector::triangles), with the reference's
+// own Moller-Trumbore (moller_trumbore.h, the same source as its stage 03) inlined; and when it
+// also hands over their columns in leaf order (PrimitiveIntersector::columns), four triangles
+// at a time with SSE, the same operations in the same order in each lane. Every way gives the
+// same hit, the same bits of t and the same count of triangles tested. Not part of any
+// student contract.
 #pragma once
 
 #include "../03_triangle/moller_trumbore.h"
 
 #include "raylab/stages/05_bvh.h"
 
+#include <cstdint>
+#include <limits>
 #include <optional>
+
+#if defined(__SSE2__) || defined(_M_X64)
+#include <xmmintrin.h>
+#define RAYLAB_REFERENCE_LEAF_SSE 1
+#endif
 
 namespace raylab::reference {
 
-// traverse(test_primitive) with the leaf test to inline: test_primitive(search, primitive)
-// returns the hit's t or nullopt, as intersector.test does.
+// A leaf's test, as the traversals call it: the primitives at positions [begin, end) of
+// primitive_order, in that order; each hit in (search.t_min, search.t_max) lowers
+// search.t_max and becomes `closest`; any_hit: stop at the first. Adds the primitives tested
+// to `tested`.
+template <typename TestPrimitive>
+struct OneAfterAnother {
+  const std::uint32_t* primitive_order;
+  TestPrimitive test_primitive;  // (search, primitive) -> t or nullopt, as intersector.test
+
+  void operator()(Ray& search, std::uint32_t begin, std::uint32_t end, bool any_hit,
+                  std::optional<BvhHit>& closest, std::uint64_t& tested) const {
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const std::uint32_t primitive = primitive_order[i];
+      ++tested;
+      if (const std::optional<float> t = test_primitive(search, primitive)) {
+        search.t_max = *t;
+        closest = BvhHit{*t, primitive};
+        if (any_hit) return;
+      }
+    }
+  }
+};
+
+#if RAYLAB_REFERENCE_LEAF_SSE
+// moller_trumbore() in four lanes: the triangles at positions [first, first + 4) of the
+// columns. Returns the mask of the lanes hit in (ray.t_min, ray.t_max), their t in t_hit.
+inline unsigned moller_trumbore4(const Ray& ray, const TriangleColumns& columns, std::uint32_t first,
+                                 float t_hit[4]) {
+  const auto column = [&](int c) { return _mm_loadu_ps(columns.values + c * columns.stride + first); };
+  const __m128 p0_x = column(0), p0_y = column(1), p0_z = column(2);
+  const __m128 e1_x = column(3), e1_y = column(4), e1_z = column(5);
+  const __m128 e2_x = column(6), e2_y = column(7), e2_z = column(8);
+  const __m128 d_x = _mm_set1_ps(ray.direction.x), d_y = _mm_set1_ps(ray.direction.y),
+               d_z = _mm_set1_ps(ray.direction.z);
+  const auto dot = [](__m128 ax, __m128 ay, __m128 az, __m128 bx, __m128 by, __m128 bz) {  // (x + y) + z, as glm
+    return _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, bx), _mm_mul_ps(ay, by)), _mm_mul_ps(az, bz));
+  };
+  // glm::cross(direction, edge_02)
+  const __m128 c_x = _mm_sub_ps(_mm_mul_ps(d_y, e2_z), _mm_mul_ps(e2_y, d_z));
+  const __m128 c_y = _mm_sub_ps(_mm_mul_ps(d_z, e2_x), _mm_mul_ps(e2_z, d_x));
+  const __m128 c_z = _mm_sub_ps(_mm_mul_ps(d_x, e2_y), _mm_mul_ps(e2_x, d_y));
+  const __m128 determinant = dot(e1_x, e1_y, e1_z, c_x, c_y, c_z);
+  // != 0 (true for NaN, as in C++) and finite: |determinant| < infinity (false for NaN).
+  const __m128 absolute = _mm_andnot_ps(_mm_set1_ps(-0.0f), determinant);
+  __m128 hit = _mm_and_ps(_mm_cmpneq_ps(determinant, _mm_setzero_ps()),
+                          _mm_cmplt_ps(absolute, _mm_set1_ps(std::numeric_limits<float>::infinity())));
+  const __m128 inverse_determinant = _mm_div_ps(_mm_set1_ps(1.0f), determinant);
+  const __m128 o_x = _mm_sub_ps(_mm_set1_ps(ray.origin.x), p0_x), o_y = _mm_sub_ps(_mm_set1_ps(ray.origin.y), p0_y),
+               o_z = _mm_sub_ps(_mm_set1_ps(ray.origin.z), p0_z);
+  const __m128 b1 = _mm_mul_ps(dot(o_x, o_y, o_z, c_x, c_y, c_z), inverse_determinant);
+  hit = _mm_and_ps(hit, _mm_and_ps(_mm_cmpge_ps(b1, _mm_setzero_ps()), _mm_cmple_ps(b1, _mm_set1_ps(1.0f))));
+  // glm::cross(p0_to_origin, edge_01)
+  const __m128 q_x = _mm_sub_ps(_mm_mul_ps(o_y, e1_z), _mm_mul_ps(e1_y, o_z));
+  const __m128 q_y = _mm_sub_ps(_mm_mul_ps(o_z, e1_x), _mm_mul_ps(e1_z, o_x));
+  const __m128 q_z = _mm_sub_ps(_mm_mul_ps(o_x, e1_y), _mm_mul_ps(e1_x, o_y));
+  const __m128 b2 = _mm_mul_ps(dot(d_x, d_y, d_z, q_x, q_y, q_z), inverse_determinant);
+  hit = _mm_and_ps(hit, _mm_and_ps(_mm_cmpge_ps(b2, _mm_setzero_ps()),
+                                   _mm_cmple_ps(_mm_add_ps(b1, b2), _mm_set1_ps(1.0f))));
+  const __m128 t = _mm_mul_ps(dot(e2_x, e2_y, e2_z, q_x, q_y, q_z), inverse_determinant);
+  hit = _mm_and_ps(hit, _mm_and_ps(_mm_cmpgt_ps(t, _mm_set1_ps(ray.t_min)), _mm_cmplt_ps(t, _mm_set1_ps(ray.t_max))));
+  _mm_storeu_ps(t_hit, t);
+  return static_cast<unsigned>(_mm_movemask_ps(hit));
+}
+#endif
+
+// OneAfterAnother's answers, four triangles at a time. Testing one after another, each hit
+// lowers t_max for the next: the result is the first of the triangles with the smallest t
+// below the t_max at the start, and the count is every triangle (any hit: up to the first
+// hit). Four lanes against the same t_max give exactly that.
+struct FourAtATime {
+  const std::uint32_t* primitive_order;
+  TriangleColumns columns;
+
+  void operator()(Ray& search, std::uint32_t begin, std::uint32_t end, bool any_hit,
+                  std::optional<BvhHit>& closest, std::uint64_t& tested) const {
+#if RAYLAB_REFERENCE_LEAF_SSE
+    for (std::uint32_t first = begin; first < end; first += 4) {
+      const std::uint32_t lanes = end - first < 4 ? end - first : 4;
+      float t_hit[4];
+      unsigned mask = moller_trumbore4(search, columns, first, t_hit) & ((1u << lanes) - 1u);
+      if (mask == 0) {
+        tested += lanes;
+        continue;
+      }
+      int best = 0;
+      while (!(mask & (1u << best))) ++best;  // the first lane hit
+      if (any_hit) {
+        tested += static_cast<std::uint64_t>(best) + 1;
+        search.t_max = t_hit[best];
+        closest = BvhHit{t_hit[best], primitive_order[first + best]};
+        return;
+      }
+      tested += lanes;
+      for (int lane = best + 1; lane < 4; ++lane)
+        if ((mask & (1u << lane)) && t_hit[lane] < t_hit[best]) best = lane;
+      search.t_max = t_hit[best];
+      closest = BvhHit{t_hit[best], primitive_order[first + best]};
+    }
+#else
+    (void)search, (void)begin, (void)end, (void)any_hit, (void)closest, (void)tested;
+#endif
+  }
+};
+
+// traverse(test_leaf) with the fastest leaf test the intersector allows (see above).
 template <typename Traverse>
-std::optional<BvhHit> with_leaf_test(const PrimitiveIntersector& intersector, const Traverse& traverse) {
+std::optional<BvhHit> with_leaf_test(const PrimitiveIntersector& intersector, const std::uint32_t* primitive_order,
+                                     const Traverse& traverse) {
   if (const TriangleEdges* triangles = intersector.triangles) {
-    return traverse([triangles](const Ray& search, std::uint32_t primitive) {
+#if RAYLAB_REFERENCE_LEAF_SSE
+    if (intersector.columns.values) return traverse(FourAtATime{primitive_order, intersector.columns});
+#endif
+    const auto test = [triangles](const Ray& search, std::uint32_t primitive) {
       const TriangleEdges& triangle = triangles[primitive];
       TriangleHit hit;
       return moller_trumbore(search, triangle.p0, triangle.edge_01, triangle.edge_02, hit)
                  ? std::optional<float>(hit.t_hit)
                  : std::nullopt;
-    });
+    };
+    return traverse(OneAfterAnother<decltype(test)>{primitive_order, test});
   }
-  return traverse([&intersector](const Ray& search, std::uint32_t primitive) {
+  const auto test = [&intersector](const Ray& search, std::uint32_t primitive) {
     return intersector.test(intersector.context, search, primitive);
-  });
+  };
+  return traverse(OneAfterAnother<decltype(test)>{primitive_order, test});
 }
 
 }  // namespace raylab::reference

@@ -142,11 +142,12 @@ namespace {
 // Near first: the hit children sorted by entry distance; leaves tested at once in that order,
 // inner children pushed farthest first so that the nearest is visited next. A waiting node
 // keeps its entry distance and is dropped without a box test once a closer hit is known.
-// test_primitive(search, primitive) as intersector.test: a template parameter, so that the
-// reference's triangle test is inlined into the leaf loop (as in solutions/05_bvh/bvh.cpp).
-template <typename TestPrimitive>
+// test_leaf(search, begin, end, any_hit, closest, tested) tests a leaf's primitives
+// (solutions/05_bvh/leaf_test.h): a template parameter, so that the reference's triangle test
+// is inlined into the leaf loop (as in solutions/05_bvh/bvh.cpp).
+template <typename TestLeaf>
 std::optional<BvhHit> traverse4(const Bvh4& bvh, const Ray& ray, bool any_hit, BvhTraversalStats& stats,
-                                const TestPrimitive& test_primitive) {
+                                const TestLeaf& test_leaf) {
   const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
   Ray search = ray;
   std::optional<BvhHit> closest;
@@ -181,16 +182,8 @@ std::optional<BvhHit> traverse4(const Bvh4& bvh, const Ray& ray, bool any_hit, B
     for (int k = 0; k < count; ++k) {  // leaves, nearest first
       const int slot = order[k];
       if (!node.is_leaf(slot) || entries[slot] > search.t_max) continue;
-      const std::uint32_t end = node.child[slot] + node.primitive_count[slot];
-      for (std::uint32_t i = node.child[slot]; i < end; ++i) {
-        const std::uint32_t primitive = bvh.primitive_order[i];
-        ++primitives_tested;
-        if (const std::optional<float> t = test_primitive(search, primitive)) {
-          search.t_max = *t;
-          closest = BvhHit{*t, primitive};
-          if (any_hit) break;
-        }
-      }
+      test_leaf(search, node.child[slot], node.child[slot] + node.primitive_count[slot], any_hit, closest,
+                primitives_tested);
       if (any_hit && closest) break;
     }
     if (any_hit && closest) break;
@@ -209,8 +202,8 @@ std::optional<BvhHit> traverse4(const Bvh4& bvh, const Ray& ray, bool any_hit, B
 std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
                                      bool any_hit, BvhTraversalStats& stats) {
   if (bvh.nodes.empty()) return std::nullopt;
-  return reference::with_leaf_test(intersector, [&](const auto& test_primitive) {
-    return traverse4(bvh, ray, any_hit, stats, test_primitive);
+  return reference::with_leaf_test(intersector, bvh.primitive_order.data(), [&](const auto& test_leaf) {
+    return traverse4(bvh, ray, any_hit, stats, test_leaf);
   });
 }
 

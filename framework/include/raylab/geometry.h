@@ -109,14 +109,16 @@ class SceneGeometry {
     std::uint32_t first_index;  // into the mesh's indices: its 3 vertices start here
   };
   enum class Kind : std::uint8_t { None, Sphere, Triangle };
-  // One mesh's triangles: triangles_[first_triangle .. first_triangle + triangle_count), in
-  // its BVH's leaf order when it has one (then the BVH's primitive_order is the identity).
+  // One mesh's triangles (with reference_trees_, every mesh's): triangles_[first_triangle ..
+  // first_triangle + triangle_count), in its BVH's leaf order when it has one (then the BVH's
+  // primitive_order is the identity).
   struct MeshPart {
     std::uint32_t first_triangle = 0;
     std::uint32_t triangle_count = 0;
     Bounds3 bounds;
     Bvh bvh;  // empty: test every triangle
     Bvh4 wide;  // reference_trees_ only: bvh collapsed to 4 wide (stage 05c), traversed instead
+    std::vector<float> columns;  // with triangle_edges_: its triangles as TriangleColumns, for wide's leaves
   };
   // The closest hit a query's primitive tests have reported so far (by the framework's own
   // comparison of t, whatever order a traversal calls the tests in), and its details.
@@ -175,7 +177,7 @@ class SceneGeometry {
   // triangles, under a tree of the reference's SAH build (stage 05b) collapsed to 4 wide
   // (stage 05c).
   bool reference_trees_ = false;
-  // No spheres, and every triangle under one tree: a query goes straight to that tree.
+  // reference_trees_, no spheres, and a tree: a query goes straight into it.
   bool only_one_tree_ = false;
   std::vector<MeshPart> meshes_;
   Bvh objects_bvh_;  // over spheres_ then meshes_; empty: test every object

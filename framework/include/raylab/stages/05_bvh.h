@@ -11,6 +11,7 @@
 #include "raylab/bvh_node_allocator.h"
 #include "raylab/ray.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -70,6 +71,16 @@ struct TriangleEdges {
   }
 };
 
+// The same triangles as nine columns of floats (p0.x, p0.y, p0.z, edge_01.x, ... edge_02.z),
+// in the order of a tree's primitive_order: column c of the triangle at position i is
+// values[c * stride + i], and each column ends with 3 values of padding, so that the
+// reference's leaf test loads four neighbours' coordinates at once (triangle_columns() makes
+// them). Not part of your contract.
+struct TriangleColumns {
+  const float* values = nullptr;
+  std::size_t stride = 0;
+};
+
 // How the traversal tests one primitive: a plain function pointer and the caller's context.
 //
 // Why this shape: the traversal is a stage function, compiled in a separate library from the
@@ -97,7 +108,14 @@ struct PrimitiveIntersector {
   // triangle (docs/performance.md). A traversal that does so counts each triangle it tests
   // in stats.primitives_tested, as a call of `test`.
   const TriangleEdges* triangles = nullptr;
+  // With `triangles`, optionally: the same triangles in the traversed tree's leaf order, for
+  // the reference's test of a leaf's triangles four at a time (same answers, same counts).
+  TriangleColumns columns = {};
 };
+
+// The columns (TriangleColumns::values) of triangles[primitive_order[i]] for every position i,
+// padded; their stride is primitive_order.size() + 3.
+std::vector<float> triangle_columns(const TriangleEdges* triangles, const std::vector<std::uint32_t>& primitive_order);
 
 // The work one query did, counted the same way by every correct traversal (bench/, grader).
 struct BvhTraversalStats {
