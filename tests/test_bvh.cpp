@@ -146,7 +146,8 @@ TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
   }
   int hits = 0, failures = 0;
   // Leaves of up to 9 triangles too: then a leaf is tested four, four and one at a time.
-  for (const Bvh& bvh : {build_bvh(mesh.boxes, kLeafSize), build_bvh_sah(mesh.boxes, kLeafSize), build_bvh(mesh.boxes, 9)}) {
+  for (const Bvh& bvh :
+       {build_bvh(mesh.boxes, kLeafSize), build_bvh_sah(mesh.boxes, kLeafSize), build_bvh(mesh.boxes, 9)}) {
     const Bvh4 wide = collapse_bvh4(bvh);
     // In the tree's leaf order (here not the triangles' own order): positions, not primitives.
     const std::vector<float> columns = triangle_columns(edges.data(), bvh.primitive_order);
