@@ -3,6 +3,7 @@
 // Scenes are written as JSON in the test and read through parse_scene, like any scene file.
 #include "raylab/geometry.h"
 #include "raylab/integrator.h"
+#include "raylab/random.h"
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
 #include "raylab/stages/01_camera_rays.h"
@@ -85,16 +86,16 @@ void expect_same_hits_with_reference_stages(const std::string& scene_file) {
   for (int y = 0; y < scene.camera.height; ++y)
     for (int x = 0; x < scene.camera.width; ++x)
       rays.push_back(generate_camera_ray(scene.camera, x, y, glm::vec2(0.5f)));
-  std::uint32_t state = 12345u;  // a fixed sequence, the same on every platform
-  const auto next_unit = [&state] {
-    state = state * 1664525u + 1013904223u;
-    return static_cast<float>(state >> 8) / 16777216.0f;
+  Pcg32 random(12345u);  // the kit's generator: the same sequence on every platform
+  const auto next_point = [&random] {  // each coordinate in [0, 1), drawn in the order x, y, z
+    const float x = random.next_float(), y = random.next_float();
+    return glm::vec3(x, y, random.next_float());
   };
   for (int i = 0; i < 20000; ++i) {
     Ray ray;
-    ray.origin = scene_box.min + glm::vec3(next_unit(), next_unit(), next_unit()) * (scene_box.max - scene_box.min);
-    ray.direction = glm::vec3(next_unit(), next_unit(), next_unit()) * 2.0f - 1.0f;
-    if (i % 2 == 1) ray.t_max = next_unit() * 200.0f;  // shadow rays stop short
+    ray.origin = scene_box.min + next_point() * (scene_box.max - scene_box.min);
+    ray.direction = next_point() * 2.0f - 1.0f;
+    if (i % 2 == 1) ray.t_max = random.next_float() * 200.0f;  // shadow rays stop short
     rays.push_back(ray);
   }
   int hits = 0, differing = 0;

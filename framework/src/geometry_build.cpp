@@ -71,8 +71,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
   if (acceleration != Acceleration::BruteForce) build_bvhs();
   only_one_tree_ = reference_trees_ && spheres_.empty() && meshes_.size() == 1 && !meshes_.front().bvh.nodes.empty();
   // bvh_count() is 0 when testing every primitive (brute force, or stage 05 a stub).
-  hand_triangles_to_traversal_ = tracing.reference_stages && !tracing.replaces_primitive_tests() &&
-                                 triangle_test == TriangleTest::MollerTrumbore && bvh_count() > 0;
+  hand_triangles_to_traversal_ = reference_trees_ && triangle_test == TriangleTest::MollerTrumbore && bvh_count() > 0;
   if (hand_triangles_to_traversal_) {
     triangle_edges_.reserve(triangles_.size());
     for (const Triangle& triangle : triangles_)
