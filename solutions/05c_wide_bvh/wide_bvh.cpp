@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 
 #if defined(__SSE2__) || defined(_M_X64)
 #include <xmmintrin.h>
@@ -94,54 +95,90 @@ Bvh4 collapse_bvh4(const Bvh& binary) {
 namespace {
 
 // intersect_ray_box4's test, here so that the traversal below has it inlined (a call per node
-// spills the ray's registers; as stage 05's reference inlines box_slabs.h).
-inline unsigned box4_test(const Ray& ray, const glm::vec3& ray_direction_inverse, const Bvh4Node& node,
+// spills the ray's registers; as stage 05's reference inlines box_slabs.h). The ray's part of
+// it (RayLanes: its origin, inverse direction and their signs in four lanes each) is made once
+// per ray.
+#if RAYLAB_WIDE_BVH_SSE
+struct RayLanes {
+  __m128 origin[3], inverse[3];
+  // Where in a Bvh4Node each axis's entry and exit planes are (bytes from its start): the
+  // entry plane is the min plane where the inverse direction is >= 0, the max plane where < 0.
+  std::size_t entry_plane[3], exit_plane[3];
+  RayLanes(const Ray& ray, const glm::vec3& ray_direction_inverse) {
+    const std::size_t lows[3] = {offsetof(Bvh4Node, min_x), offsetof(Bvh4Node, min_y), offsetof(Bvh4Node, min_z)};
+    const std::size_t highs[3] = {offsetof(Bvh4Node, max_x), offsetof(Bvh4Node, max_y), offsetof(Bvh4Node, max_z)};
+    for (int axis = 0; axis < 3; ++axis) {
+      origin[axis] = _mm_set1_ps(ray.origin[axis]);
+      inverse[axis] = _mm_set1_ps(ray_direction_inverse[axis]);
+      const bool negative = ray_direction_inverse[axis] < 0.0f;
+      entry_plane[axis] = negative ? highs[axis] : lows[axis];
+      exit_plane[axis] = negative ? lows[axis] : highs[axis];
+    }
+  }
+};
+
+inline unsigned box4_test(const RayLanes& lanes, float t_min, float t_max, const Bvh4Node& node,
                           float entry_distances[kBvh4Width]) {
   const unsigned used = (1u << node.child_count) - 1u;
-#if RAYLAB_WIDE_BVH_SSE
   // box_slabs.h four lanes at a time: the entry plane chosen by the sign of the inverse
   // direction (the same for all four boxes), the exit scaled up by 1 + 2 gamma(3) (Ize 2013).
   // _mm_max_ps(a, b) and _mm_min_ps(a, b) return b when a is NaN (0 * infinity: the origin on
   // a plane the ray is parallel to), so such a slab leaves the interval as it was.
-  const float* const lows[3] = {node.min_x, node.min_y, node.min_z};
-  const float* const highs[3] = {node.max_x, node.max_y, node.max_z};
-  __m128 enter = _mm_set1_ps(ray.t_min), exit = _mm_set1_ps(ray.t_max);
+  const char* const bytes = reinterpret_cast<const char*>(&node);
+  __m128 enter = _mm_set1_ps(t_min), exit = _mm_set1_ps(t_max);
   const __m128 widen = _mm_set1_ps(1.0f + 2.0f * gamma_bound(3));
   for (int axis = 0; axis < 3; ++axis) {
-    const float inverse = ray_direction_inverse[axis];
-    const bool negative = inverse < 0.0f;
-    const __m128 origin = _mm_set1_ps(ray.origin[axis]), scale = _mm_set1_ps(inverse);
-    const __m128 near_plane = _mm_loadu_ps(negative ? highs[axis] : lows[axis]);
-    const __m128 far_plane = _mm_loadu_ps(negative ? lows[axis] : highs[axis]);
-    const __m128 entry = _mm_mul_ps(_mm_sub_ps(near_plane, origin), scale);
-    const __m128 leave = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(far_plane, origin), scale), widen);
+    const __m128 near_plane = _mm_loadu_ps(reinterpret_cast<const float*>(bytes + lanes.entry_plane[axis]));
+    const __m128 far_plane = _mm_loadu_ps(reinterpret_cast<const float*>(bytes + lanes.exit_plane[axis]));
+    const __m128 entry = _mm_mul_ps(_mm_sub_ps(near_plane, lanes.origin[axis]), lanes.inverse[axis]);
+    const __m128 leave = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(far_plane, lanes.origin[axis]), lanes.inverse[axis]), widen);
     enter = _mm_max_ps(entry, enter);
     exit = _mm_min_ps(leave, exit);
   }
   _mm_storeu_ps(entry_distances, enter);
   return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(enter, exit))) & used;
+}
 #else
+struct RayLanes {
+  const Ray& ray;
+  const glm::vec3& ray_direction_inverse;
+};
+
+inline unsigned box4_test(const RayLanes& lanes, float t_min, float t_max, const Bvh4Node& node,
+                          float entry_distances[kBvh4Width]) {
+  const unsigned used = (1u << node.child_count) - 1u;
   unsigned mask = 0;
   for (int i = 0; i < node.child_count; ++i)
-    if (reference::ray_enters_box(ray.origin, ray_direction_inverse, node.child_bounds(i), ray.t_min, ray.t_max,
+    if (reference::ray_enters_box(lanes.ray.origin, lanes.ray_direction_inverse, node.child_bounds(i), t_min, t_max,
                                   entry_distances[i]))
       mask |= 1u << i;
   return mask & used;
-#endif
 }
+#endif
 
 }  // namespace
 
 unsigned intersect_ray_box4(const Ray& ray, const glm::vec3& ray_direction_inverse, const Bvh4Node& node,
                             float entry_distances[kBvh4Width]) {
-  return box4_test(ray, ray_direction_inverse, node, entry_distances);
+  return box4_test(RayLanes{ray, ray_direction_inverse}, ray.t_min, ray.t_max, node, entry_distances);
 }
 
 namespace {
 
+// The lowest set bit of a nonzero mask.
+inline int lowest_set_bit(unsigned mask) {
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctz(mask);
+#else
+  int bit = 0;
+  while (!(mask & (1u << bit))) ++bit;
+  return bit;
+#endif
+}
+
 // Near first: the hit children sorted by entry distance; leaves tested at once in that order,
-// inner children pushed farthest first so that the nearest is visited next. A waiting node
-// keeps its entry distance and is dropped without a box test once a closer hit is known.
+// then the nearest inner child visited next and the others pushed, farthest first. A waiting
+// node keeps its entry distance and is dropped without a box test once a closer hit is known.
 // test_leaf(search, begin, end, any_hit, closest, tested) tests a leaf's primitives
 // (solutions/05_bvh/leaf_test.h): a template parameter, so that the reference's triangle test
 // is inlined into the leaf loop (as in solutions/05_bvh/bvh.cpp).
@@ -149,6 +186,8 @@ template <typename TestLeaf>
 std::optional<BvhHit> traverse4(const Bvh4& bvh, const Ray& ray, bool any_hit, BvhTraversalStats& stats,
                                 const TestLeaf& test_leaf) {
   const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
+  const RayLanes lanes{ray, ray_direction_inverse};
+  const Bvh4Node* nodes = bvh.nodes.data();
   Ray search = ray;
   std::optional<BvhHit> closest;
   struct Waiting {
@@ -159,38 +198,47 @@ std::optional<BvhHit> traverse4(const Bvh4& bvh, const Ray& ray, bool any_hit, B
   // binary tree (kBvhMaxDepth levels).
   Waiting stack[4 * kBvhMaxDepth + 1];
   int stack_size = 0;
-  stack[stack_size++] = {0, ray.t_min};
+  Waiting next{0, ray.t_min};  // the node to visit next: the root first
   std::uint64_t nodes_visited = 0, primitives_tested = 0;
-  while (stack_size > 0) {
-    const Waiting waiting = stack[--stack_size];
-    if (waiting.t_enter > search.t_max) continue;
-    const Bvh4Node& node = bvh.nodes[waiting.node];
-    float entries[kBvh4Width];
-    unsigned mask = box4_test(search, ray_direction_inverse, node, entries);
-    ++nodes_visited;
-    int order[kBvh4Width], count = 0;
-    for (; mask != 0; mask &= mask - 1) {
-      int slot = 0;
-      while (!(mask & (1u << slot))) ++slot;
-      int at = count++;
-      while (at > 0 && entries[order[at - 1]] > entries[slot]) {
-        order[at] = order[at - 1];
-        --at;
+  for (;;) {
+    if (!(next.t_enter > search.t_max)) {
+      const Bvh4Node& node = nodes[next.node];
+      float entries[kBvh4Width];
+      unsigned mask = box4_test(lanes, search.t_min, search.t_max, node, entries);
+      ++nodes_visited;
+      int order[kBvh4Width], count = 0;
+      for (; mask != 0; mask &= mask - 1) {  // insertion sort by entry distance
+        const int slot = lowest_set_bit(mask);
+        int at = count++;
+        while (at > 0 && entries[order[at - 1]] > entries[slot]) {
+          order[at] = order[at - 1];
+          --at;
+        }
+        order[at] = slot;
       }
-      order[at] = slot;
-    }
-    for (int k = 0; k < count; ++k) {  // leaves, nearest first
-      const int slot = order[k];
-      if (!node.is_leaf(slot) || entries[slot] > search.t_max) continue;
-      test_leaf(search, node.child[slot], node.child[slot] + node.primitive_count[slot], any_hit, closest,
-                primitives_tested);
+      for (int k = 0; k < count; ++k) {  // leaves, nearest first
+        const int slot = order[k];
+        if (!node.is_leaf(slot) || entries[slot] > search.t_max) continue;
+        test_leaf(search, node.child[slot], node.child[slot] + node.primitive_count[slot], any_hit, closest,
+                  primitives_tested);
+        if (any_hit && closest) break;
+      }
       if (any_hit && closest) break;
+      // Inner children: all but the nearest pushed, farthest first; the nearest is next.
+      int nearest_inner = -1;
+      for (int k = count - 1; k >= 0; --k) {
+        const int slot = order[k];
+        if (node.is_leaf(slot)) continue;
+        if (nearest_inner >= 0) stack[stack_size++] = {node.child[nearest_inner], entries[nearest_inner]};
+        nearest_inner = slot;
+      }
+      if (nearest_inner >= 0) {
+        next = {node.child[nearest_inner], entries[nearest_inner]};
+        continue;
+      }
     }
-    if (any_hit && closest) break;
-    for (int k = count - 1; k >= 0; --k) {  // inner children, farthest pushed first
-      const int slot = order[k];
-      if (!node.is_leaf(slot)) stack[stack_size++] = {node.child[slot], entries[slot]};
-    }
+    if (stack_size == 0) break;
+    next = stack[--stack_size];
   }
   stats.nodes_visited += nodes_visited;
   stats.primitives_tested += primitives_tested;
