@@ -350,14 +350,13 @@ std::optional<BvhHit> traverse(const Bvh& bvh, const Ray& ray, bool any_hit, Bvh
       const bool hit_second = reference::ray_enters_box(origin, ray_direction_inverse, nodes[first + 1].bounds,
                                                         search.t_min, search.t_max, enter_second);
       nodes_visited += 2;
-      if (hit_first && hit_second) {
-        const bool second_is_near = enter_second < enter_first;
-        stack[stack_size++] = second_is_near ? Waiting{first, enter_first} : Waiting{first + 1, enter_second};
-        node_index = second_is_near ? first + 1 : first;
-        continue;
-      }
+      // Without a branch on which child is nearer (random rays make it unpredictable): the
+      // farther is written to the stack in any case and kept only when both were hit.
+      const bool second_is_near = hit_second && (!hit_first || enter_second < enter_first);
+      stack[stack_size] = second_is_near ? Waiting{first, enter_first} : Waiting{first + 1, enter_second};
+      stack_size += (hit_first && hit_second) ? 1 : 0;
       if (hit_first || hit_second) {
-        node_index = hit_first ? first : first + 1;
+        node_index = second_is_near ? first + 1 : first;
         continue;
       }
     } else {
