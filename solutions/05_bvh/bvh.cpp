@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <future>
 #include <stdexcept>
 #include <string>
@@ -50,6 +51,51 @@ struct Item {
   glm::vec3 centroid;
   std::uint32_t primitive;
 };
+static_assert(offsetof(Item, box) == 0 && offsetof(Item, centroid) == 24 && sizeof(Item) == 40,
+              "GrowingBox reads 16 bytes from box.min, box.max and centroid");
+
+// A box grown by items' boxes or centroids, as Bounds3::extend does (glm::min(x, y) is
+// y < x ? y : x, which is _mm_min_ps(y, x); glm::max likewise): the same bits, but with SSE,
+// min and max of three coordinates in one instruction each. Each 16-byte load reads a fourth
+// float past the three (box.min: max.x; box.max: centroid.x; centroid: primitive), whose lane
+// is never used. The builders' hottest loops (binning and partitioning) grow boxes.
+#if RAYLAB_REFERENCE_LEAF_SSE
+class GrowingBox {
+ public:
+  void extend_box(const Item& item) { extend(&item.box.min.x, &item.box.max.x); }
+  void extend_centroid(const Item& item) { extend(&item.centroid.x, &item.centroid.x); }
+  void extend(const GrowingBox& other) {
+    low_ = _mm_min_ps(other.low_, low_);
+    high_ = _mm_max_ps(other.high_, high_);
+  }
+  __m128 low() const { return low_; }
+  __m128 high() const { return high_; }
+  Bounds3 bounds() const {
+    alignas(16) float low[4], high[4];
+    _mm_store_ps(low, low_);
+    _mm_store_ps(high, high_);
+    return {{low[0], low[1], low[2]}, {high[0], high[1], high[2]}};
+  }
+
+ private:
+  void extend(const float* low, const float* high) {
+    low_ = _mm_min_ps(_mm_loadu_ps(low), low_);
+    high_ = _mm_max_ps(_mm_loadu_ps(high), high_);
+  }
+  __m128 low_ = _mm_set1_ps(kInfinity), high_ = _mm_set1_ps(-kInfinity);
+};
+#else
+class GrowingBox {
+ public:
+  void extend_box(const Item& item) { box_.extend(item.box); }
+  void extend_centroid(const Item& item) { box_.extend(item.centroid); }
+  void extend(const GrowingBox& other) { box_.extend(other.box_); }
+  Bounds3 bounds() const { return box_; }
+
+ private:
+  Bounds3 box_;
+};
+#endif
 
 // What both builders share: the items in the order being built and the node array. Nodes are
 // referred to by index: push_back may move them.
@@ -82,16 +128,22 @@ class Builder {
   // The box of a range of items, and the box of their centroids.
   struct RangeBounds {
     Bounds3 boxes, centroids;
+  };
+
+  // RangeBounds as it grows (GrowingBox).
+  struct GrowingRange {
+    GrowingBox boxes, centroids;
     void extend(const Item& item) {
-      boxes.extend(item.box);
-      centroids.extend(item.centroid);
+      boxes.extend_box(item);
+      centroids.extend_centroid(item);
     }
+    RangeBounds bounds() const { return {boxes.bounds(), centroids.bounds()}; }
   };
 
   RangeBounds bounds_of(std::uint32_t begin, std::uint32_t end) const {
-    RangeBounds bounds;
+    GrowingRange bounds;
     for (std::uint32_t i = begin; i < end; ++i) bounds.extend(items_[i]);
-    return bounds;
+    return bounds.bounds();
   }
 
   // Builds the node nodes[node_index] for items [begin, end), whose bounds the caller computed,
@@ -205,6 +257,88 @@ class Builder {
     return std::min(std::max(bin, 0), kSahBinCount - 1);
   }
 
+  using BinBoxes = std::array<std::array<GrowingBox, kSahBinCount>, 3>;
+  using BinCounts = std::array<std::array<std::uint32_t, kSahBinCount>, 3>;
+
+  // cost[bin][axis]: the SAH price of splitting after `bin` along `axis` (traversal cost 1,
+  // primitive cost 1): 1 + (area left x count left + area right x count right) / node area.
+  // Step 2 sweeps from the right for the area and count of everything right of each plane;
+  // step 3 from the left, pricing each plane.
+  static void sweep_bins(const BinBoxes& bins, const BinCounts& bin_count, float node_area,
+                         float cost[kSahBinCount][4]) {
+    alignas(16) float count_left[kSahBinCount][4] = {}, count_right[kSahBinCount][4] = {};
+    for (int axis = 0; axis < 3; ++axis) {
+      std::uint32_t left = 0, right = 0;
+      for (int bin = 0; bin < kSahBinCount - 1; ++bin) {
+        left += bin_count[axis][bin];
+        count_left[bin][axis] = static_cast<float>(left);
+      }
+      for (int bin = kSahBinCount - 1; bin > 0; --bin) {
+        right += bin_count[axis][bin];
+        count_right[bin][axis] = static_cast<float>(right);
+      }
+    }
+#if RAYLAB_REFERENCE_LEAF_SSE
+    // The three axes at once, one per lane, each lane doing the scalar sweep's operations
+    // (Bounds3::extend and surface_area) in the same order: the same bits.
+    __m128 low[3][kSahBinCount], high[3][kSahBinCount];  // [coordinate][bin], a lane per axis
+    for (int bin = 0; bin < kSahBinCount; ++bin) {
+      __m128 x = bins[0][bin].low(), y = bins[1][bin].low(), z = bins[2][bin].low(), w = _mm_setzero_ps();
+      _MM_TRANSPOSE4_PS(x, y, z, w);
+      low[0][bin] = x, low[1][bin] = y, low[2][bin] = z;
+      x = bins[0][bin].high(), y = bins[1][bin].high(), z = bins[2][bin].high(), w = _mm_setzero_ps();
+      _MM_TRANSPOSE4_PS(x, y, z, w);
+      high[0][bin] = x, high[1][bin] = y, high[2][bin] = z;
+    }
+    const auto surface_area = [](const __m128 box_low[3], const __m128 box_high[3]) {
+      const __m128 ex = _mm_sub_ps(box_high[0], box_low[0]), ey = _mm_sub_ps(box_high[1], box_low[1]),
+                   ez = _mm_sub_ps(box_high[2], box_low[2]);
+      const __m128 area = _mm_mul_ps(_mm_set1_ps(2.0f), _mm_add_ps(_mm_add_ps(_mm_mul_ps(ex, ey), _mm_mul_ps(ey, ez)),
+                                                                   _mm_mul_ps(ez, ex)));
+      const __m128 empty = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(box_low[0], box_high[0]), _mm_cmpgt_ps(box_low[1], box_high[1])),
+                                     _mm_cmpgt_ps(box_low[2], box_high[2]));
+      return _mm_andnot_ps(empty, area);  // an empty box: 0
+    };
+    __m128 right_area[kSahBinCount];
+    __m128 box_low[3], box_high[3];
+    for (int c = 0; c < 3; ++c) box_low[c] = _mm_set1_ps(kInfinity), box_high[c] = _mm_set1_ps(-kInfinity);
+    for (int bin = kSahBinCount - 1; bin > 0; --bin) {
+      for (int c = 0; c < 3; ++c) {
+        box_low[c] = _mm_min_ps(low[c][bin], box_low[c]);
+        box_high[c] = _mm_max_ps(high[c][bin], box_high[c]);
+      }
+      right_area[bin] = surface_area(box_low, box_high);
+    }
+    for (int c = 0; c < 3; ++c) box_low[c] = _mm_set1_ps(kInfinity), box_high[c] = _mm_set1_ps(-kInfinity);
+    const __m128 area_of_node = _mm_set1_ps(node_area);
+    for (int bin = 0; bin < kSahBinCount - 1; ++bin) {
+      for (int c = 0; c < 3; ++c) {
+        box_low[c] = _mm_min_ps(low[c][bin], box_low[c]);
+        box_high[c] = _mm_max_ps(high[c][bin], box_high[c]);
+      }
+      const __m128 left = _mm_mul_ps(surface_area(box_low, box_high), _mm_load_ps(count_left[bin]));
+      const __m128 right = _mm_mul_ps(right_area[bin + 1], _mm_load_ps(count_right[bin + 1]));
+      _mm_store_ps(cost[bin], _mm_add_ps(_mm_set1_ps(1.0f), _mm_div_ps(_mm_add_ps(left, right), area_of_node)));
+    }
+#else
+    for (int axis = 0; axis < 3; ++axis) {
+      std::array<float, kSahBinCount> right_area{};
+      Bounds3 right_box;
+      for (int bin = kSahBinCount - 1; bin > 0; --bin) {
+        right_box.extend(bins[axis][bin].bounds());
+        right_area[bin] = right_box.surface_area();
+      }
+      Bounds3 left_box;
+      for (int bin = 0; bin < kSahBinCount - 1; ++bin) {
+        left_box.extend(bins[axis][bin].bounds());
+        cost[bin][axis] = 1.0f + (left_box.surface_area() * count_left[bin][axis] +
+                                  right_area[bin + 1] * count_right[bin + 1][axis]) /
+                                     node_area;
+      }
+    }
+#endif
+  }
+
   // The binned SAH (Wald 2007): drop centroids into 16 bins per axis (all three axes in one
   // pass over the items), then sweep the 15 planes between bins from both sides to price
   // every split in O(bins).
@@ -222,43 +356,28 @@ class Builder {
     }
 
     // Step 1: fill the bins of the three axes.
-    std::array<std::array<Bounds3, kSahBinCount>, 3> bin_bounds;
-    std::array<std::array<std::uint32_t, kSahBinCount>, 3> bin_count{};
+    BinBoxes growing_bins;
+    BinCounts bin_count{};
     for (std::uint32_t i = begin; i < end; ++i) {
       const Item& item = items[i];
       for (int axis = 0; axis < 3; ++axis) {
         const int bin = bin_of(item.centroid[axis], axis_min[axis], bins_per_unit[axis]);
-        bin_bounds[axis][bin].extend(item.box);
+        growing_bins[axis][bin].extend_box(item);
         ++bin_count[axis][bin];
       }
     }
-
+    // Steps 2 and 3 price the split after each bin: cost[bin][axis] (NaN where a side is empty).
+    alignas(16) float cost[kSahBinCount][4];
+    sweep_bins(growing_bins, bin_count, node_area, cost);
     SahSplit best;
     for (int axis = 0; axis < 3; ++axis) {
       if (!splittable[axis]) continue;
-      // Step 2: sweep from the right: the area and count of everything right of each plane.
-      std::array<float, kSahBinCount> right_area{};
-      std::array<std::uint32_t, kSahBinCount> right_count{};
-      Bounds3 right_box;
-      std::uint32_t right_total = 0;
-      for (int bin = kSahBinCount - 1; bin > 0; --bin) {
-        right_box.extend(bin_bounds[axis][bin]);
-        right_total += bin_count[axis][bin];
-        right_area[bin] = right_box.surface_area();
-        right_count[bin] = right_total;
-      }
-      // Step 3: sweep from the left and price the split after each bin.
-      Bounds3 left_box;
-      std::uint32_t left_total = 0;
+      std::uint32_t left_total = 0, right_total = 0;
+      for (int bin = 0; bin < kSahBinCount; ++bin) right_total += bin_count[axis][bin];
       for (int bin = 0; bin < kSahBinCount - 1; ++bin) {
-        left_box.extend(bin_bounds[axis][bin]);
         left_total += bin_count[axis][bin];
-        const std::uint32_t right = right_count[bin + 1];
-        if (left_total == 0 || right == 0) continue;
-        const float cost = 1.0f + (left_box.surface_area() * static_cast<float>(left_total) +
-                                   right_area[bin + 1] * static_cast<float>(right)) /
-                                      node_area;
-        if (!best.found || cost < best.cost) best = {true, axis, bin, cost};
+        if (left_total == 0 || left_total == right_total) continue;  // a side without primitives
+        if (!best.found || cost[bin][axis] < best.cost) best = {true, axis, bin, cost[bin][axis]};
       }
     }
     // A node of zero area (all primitives at one point) prices every split as infinite or NaN.
@@ -280,14 +399,18 @@ class Builder {
       return bin_of(item.centroid[axis], axis_min, bins_per_unit) <= split.last_left_bin;
     };
     std::uint32_t first = begin, last = end;
+    GrowingRange growing_left, growing_right;
     for (;;) {
-      while (first < last && goes_left(items[first])) left.extend(items[first++]);
-      while (first < last && !goes_left(items[last - 1])) right.extend(items[--last]);
-      if (first == last) return first;
+      while (first < last && goes_left(items[first])) growing_left.extend(items[first++]);
+      while (first < last && !goes_left(items[last - 1])) growing_right.extend(items[--last]);
+      if (first == last) break;
       std::swap(items[first], items[--last]);  // items[first] goes left, items[last] right
-      left.extend(items[first++]);
-      right.extend(items[last]);
+      growing_left.extend(items[first++]);
+      growing_right.extend(items[last]);
     }
+    left = growing_left.bounds();
+    right = growing_right.bounds();
+    return first;
   }
 
   std::vector<Item> items_;
