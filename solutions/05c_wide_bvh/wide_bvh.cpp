@@ -209,6 +209,13 @@ std::optional<BvhHit> traverse4(const Bvh4& bvh, const Ray& ray, bool any_hit, B
       int order[kBvh4Width], count = 0;
       for (; mask != 0; mask &= mask - 1) {  // insertion sort by entry distance
         const int slot = lowest_set_bit(mask);
+#if RAYLAB_WIDE_BVH_SSE
+        if (!node.is_leaf(slot)) {  // fetched while the leaves are tested and the others sorted
+          const char* child = reinterpret_cast<const char*>(nodes + node.child[slot]);
+          _mm_prefetch(child, _MM_HINT_T0);
+          _mm_prefetch(child + 64, _MM_HINT_T0);
+        }
+#endif
         int at = count++;
         while (at > 0 && entries[order[at - 1]] > entries[slot]) {
           order[at] = order[at - 1];
