@@ -206,41 +206,47 @@ std::optional<BvhHit> traverse4(const Bvh4& bvh, const Ray& ray, bool any_hit, B
       float entries[kBvh4Width];
       unsigned mask = box4_test(lanes, search.t_min, search.t_max, node, entries);
       ++nodes_visited;
-      int order[kBvh4Width], count = 0;
-      for (; mask != 0; mask &= mask - 1) {  // insertion sort by entry distance
-        const int slot = lowest_set_bit(mask);
-#if RAYLAB_WIDE_BVH_SSE
-        if (!node.is_leaf(slot)) {  // fetched while the leaves are tested and the others sorted
-          const char* child = reinterpret_cast<const char*>(nodes + node.child[slot]);
-          _mm_prefetch(child, _MM_HINT_T0);
-          _mm_prefetch(child + 64, _MM_HINT_T0);
-        }
-#endif
-        int at = count++;
-        while (at > 0 && entries[order[at - 1]] > entries[slot]) {
-          order[at] = order[at - 1];
-          --at;
-        }
-        order[at] = slot;
+      unsigned leaves = 0;
+      for (unsigned bits = mask; bits != 0; bits &= bits - 1) {
+        const int slot = lowest_set_bit(bits);
+        if (node.is_leaf(slot)) leaves |= 1u << slot;
       }
-      for (int k = 0; k < count; ++k) {  // leaves, nearest first
-        const int slot = order[k];
-        if (!node.is_leaf(slot) || entries[slot] > search.t_max) continue;
-        test_leaf(search, node.child[slot], node.child[slot] + node.primitive_count[slot], any_hit, closest,
+      // Leaves, nearest first (the lowest slot first on a tie, as a stable sort).
+      for (unsigned waiting_leaves = leaves; waiting_leaves != 0;) {
+        int nearest = lowest_set_bit(waiting_leaves);
+        for (unsigned others = waiting_leaves & (waiting_leaves - 1); others != 0; others &= others - 1) {
+          const int slot = lowest_set_bit(others);
+          if (entries[slot] < entries[nearest]) nearest = slot;
+        }
+        waiting_leaves &= ~(1u << nearest);
+        if (entries[nearest] > search.t_max) continue;
+        test_leaf(search, node.child[nearest], node.child[nearest] + node.primitive_count[nearest], any_hit, closest,
                   primitives_tested);
         if (any_hit && closest) break;
       }
       if (any_hit && closest) break;
-      // Inner children: all but the nearest pushed, farthest first; the nearest is next.
-      int nearest_inner = -1;
-      for (int k = count - 1; k >= 0; --k) {
-        const int slot = order[k];
-        if (node.is_leaf(slot)) continue;
-        if (nearest_inner >= 0) stack[stack_size++] = {node.child[nearest_inner], entries[nearest_inner]};
-        nearest_inner = slot;
-      }
-      if (nearest_inner >= 0) {
-        next = {node.child[nearest_inner], entries[nearest_inner]};
+      // Inner children: the nearest is next; the others pushed, farthest first (sorted by
+      // entry distance, stable, so the lowest slot is nearer on a tie).
+      unsigned inner = mask & ~leaves;
+      if (inner != 0) {
+        int order[kBvh4Width], count = 0;
+        for (; inner != 0; inner &= inner - 1) {
+          const int slot = lowest_set_bit(inner);
+#if RAYLAB_WIDE_BVH_SSE
+          // fetched while the others are sorted and the nearest visited
+          const char* child = reinterpret_cast<const char*>(nodes + node.child[slot]);
+          _mm_prefetch(child, _MM_HINT_T0);
+          _mm_prefetch(child + 64, _MM_HINT_T0);
+#endif
+          int at = count++;
+          while (at > 0 && entries[order[at - 1]] > entries[slot]) {
+            order[at] = order[at - 1];
+            --at;
+          }
+          order[at] = slot;
+        }
+        for (int k = count - 1; k > 0; --k) stack[stack_size++] = {node.child[order[k]], entries[order[k]]};
+        next = {node.child[order[0]], entries[order[0]]};
         continue;
       }
     }
