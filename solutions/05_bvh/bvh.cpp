@@ -31,6 +31,8 @@ namespace {
 // level: then no tree is deeper than 30 + log2(primitive count) < kBvhMaxDepth.
 constexpr int kSahMaxDepth = 30;
 constexpr int kSahBinCount = 16;
+// Nodes of fewer primitives price only the splits after their used bins (sweep_used_bins).
+constexpr std::uint32_t kSahDenseSweepMinimum = 32;
 // Nodes with at least this many primitives build their two subtrees on two threads, down to
 // the depth where there are about twice as many subtrees as cores. Smaller trees (every
 // scene of the course, the autograder's meshes) never start a thread.
@@ -260,6 +262,43 @@ class Builder {
   using BinBoxes = std::array<std::array<GrowingBox, kSahBinCount>, 3>;
   using BinCounts = std::array<std::array<std::uint32_t, kSahBinCount>, 3>;
 
+  // The same search as sweep_bins and the loop after it, over the bins that hold primitives
+  // only: for a node of few primitives most bins are empty. The split after an empty bin
+  // divides the primitives as the split after the last bin before it that holds some, at the
+  // same price, and comes later, so it is never the first cheapest: only the splits after used
+  // bins are priced, each from the same boxes (min and max are exact in any order) and counts.
+  static SahSplit sweep_used_bins(const BinBoxes& bins, const BinCounts& bin_count,
+                                  const std::array<bool, 3>& splittable, float node_area) {
+    SahSplit best;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!splittable[axis]) continue;
+      int used[kSahBinCount], used_count = 0;
+      for (int bin = 0; bin < kSahBinCount; ++bin)
+        if (bin_count[axis][bin] > 0) used[used_count++] = bin;
+      float right_area[kSahBinCount];
+      std::uint32_t right_count[kSahBinCount];
+      GrowingBox right_box;
+      std::uint32_t right_total = 0;
+      for (int i = used_count - 1; i > 0; --i) {
+        right_box.extend(bins[axis][used[i]]);
+        right_total += bin_count[axis][used[i]];
+        right_area[i] = right_box.bounds().surface_area();
+        right_count[i] = right_total;
+      }
+      GrowingBox left_box;
+      std::uint32_t left_total = 0;
+      for (int i = 0; i + 1 < used_count; ++i) {
+        left_box.extend(bins[axis][used[i]]);
+        left_total += bin_count[axis][used[i]];
+        const float cost = 1.0f + (left_box.bounds().surface_area() * static_cast<float>(left_total) +
+                                   right_area[i + 1] * static_cast<float>(right_count[i + 1])) /
+                                      node_area;
+        if (!best.found || cost < best.cost) best = {true, axis, used[i], cost};
+      }
+    }
+    return best;
+  }
+
   // cost[bin][axis]: the SAH price of splitting after `bin` along `axis` (traversal cost 1,
   // primitive cost 1): 1 + (area left x count left + area right x count right) / node area.
   // Step 2 sweeps from the right for the area and count of everything right of each plane;
@@ -366,18 +405,23 @@ class Builder {
         ++bin_count[axis][bin];
       }
     }
-    // Steps 2 and 3 price the split after each bin: cost[bin][axis] (NaN where a side is empty).
-    alignas(16) float cost[kSahBinCount][4];
-    sweep_bins(growing_bins, bin_count, node_area, cost);
     SahSplit best;
-    for (int axis = 0; axis < 3; ++axis) {
-      if (!splittable[axis]) continue;
-      std::uint32_t left_total = 0, right_total = 0;
-      for (int bin = 0; bin < kSahBinCount; ++bin) right_total += bin_count[axis][bin];
-      for (int bin = 0; bin < kSahBinCount - 1; ++bin) {
-        left_total += bin_count[axis][bin];
-        if (left_total == 0 || left_total == right_total) continue;  // a side without primitives
-        if (!best.found || cost[bin][axis] < best.cost) best = {true, axis, bin, cost[bin][axis]};
+    if (end - begin < kSahDenseSweepMinimum) {
+      best = sweep_used_bins(growing_bins, bin_count, splittable, node_area);
+    } else {
+      // Steps 2 and 3 price the split after each bin: cost[bin][axis] (meaningless where a
+      // side has no primitives: skipped below).
+      alignas(16) float cost[kSahBinCount][4];
+      sweep_bins(growing_bins, bin_count, node_area, cost);
+      for (int axis = 0; axis < 3; ++axis) {
+        if (!splittable[axis]) continue;
+        std::uint32_t left_total = 0, right_total = 0;
+        for (int bin = 0; bin < kSahBinCount; ++bin) right_total += bin_count[axis][bin];
+        for (int bin = 0; bin < kSahBinCount - 1; ++bin) {
+          left_total += bin_count[axis][bin];
+          if (left_total == 0 || left_total == right_total) continue;  // a side without primitives
+          if (!best.found || cost[bin][axis] < best.cost) best = {true, axis, bin, cost[bin][axis]};
+        }
       }
     }
     // A node of zero area (all primitives at one point) prices every split as infinite or NaN.
