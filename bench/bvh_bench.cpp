@@ -195,7 +195,7 @@ void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std
   TriangleContext context{tree.corners.data(), {}};
   PrimitiveIntersector intersector{&test_triangle, &context};
   if (!tree.tested_by_calls()) intersector.triangles = tree.edges.data();
-  if (!tree.columns.empty()) intersector.columns = {tree.columns.data(), tree.wide->primitive_order.size() + 3};
+  if (!tree.columns.empty()) intersector.columns = TriangleColumns::of(tree.columns);
   for (std::size_t i = begin; i < end; ++i) {
     // Not const: DoNotOptimize(const T&) is deprecated since Google Benchmark 1.8.
     std::optional<BvhHit> hit = tree.wide ? intersect_bvh4(*tree.wide, rays[i], intersector, any_hit, stats)

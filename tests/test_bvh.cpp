@@ -152,7 +152,7 @@ TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
     // In the tree's leaf order (here not the triangles' own order): positions, not primitives.
     const std::vector<float> columns = triangle_columns(edges.data(), bvh.primitive_order);
     PrimitiveIntersector four_at_a_time = inlined;
-    four_at_a_time.columns = {columns.data(), bvh.primitive_order.size() + 3};
+    four_at_a_time.columns = TriangleColumns::of(columns);
     for (std::size_t r = 0; r < rays.size() && failures < 5; ++r) {
       Ray ray = rays[r];
       if (r < 400 && r % 8 == 5) {  // stop exactly at the first hit: it must be excluded by all

@@ -47,7 +47,7 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
     if (hand_triangles_to_traversal_) {
       intersector.triangles = triangle_edges_.data() + mesh.first_triangle;
-      if (!mesh.columns.empty()) intersector.columns = {mesh.columns.data(), mesh.wide.primitive_order.size() + 3};
+      if (!mesh.columns.empty()) intersector.columns = TriangleColumns::of(mesh.columns);
     }
     // The reference's own programs traverse the 4-wide tree (same leaves, same hits).
     const auto traverse = [&](bool any_hit) {

@@ -79,6 +79,9 @@ struct TriangleEdges {
 struct TriangleColumns {
   const float* values = nullptr;
   std::size_t stride = 0;
+
+  // The columns that triangle_columns() made (nine of `stride` values each).
+  static TriangleColumns of(const std::vector<float>& made) { return {made.data(), made.size() / 9}; }
 };
 
 // How the traversal tests one primitive: a plain function pointer and the caller's context.
@@ -114,7 +117,7 @@ struct PrimitiveIntersector {
 };
 
 // The columns (TriangleColumns::values) of triangles[primitive_order[i]] for every position i,
-// padded; their stride is primitive_order.size() + 3.
+// padded: their stride is primitive_order.size() + 3 (TriangleColumns::of takes it from them).
 std::vector<float> triangle_columns(const TriangleEdges* triangles, const std::vector<std::uint32_t>& primitive_order);
 
 // The work one query did, counted the same way by every correct traversal (bench/, grader).
