@@ -96,8 +96,8 @@ namespace {
 
 // intersect_ray_box4's test, here so that the traversal below has it inlined (a call per node
 // spills the ray's registers; as stage 05's reference inlines box_slabs.h). The ray's part of
-// it (RayLanes: its origin, inverse direction and their signs in four lanes each) is made once
-// per ray.
+// it (RayLanes: its origin and inverse direction in four lanes each, and which planes it enters
+// and leaves by) is made once per ray.
 #if RAYLAB_WIDE_BVH_SSE
 struct RayLanes {
   __m128 origin[3], inverse[3];
