@@ -268,7 +268,8 @@ class Builder {
   // only: for a node of few primitives most bins are empty. The split after an empty bin
   // divides the primitives as the split after the last bin before it that holds some, at the
   // same price, and comes later, so it is never the first cheapest: only the splits after used
-  // bins are priced, each from the same boxes (min and max are exact in any order) and counts.
+  // bins are priced, from the same counts and the same boxes, grown in the same order (an empty
+  // bin, +infinity to -infinity, changes no box it is added to, even one holding a NaN).
   static SahSplit sweep_used_bins(const BinBoxes& bins, const BinCounts& bin_count,
                                   const std::array<bool, 3>& splittable, float node_area) {
     SahSplit best;
@@ -304,7 +305,7 @@ class Builder {
   // cost[bin][axis]: the SAH price of splitting after `bin` along `axis` (traversal cost 1,
   // primitive cost 1): 1 + (area left x count left + area right x count right) / node area.
   // Step 2 sweeps from the right for the area and count of everything right of each plane;
-  // step 3 from the left, pricing each plane.
+  // step 3 from the left, pricing each plane. `cost` must be 16-byte aligned (alignas(16)).
   static void sweep_bins(const BinBoxes& bins, const BinCounts& bin_count, float node_area,
                          float cost[kSahBinCount][4]) {
     alignas(16) float count_left[kSahBinCount][4] = {}, count_right[kSahBinCount][4] = {};
@@ -522,6 +523,7 @@ std::optional<BvhHit> traverse(const Bvh& bvh, const Ray& ray, bool any_hit, Bvh
       // Without a branch on which child is nearer (random rays make it unpredictable): the
       // farther is written to the stack in any case and kept only when both were hit.
       const bool second_is_near = hit_second && (!hit_first || enter_second < enter_first);
+      // (stack_size <= this node's depth, below kBvhMaxDepth: the tree checks reject deeper trees)
       stack[stack_size] = second_is_near ? Waiting{first, enter_first} : Waiting{first + 1, enter_second};
       stack_size += (hit_first && hit_second) ? 1 : 0;
       if (hit_first || hit_second) {

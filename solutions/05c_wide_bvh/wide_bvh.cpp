@@ -176,8 +176,8 @@ inline int lowest_set_bit(unsigned mask) {
 #endif
 }
 
-// Near first: the hit children sorted by entry distance; leaves tested at once in that order,
-// then the nearest inner child visited next and the others pushed, farthest first. A waiting
+// Near first: a node's hit leaves tested at once, nearest first; then its nearest hit inner
+// child visited next and the other inner children pushed, farthest first. A waiting
 // node keeps its entry distance and is dropped without a box test once a closer hit is known.
 // test_leaf(search, begin, end, any_hit, closest, tested) tests a leaf's primitives
 // (solutions/05_bvh/leaf_test.h): a template parameter, so that the reference's triangle test

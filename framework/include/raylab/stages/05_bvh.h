@@ -81,7 +81,9 @@ struct TriangleColumns {
   std::size_t stride = 0;
 
   // The columns that triangle_columns() made (nine of `stride` values each).
+  // It points into `made`, which must outlive it (hence no temporaries).
   static TriangleColumns of(const std::vector<float>& made) { return {made.data(), made.size() / 9}; }
+  static TriangleColumns of(std::vector<float>&&) = delete;
 };
 
 // How the traversal tests one primitive: a plain function pointer and the caller's context.
