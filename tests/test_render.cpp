@@ -7,6 +7,7 @@
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
 #include "raylab/stages/01_camera_rays.h"
+#include "raylab/testkit/random_values.h"
 
 #include "test_helpers.h"
 
@@ -87,14 +88,10 @@ void expect_same_hits_with_reference_stages(const std::string& scene_file) {
     for (int x = 0; x < scene.camera.width; ++x)
       rays.push_back(generate_camera_ray(scene.camera, x, y, glm::vec2(0.5f)));
   Pcg32 random(12345u);  // the kit's generator: the same sequence on every platform
-  const auto next_point = [&random] {  // each coordinate in [0, 1), drawn in the order x, y, z
-    const float x = random.next_float(), y = random.next_float();
-    return glm::vec3(x, y, random.next_float());
-  };
   for (int i = 0; i < 20000; ++i) {
     Ray ray;
-    ray.origin = scene_box.min + next_point() * (scene_box.max - scene_box.min);
-    ray.direction = next_point() * 2.0f - 1.0f;
+    ray.origin = scene_box.min + testkit::random_vec3(random, 0.0f, 1.0f) * (scene_box.max - scene_box.min);
+    ray.direction = testkit::random_vec3(random, -1.0f, 1.0f);
     if (i % 2 == 1) ray.t_max = random.next_float() * 200.0f;  // shadow rays stop short
     rays.push_back(ray);
   }
