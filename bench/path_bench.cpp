@@ -30,6 +30,9 @@
 //                      --integrator path runs it (stage 09's path_radiance, the reference's
 //                      geometry), on one thread, with another seed than the reference image's
 //                      (at 1 spp it shoots through each pixel's centre, as the renderer does)
+//   raylab-reference-auto  the same with --roulette auto: roulette by the path's throughput from
+//                      the third surface on (RenderContext::continue_probability) instead of 0.8
+//                      from the first; not an estimator of the peer's, the renderer's fastest
 // The peer row: GAMES101 assignment 7 as a student completed it, 784x784 at 16 spp, one thread, on
 // this machine: 31.8 s (1,436 s as shipped, a new random_device and mt19937 per number). Its error is
 // taken as the games101 strategy's at 16 spp (with jittered pixel positions: the peer shoots every
@@ -72,7 +75,7 @@ constexpr float kRoulette = 0.8f;
 constexpr double kPeerSeconds = 31.8;  // GAMES101 assignment 7, 784x784, 16 spp, one thread
 constexpr int kPeerWidth = 784, kPeerSamples = 16;
 
-enum class Strategy { BsdfUniform, BsdfCosine, Games101, LightCosine, LightCosineCmj, Mis, Renderer };
+enum class Strategy { BsdfUniform, BsdfCosine, Games101, LightCosine, LightCosineCmj, Mis, Renderer, RendererAuto };
 
 struct StrategyInfo {
   Strategy strategy;
@@ -87,6 +90,7 @@ constexpr StrategyInfo kStrategies[] = {
     {Strategy::LightCosineCmj, "light-cosine-cmj", true, false, true, false},
     {Strategy::Mis, "mis", true, false, true, true},
     {Strategy::Renderer, "raylab-reference", true, false, true, false},
+    {Strategy::RendererAuto, "raylab-reference-auto", true, false, true, false},
 };
 
 // The mis strategy weighs with stage 09b's power_heuristic (the reference's, linked here) and the
@@ -181,9 +185,10 @@ Timed render_strategy(const Scene& scene, const RenderContext& context, const St
   const Camera& camera = scene.camera;
   Timed result{Image(camera.width, camera.height), 0.0};
   const std::clock_t start = std::clock();
-  if (strategy.strategy == Strategy::Renderer) {
+  if (strategy.strategy == Strategy::Renderer || strategy.strategy == Strategy::RendererAuto) {
     RenderSettings settings = renderer;
     settings.samples_per_pixel = samples_per_pixel;
+    if (strategy.strategy == Strategy::RendererAuto) settings.roulette = RussianRoulette{1.0f, true};
     result.image = render(scene, settings);
     result.seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     return result;
@@ -262,7 +267,7 @@ int main(int argc, char** argv) {
     settings.tracing.reference_stages = true;  // this program links solutions/, as raylab-reference
     settings.samples_per_pixel = reference_spp;
     settings.max_depth = kMaxDepth;
-    settings.roulette_probability = kRoulette;
+    settings.roulette = RussianRoulette{kRoulette, false};
     settings.seed = 1;
     settings.track_variance = true;
     RenderStats reference_stats;
@@ -286,11 +291,11 @@ int main(int argc, char** argv) {
     TracingFunctions reference_tracing;
     reference_tracing.reference_stages = true;  // as raylab-reference
     const SceneGeometry geometry(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, reference_tracing);
-    const RenderContext context(scene, geometry, kMaxDepth, Skips{}, kRoulette);
+    const RenderContext context(scene, geometry, kMaxDepth, Skips{}, RussianRoulette{kRoulette, false});
     std::filesystem::create_directories(output);
     std::ofstream csv(output + "/path_error.csv");
     csv << "strategy,spp,seconds,paths_per_second,rmse\n";
-    std::printf("%-17s %5s %11s %12s %9s\n", "strategy", "spp", "CPU seconds", "paths/s", "RMSE");
+    std::printf("%-21s %5s %11s %12s %9s\n", "strategy", "spp", "CPU seconds", "paths/s", "RMSE");
     std::vector<std::vector<Point>> curves;
     std::vector<double> paths_per_second;
     const double pixels = static_cast<double>(width) * width;
@@ -307,7 +312,7 @@ int main(int argc, char** argv) {
         curve.push_back({spp, timed.seconds, rmse});
         seconds += timed.seconds;
         paths += pixels * spp;
-        std::printf("%-17s %5d %11.3f %12.0f %9.5f\n", strategy.name, spp, timed.seconds, pixels * spp / timed.seconds, rmse);
+        std::printf("%-21s %5d %11.3f %12.0f %9.5f\n", strategy.name, spp, timed.seconds, pixels * spp / timed.seconds, rmse);
         std::fflush(stdout);
         csv << strategy.name << ',' << spp << ',' << timed.seconds << ',' << pixels * spp / timed.seconds << ',' << rmse
             << '\n';
@@ -329,12 +334,12 @@ int main(int argc, char** argv) {
                 width, width);
     std::printf("Time to reach it at %dx%d on one thread (peer, measured on this machine: %.1f s):\n", kPeerWidth,
                 kPeerWidth, kPeerSeconds);
-    std::printf("%-17s %12s %14s %10s %14s\n", "strategy", "paths/s", "spp needed", "seconds", "peer / this");
+    std::printf("%-21s %12s %14s %10s %14s\n", "strategy", "paths/s", "spp needed", "seconds", "peer / this");
     const double peer_pixels = static_cast<double>(kPeerWidth) * kPeerWidth;
     for (std::size_t i = 0; i < curves.size(); ++i) {
       const double spp = samples_to_reach(curves[i], peer_rmse);
       const double seconds = peer_pixels * spp / paths_per_second[i];
-      std::printf("%-17s %12.0f %14.2f %10.2f %13.1fx\n", kStrategies[i].name, paths_per_second[i], spp, seconds,
+      std::printf("%-21s %12.0f %14.2f %10.2f %13.1fx\n", kStrategies[i].name, paths_per_second[i], spp, seconds,
                   spp > 0 ? kPeerSeconds / seconds : 0.0);
     }
     std::printf("(peer: %.0f paths/s on one thread)\n\nCSV written to %s/path_error.csv\n",

@@ -17,8 +17,10 @@
 //   estimate_direct_light(context, *hit, bsdf, wo, sampler)   stage 08, for diffuse surfaces
 //   spawn_ray(*hit, wi)               the next ray, starting just off the surface
 //   context.max_depth                 the most bounces after the camera ray (--max-depth)
-//   context.roulette_probability      p in (0, 1]: the chance to go on at each bounce
-//                                     (--roulette; 1 means no roulette)
+//   context.continue_probability(depth, throughput)   p in (0, 1]: the chance to go on after
+//                                     this surface (depth: bounces so far, 0 at the camera ray's
+//                                     hit; throughput: the path's weight so far). --roulette sets
+//                                     it: a fixed P (1: no roulette) or auto (by the throughput)
 //   sampler.get_1d(), sampler.get_2d()   your random numbers (uniform in [0, 1))
 //
 // THE RULES (handout sections 2-5)

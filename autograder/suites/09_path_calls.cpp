@@ -69,7 +69,8 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
     for (Material& material : scene.materials) material.diffuse_color = glm::vec3(request.albedo);
   if (request.probe_only) {
     const SceneGeometry geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, grader_tracing());
-    const RenderContext context(scene, geometry, request.max_depth, Skips{}, request.roulette_probability);
+    const RenderContext context(scene, geometry, request.max_depth, Skips{},
+                                RussianRoulette{request.roulette_probability, false});
     Ray ray;
     ray.origin = scene.camera.position;
     ray.direction = glm::normalize(scene.camera.look_at - scene.camera.position);
@@ -83,7 +84,7 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
   settings.integrator = request.mis ? IntegratorKind::PathMis : IntegratorKind::Path;
   settings.samples_per_pixel = request.samples_per_pixel;
   settings.max_depth = request.max_depth;
-  settings.roulette_probability = request.roulette_probability;
+  settings.roulette = RussianRoulette{request.roulette_probability, false};
   settings.seed = request.seed;
   settings.track_variance = true;
   settings.tracing = grader_tracing();

@@ -80,7 +80,7 @@ std::vector<glm::vec3> mis_scripted_paths(const MisScene& test_scene, const std:
   const SceneGeometry geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, grader_tracing());
   std::vector<glm::vec3> radiance;
   for (const MisScriptedPath& path : paths) {
-    const RenderContext context(scene, geometry, path.max_depth, Skips{}, 1.0f);
+    const RenderContext context(scene, geometry, path.max_depth, Skips{}, RussianRoulette{});
     Ray ray;
     ray.origin = path.origin;
     ray.direction = path.direction;

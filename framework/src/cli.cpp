@@ -30,7 +30,7 @@ struct RenderOptions {
   int max_depth = -1;         // -1: the scene's
   int threads = 0;            // 0: every core
   int samples_per_pixel = 1;
-  float roulette = 1.0f;      // the path tracer's Russian roulette probability (1: none)
+  std::string roulette = "1";  // the path tracer's Russian roulette: a probability, or "auto"
   std::uint64_t seed = 0;
   std::string integrator;     // empty: the scene's ("integrator", whitted by default)
   std::string variance_path;  // empty: no variance image
@@ -51,6 +51,9 @@ int run_render(const RenderOptions& options) {
   }
   if (!options.integrator.empty() && !integrator_from_name(options.integrator))
     throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct, path, mis)");
+  const std::optional<RussianRoulette> roulette = RussianRoulette::from_text(options.roulette);
+  if (!roulette)
+    throw UsageError("--roulette: expected a probability in [0.001, 1] or auto, got '" + options.roulette + "'");
   Scene scene = load_scene(options.scene_path);
   const std::optional<IntegratorKind> integrator =
       integrator_from_name(options.integrator.empty() ? scene.integrator : options.integrator);
@@ -70,7 +73,7 @@ int run_render(const RenderOptions& options) {
   settings.adaptive_tolerance = options.adaptive;
   settings.adaptive_batch = options.adaptive_batch;
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
-  settings.roulette_probability = options.roulette;
+  settings.roulette = *roulette;
   settings.threads = options.threads;
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
   settings.tracing.reference_stages = options.reference_stages;
@@ -124,9 +127,9 @@ int run_cli(int argc, char** argv, LinkedStages stages) {
                              "How light is computed (default: the scene's, else whitted): whitted, direct (area and point lights, BSDFs), path "
                              "(path tracing, stage 09) or mis (path tracing with multiple importance sampling, stage 09b)");
   render_command->add_option("--roulette", options.roulette,
-                             "path: the chance that a path goes on at each bounce, in (0, 1] (default 1: no Russian "
-                             "roulette, paths end at --max-depth)")
-      ->check(CLI::Range(0.001f, 1.0f));
+                             "path, mis: Russian roulette. A number P in [0.001, 1]: a path goes on at each bounce with "
+                             "chance P (default 1: no roulette, paths end at --max-depth); auto: by the path's "
+                             "throughput, from the third surface on (converges faster)");
   render_command->add_option("--seed", options.seed, "Seed of the random numbers (default 0)");
   render_command->add_option("--variance", options.variance_path,
                              "Also write each pixel's variance of the mean (.exr keeps it linear)");

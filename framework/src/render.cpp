@@ -67,7 +67,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   const SceneGeometry geometry(scene, settings.skips.no_bvh_for_small_sets ? Acceleration::Bvh : Acceleration::BvhAlways,
                                settings.triangle_test, settings.tracing);
   const auto camera_ray = settings.tracing.camera_ray ? settings.tracing.camera_ray : generate_camera_ray;
-  const RenderContext context(scene, geometry, settings.max_depth, settings.skips, settings.roulette_probability);
+  const RenderContext context(scene, geometry, settings.max_depth, settings.skips, settings.roulette);
   const Integrator integrator(settings.integrator);
   const int samples_per_pixel = settings.samples_per_pixel;
   const bool one_plain_sample = samples_per_pixel == 1 && !settings.track_variance && !adaptive;

@@ -31,7 +31,7 @@ glm::vec3 path_radiance(const RenderContext& context, const Ray& camera_ray, Sam
 
     if (depth >= context.max_depth) return radiance;
     // Russian roulette: go on with probability p, and divide by p so the expectation stays.
-    const float p = context.roulette_probability;
+    const float p = context.continue_probability(depth, throughput);
     if (p < 1.0f) {
       if (sampler.get_1d() >= p) return radiance;
       throughput /= p;

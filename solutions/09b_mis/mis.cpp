@@ -82,7 +82,7 @@ glm::vec3 path_radiance_mis(const RenderContext& context, const Ray& camera_ray,
     if (!bsdf_sample_follows) return radiance;
     // Russian roulette, as in stage 09 (a path that goes on carries 1 / p, so the weighted
     // emission it finds keeps its expectation).
-    const float p = context.roulette_probability;
+    const float p = context.continue_probability(depth, throughput);
     if (p < 1.0f) {
       if (sampler.get_1d() >= p) return radiance;
       throughput /= p;

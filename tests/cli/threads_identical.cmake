@@ -1,11 +1,15 @@
-# cmake -DPROGRAM=raylab-reference -DSCENE=scene.json -DOUTPUT_DIR=dir [-DINTEGRATOR=path] -P threads_identical.cmake
+# cmake -DPROGRAM=raylab-reference -DSCENE=scene.json -DOUTPUT_DIR=dir [-DINTEGRATOR=path] [-DROULETTE=auto]
+#       -P threads_identical.cmake
 # Renders SCENE with --threads 1 and --threads 2, at 1 and at 4 samples per pixel, and fails
 # unless the two PNG files of each sample count are byte-identical: each pixel must depend
 # only on the scene and the sample count, never on which thread drew it. INTEGRATOR (default
-# the renderer's) is passed as --integrator.
+# the renderer's) is passed as --integrator, ROULETTE (default none) as --roulette.
 set(integrator_arguments "")
 if(INTEGRATOR)
   set(integrator_arguments --integrator ${INTEGRATOR})
+endif()
+if(ROULETTE)
+  list(APPEND integrator_arguments --roulette ${ROULETTE})
 endif()
 foreach(spp 1 4)
   foreach(threads 1 2)

@@ -102,7 +102,7 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
     const bool follows = depth < context.max_depth;
     if (!bsdf.is_specular()) radiance += throughput * light_sample(context, v, *hit, bsdf, wo, sampler, follows);
     if (!follows) return radiance;
-    const float p = context.roulette_probability;
+    const float p = context.continue_probability(depth, throughput);
     if (p < 1.0f) {
       if (sampler.get_1d() >= p) return radiance;
       throughput /= p;

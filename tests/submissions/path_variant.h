@@ -51,7 +51,7 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
     if (!bsdf.is_specular())
       radiance += throughput * estimate_direct_light(context, *hit, bsdf, wo, sampler);
     if (depth >= context.max_depth) return radiance;
-    float p = context.roulette_probability;
+    float p = context.continue_probability(depth, throughput);
     if (v.throughput_roulette) p = std::min(1.0f, std::max({throughput.x, throughput.y, throughput.z, 0.05f}));
     if (p < 1.0f) {
       if (sampler.get_1d() >= p) return radiance;

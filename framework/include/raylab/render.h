@@ -29,7 +29,7 @@ struct RenderSettings {
   std::uint64_t seed = 0;       // changes every random number (an independent render)
   bool track_variance = false;  // also give each pixel's variance of the mean (render_with_variance)
   int max_depth = 5;
-  float roulette_probability = 1.0f;  // --roulette: the path tracer's chance to go on (1: no roulette)
+  RussianRoulette roulette;  // --roulette: how the path tracer's paths end (default: no roulette)
   int threads = 0;             // 0: every core
   bool show_progress = false;  // progress, ETA and rays/s on stderr
   // What to leave out (shading.h); the same image either way. Changed only to measure.

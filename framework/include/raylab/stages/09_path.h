@@ -1,7 +1,7 @@
 // Stage 09_path: the path tracer. Write path_radiance in assignments/09_path/path.cpp (its
 // comments are the full contract); handout: docs/09_path.md. `raylab render ... --integrator
 // path` renders with it (--max-depth sets context.max_depth, --roulette
-// context.roulette_probability).
+// context.continue_probability).
 #pragma once
 
 #include "raylab/integrator.h"
