@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <cstring>
 #include <sstream>
 #include <string>
@@ -167,7 +168,8 @@ TEST(RussianRoulette, ReadsAProbabilityOrAutoAndNothingElse) {
     EXPECT_FALSE(roulette->by_throughput) << text;
     EXPECT_EQ(roulette->probability, std::stof(text)) << text;
   }
-  for (const char* text : {"", "0", "-0.5", "1.5", "0.0009", "nan", "inf", "0.8x", "often", "Auto", "1e99"})
+  for (const char* text : {"", "0", "-0.5", "1.5", "0.0009", "nan", "inf", "0.8x", "often", "Auto", "1e99", " 0.8",
+                           "0.8 ", " auto"})
     EXPECT_FALSE(RussianRoulette::from_text(text)) << "'" << text << "' read as a roulette";
 }
 
@@ -183,6 +185,9 @@ TEST(RussianRoulette, ByTheThroughputGoesOnAtTheFirstTwoSurfacesThenByTheLargest
   }
   EXPECT_EQ(by_throughput.continue_probability(2, glm::vec3(3.0f, 0.1f, 0.0f)), 1.0f) << "at most 1";
   EXPECT_EQ(by_throughput.continue_probability(7, glm::vec3(1e-6f)), 0.05f) << "at least 0.05";
+  for (const float probability : {0.0f, -1.0f, 1.5f, std::nanf("")})
+    EXPECT_THROW(RenderContext(scene, geometry, 5, Skips{}, RussianRoulette{probability, false}), std::invalid_argument)
+        << "a fixed probability of " << probability;
 }
 
 // The furnace (scenes/furnace.json): every pixel is 1 / (1 - 0.5) = 2 (minus 0.5^32 / 0.5 for

@@ -18,9 +18,10 @@
 //   spawn_ray(*hit, wi)               the next ray, starting just off the surface
 //   context.max_depth                 the most bounces after the camera ray (--max-depth)
 //   context.continue_probability(depth, throughput)   p in (0, 1]: the chance to go on after
-//                                     this surface (depth: bounces so far, 0 at the camera ray's
-//                                     hit; throughput: the path's weight so far). --roulette sets
-//                                     it: a fixed P (1: no roulette) or auto (by the throughput)
+//                                     this surface. depth: bounces so far (0 at the camera ray's
+//                                     hit); throughput: the weight that reached this surface,
+//                                     before you sample the next direction. --roulette sets it:
+//                                     a fixed P (1: no roulette) or auto (by the throughput)
 //   sampler.get_1d(), sampler.get_2d()   your random numbers (uniform in [0, 1))
 //
 // THE RULES (handout sections 2-5)

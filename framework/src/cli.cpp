@@ -10,8 +10,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
-#include <optional>
 #include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
 #if defined(_WIN32)
 #include <io.h>
 #define RAYLAB_ISATTY(stream) (::_isatty(::_fileno(stream)) != 0)
@@ -22,6 +24,13 @@
 
 namespace raylab {
 namespace {
+
+// RussianRoulette::kLeastProbability as the messages write it.
+const std::string kLeastRoulette = [] {
+  std::ostringstream text;
+  text << RussianRoulette::kLeastProbability;
+  return text.str();
+}();
 
 struct RenderOptions {
   std::string scene_path;
@@ -53,7 +62,8 @@ int run_render(const RenderOptions& options) {
     throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct, path, mis)");
   const std::optional<RussianRoulette> roulette = RussianRoulette::from_text(options.roulette);
   if (!roulette)
-    throw UsageError("--roulette: expected a probability in [0.001, 1] or auto, got '" + options.roulette + "'");
+    throw UsageError("--roulette: expected a probability in [" + kLeastRoulette + ", 1] or auto, got '" +
+                     options.roulette + "'");
   Scene scene = load_scene(options.scene_path);
   const std::optional<IntegratorKind> integrator =
       integrator_from_name(options.integrator.empty() ? scene.integrator : options.integrator);
@@ -127,7 +137,8 @@ int run_cli(int argc, char** argv, LinkedStages stages) {
                              "How light is computed (default: the scene's, else whitted): whitted, direct (area and point lights, BSDFs), path "
                              "(path tracing, stage 09) or mis (path tracing with multiple importance sampling, stage 09b)");
   render_command->add_option("--roulette", options.roulette,
-                             "path, mis: Russian roulette. A number P in [0.001, 1]: a path goes on at each bounce with "
+                             "path, mis: Russian roulette. A number P in [" + kLeastRoulette +
+                                 ", 1]: a path goes on at each bounce with "
                              "chance P (default 1: no roulette, paths end at --max-depth); auto: by the path's "
                              "throughput, from the third surface on (converges faster)");
   render_command->add_option("--seed", options.seed, "Seed of the random numbers (default 0)");

@@ -1,6 +1,9 @@
 #include "raylab/integrator.h"
 
+#include <cctype>
 #include <exception>
+#include <sstream>
+#include <stdexcept>
 
 namespace raylab {
 
@@ -12,10 +15,18 @@ RenderContext::RenderContext(const Scene& scene_, const SceneGeometry& geometry_
       lights(scene_),
       max_depth(max_depth_),
       roulette(roulette_),
-      skips(skips_) {}
+      skips(skips_) {
+  if (!roulette.by_throughput && !RussianRoulette::is_valid_probability(roulette.probability)) {
+    std::ostringstream message;
+    message << "Russian roulette: the probability to go on must be in [" << RussianRoulette::kLeastProbability
+            << ", 1], not " << roulette.probability;
+    throw std::invalid_argument(message.str());
+  }
+}
 
 std::optional<RussianRoulette> RussianRoulette::from_text(const std::string& text) {
   if (text == "auto") return RussianRoulette{1.0f, true};
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return std::nullopt;  // as at the end
   std::size_t used = 0;
   float probability = 0.0f;
   try {
@@ -23,7 +34,7 @@ std::optional<RussianRoulette> RussianRoulette::from_text(const std::string& tex
   } catch (const std::exception&) {
     return std::nullopt;  // not a number, or out of float's range
   }
-  if (used != text.size() || !(probability >= kLeastProbability && probability <= 1.0f)) return std::nullopt;
+  if (used != text.size() || !is_valid_probability(probability)) return std::nullopt;
   return RussianRoulette{probability, false};
 }
 

@@ -3,11 +3,13 @@
 # Renders SCENE with --threads 1 and --threads 2, at 1 and at 4 samples per pixel, and fails
 # unless the two PNG files of each sample count are byte-identical: each pixel must depend
 # only on the scene and the sample count, never on which thread drew it. INTEGRATOR (default
-# the renderer's) is passed as --integrator, ROULETTE (default none) as --roulette.
+# the renderer's) is passed as --integrator, ROULETTE (default none) as --roulette; then the
+# 4-spp picture must also differ from one rendered without --roulette (else it did nothing).
 set(integrator_arguments "")
 if(INTEGRATOR)
   set(integrator_arguments --integrator ${INTEGRATOR})
 endif()
+set(without_roulette ${integrator_arguments})
 if(ROULETTE)
   list(APPEND integrator_arguments --roulette ${ROULETTE})
 endif()
@@ -38,5 +40,20 @@ execute_process(
   RESULT_VARIABLE spp_changed)
 if(spp_changed EQUAL 0)
   message(FATAL_ERROR "--spp 4 wrote the same file as --spp 1: no anti-aliasing")
+endif()
+if(ROULETTE)
+  set(image "${OUTPUT_DIR}/no_roulette_spp_4.png")
+  execute_process(
+    COMMAND "${PROGRAM}" render "${SCENE}" -o "${image}" --width 160 --height 120 -q --threads 1 --spp 4
+            ${without_roulette}
+    RESULT_VARIABLE status ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "without --roulette: exit status ${status}\nstderr: ${err}")
+  endif()
+  execute_process(COMMAND "${CMAKE_COMMAND}" -E compare_files "${image}" "${OUTPUT_DIR}/threads_1_spp_4.png"
+                  RESULT_VARIABLE roulette_changed)
+  if(roulette_changed EQUAL 0)
+    message(FATAL_ERROR "--roulette ${ROULETTE} wrote the same file as no roulette: it did nothing")
+  endif()
 endif()
 message(STATUS "ok: --threads 1 and --threads 2 give identical PNG files at --spp 1 and --spp 4")

@@ -34,13 +34,16 @@ struct RussianRoulette {
   // True: the chance follows the path's throughput (RenderContext::continue_probability), as
   // pbrt-v4 does: a path whose weight has fallen is stopped more often, and one that goes on
   // keeps a weight near 1. Fewer samples reach a given error than with a fixed 0.8
-  // (docs/performance.md, "Path tracing").
+  // (docs/performance.md, "Russian roulette by the throughput").
   bool by_throughput = false;
 
   // "auto": by the throughput; a number in [kLeastProbability, 1]: that fixed probability
   // (smaller ones would weigh the paths that go on by 1000 and more). nullopt otherwise.
   static std::optional<RussianRoulette> from_text(const std::string& text);
   static constexpr float kLeastProbability = 0.001f;
+  static bool is_valid_probability(float probability) {
+    return probability >= kLeastProbability && probability <= 1.0f;  // false for NaN
+  }
 };
 
 // Everything the rays of one render read, and nothing they write: the scene, its geometry
@@ -54,6 +57,8 @@ struct RenderContext {
   RussianRoulette roulette;  // the path tracer's: ask continue_probability()
   Skips skips;
 
+  // Throws std::invalid_argument for a fixed roulette probability outside
+  // [RussianRoulette::kLeastProbability, 1].
   RenderContext(const Scene& scene_, const SceneGeometry& geometry_, int max_depth_, const Skips& skips_,
                 RussianRoulette roulette_ = {});
 
