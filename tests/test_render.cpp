@@ -205,7 +205,7 @@ TEST(Render, RouletteByThroughputKeepsTheFurnaceAtTwo) {
   settings.seed = 5;
   const RenderOutput output = render_with_variance(scene, settings);
   // z of the mean of 256 independent pixels (one channel: the furnace is grey). A correct path
-  // tracer fails |z| < 4.5 with probability 7e-6; the seed is fixed, so the verdict never changes.
+  // tracer gets |z| >= 4.5 with probability 7e-6; the seed is fixed, so the verdict never changes.
   double sum = 0.0, variance = 0.0;
   const std::size_t count = output.mean.pixels().size();
   for (std::size_t i = 0; i < count; ++i) {

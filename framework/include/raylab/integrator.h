@@ -31,8 +31,8 @@ struct RussianRoulette {
   // With by_throughput false: the chance to go on at every bounce, in (0, 1] (1: no roulette;
   // paths end at max_depth only). GAMES101 assignment 7 uses 0.8.
   float probability = 1.0f;
-  // True: the chance follows the path's throughput (RenderContext::continue_probability), as
-  // pbrt-v4 does: a path whose weight has fallen is stopped more often, and one that goes on
+  // True: the chance follows the path's throughput (RenderContext::continue_probability), much
+  // as pbrt-v4 does: a path whose weight has fallen is stopped more often, and one that goes on
   // keeps a weight near 1. Fewer samples reach a given error than with a fixed 0.8
   // (docs/performance.md, "Russian roulette by the throughput").
   bool by_throughput = false;
