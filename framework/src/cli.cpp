@@ -26,11 +26,11 @@ namespace raylab {
 namespace {
 
 // RussianRoulette::kLeastProbability as the messages write it.
-const std::string kLeastRoulette = [] {
+std::string least_roulette_text() {
   std::ostringstream text;
   text << RussianRoulette::kLeastProbability;
   return text.str();
-}();
+}
 
 struct RenderOptions {
   std::string scene_path;
@@ -62,7 +62,7 @@ int run_render(const RenderOptions& options) {
     throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct, path, mis)");
   const std::optional<RussianRoulette> roulette = RussianRoulette::from_text(options.roulette);
   if (!roulette)
-    throw UsageError("--roulette: expected a probability in [" + kLeastRoulette + ", 1] or auto, got '" +
+    throw UsageError("--roulette: expected a probability in [" + least_roulette_text() + ", 1] or auto, got '" +
                      options.roulette + "'");
   Scene scene = load_scene(options.scene_path);
   const std::optional<IntegratorKind> integrator =
@@ -137,7 +137,7 @@ int run_cli(int argc, char** argv, LinkedStages stages) {
                              "How light is computed (default: the scene's, else whitted): whitted, direct (area and point lights, BSDFs), path "
                              "(path tracing, stage 09) or mis (path tracing with multiple importance sampling, stage 09b)");
   render_command->add_option("--roulette", options.roulette,
-                             "path, mis: Russian roulette. A number P in [" + kLeastRoulette +
+                             "path, mis: Russian roulette. A number P in [" + least_roulette_text() +
                                  ", 1]: a path goes on at each bounce with "
                              "chance P (default 1: no roulette, paths end at --max-depth); auto: by the path's "
                              "throughput, from the third surface on (converges faster)");

@@ -44,6 +44,19 @@ struct RussianRoulette {
   static bool is_valid_probability(float probability) {
     return probability >= kLeastProbability && probability <= 1.0f;  // false for NaN
   }
+
+  // The chance p, in (0, 1], that a path goes on after its vertex `depth` (0 where the camera
+  // ray hit), given its throughput so far. A fixed probability: always it. By the throughput:
+  // 1 at the first kFirstDepth vertices, then the throughput's largest channel, kept within
+  // [kLeastByThroughput, 1].
+  float continue_probability(int depth, const glm::vec3& throughput) const {
+    if (!by_throughput) return probability;
+    if (depth < kFirstDepth) return 1.0f;
+    const float largest = std::max(throughput.x, std::max(throughput.y, throughput.z));
+    return std::min(1.0f, std::max(kLeastByThroughput, largest));
+  }
+  static constexpr int kFirstDepth = 2;
+  static constexpr float kLeastByThroughput = 0.05f;
 };
 
 // Everything the rays of one render read, and nothing they write: the scene, its geometry
@@ -64,17 +77,11 @@ struct RenderContext {
 
   // The path tracer's Russian roulette (stages 09 and 09b; docs/09_path.md, section 4): the
   // chance p, in (0, 1], that a path goes on after its vertex `depth` (0 where the camera ray
-  // hit), given its throughput so far. With a fixed probability (--roulette P) always P. By the
-  // throughput (--roulette auto): 1 at the first kRouletteFirstDepth vertices, then the
-  // throughput's largest channel, kept within [kRouletteLeast, 1].
+  // hit), given its throughput so far: --roulette P always P; --roulette auto by the throughput
+  // (RussianRoulette::continue_probability).
   float continue_probability(int depth, const glm::vec3& throughput) const {
-    if (!roulette.by_throughput) return roulette.probability;
-    if (depth < kRouletteFirstDepth) return 1.0f;
-    const float largest = std::max(throughput.x, std::max(throughput.y, throughput.z));
-    return std::min(1.0f, std::max(kRouletteLeast, largest));
+    return roulette.continue_probability(depth, throughput);
   }
-  static constexpr int kRouletteFirstDepth = 2;
-  static constexpr float kRouletteLeast = 0.05f;
 };
 
 enum class IntegratorKind {
