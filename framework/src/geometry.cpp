@@ -7,20 +7,21 @@
 
 namespace raylab {
 
+SceneGeometry::Triangle::Triangle(const glm::vec3& p0_, const glm::vec3& p1_, const glm::vec3& p2_,
+                                  std::uint32_t mesh_, std::uint32_t first_index_)
+    : p0(p0_), p1(p1_), p2(p2_), mesh(mesh_), first_index(first_index_) {
+  const glm::vec3 unnormalised = glm::cross(p1 - p0, p2 - p0);
+  const float length = glm::length(unnormalised);
+  has_area = length > 0.0f;
+  normal = has_area ? unnormalised / length : glm::vec3(0.0f);
+}
+
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
   // Find the closest t first (shrinking t_max after every hit), then fill the record once.
   HitRecord record;
   Query query{this, &record, /*any_hit=*/false};
   const std::optional<float> t_hit = intersect_objects(ray, query);
   if (!t_hit || record.kind == Kind::None) return std::nullopt;
-  if (record.triangle_hit_pending) {
-    // Found by the reference traversal's inlined test, which keeps no barycentrics: the same
-    // test through the stage function gives them (and the same t).
-    const Triangle& tri = triangles_[record.index];
-    const std::optional<TriangleHit> details = intersect_triangle_(ray, tri.p0, tri.p1, tri.p2);
-    if (!details) return std::nullopt;
-    record.triangle_hit = *details;
-  }
   const Kind kind = record.kind;
   const std::size_t index = record.index;
   const TriangleHit& triangle_hit = record.triangle_hit;
@@ -43,10 +44,8 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     // The point from barycentrics is far more accurate than origin + t * direction.
     hit.point = b0 * tri.p0 + b1 * tri.p1 + b2 * tri.p2;
     hit.point_error = gamma_bound(7) * (glm::abs(b0 * tri.p0) + glm::abs(b1 * tri.p1) + glm::abs(b2 * tri.p2));
-    const glm::vec3 normal = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
-    const float length = glm::length(normal);
     // A degenerate triangle has no normal; face the ray so that shading stays finite.
-    hit.geometric_normal = length > 0.0f ? normal / length : -glm::normalize(ray.direction);
+    hit.geometric_normal = tri.has_area ? tri.normal : -glm::normalize(ray.direction);
     if (!mesh.texcoords.empty()) {
       hit.texcoord = b0 * mesh.texcoords[mesh.indices[tri.first_index]] +
                      b1 * mesh.texcoords[mesh.indices[tri.first_index + 1]] +

@@ -45,9 +45,11 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
   if (!mesh.bvh.nodes.empty()) {
     BvhTraversalStats stats;
     PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
+    TriangleHit inlined_hit;  // hand_triangles_to_traversal_: the closest hit's details, from the traversal's own test
     if (hand_triangles_to_traversal_) {
       intersector.triangles = triangle_edges_.data() + mesh.first_triangle;
       if (!mesh.columns.empty()) intersector.columns = TriangleColumns::of(mesh.columns);
+      if (!query.any_hit) intersector.closest_triangle_hit = &inlined_hit;
     }
     // The reference's own programs traverse the 4-wide tree (same leaves, same hits).
     const auto traverse = [&](bool any_hit) {
@@ -68,9 +70,9 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     if (!hit || hit->primitive >= mesh.triangle_count) return std::nullopt;
     const std::uint32_t returned = mesh.first_triangle + hit->primitive;
     if (hand_triangles_to_traversal_) {
-      // The reference traversal tested the triangles itself, inlined: the details of the hit
-      // are computed at the end, if it is still the closest (geometry.cpp).
-      mesh_record.set_triangle_pending(returned, hit->t_hit);
+      // The reference traversal tested the triangles itself, inlined, and wrote the details of
+      // the closest hit it returns (the same bits as stage 03's reference function gives).
+      mesh_record.set_triangle(returned, inlined_hit);
     } else if (mesh_record.kind != Kind::Triangle || mesh_record.index != returned || mesh_record.t_hit != hit->t_hit) {
       // The traversal returned another triangle than the closest one reported to the test
       // (a tie, or a traversal that is wrong): shade the one it returned.

@@ -4,8 +4,9 @@
 // own Moller-Trumbore (moller_trumbore.h, the same source as its stage 03) inlined; and when it
 // also hands over their columns in leaf order (PrimitiveIntersector::columns), four triangles
 // at a time with SSE, the same operations in the same order in each lane. Every way gives the
-// same hit, the same bits of t and the same count of triangles tested. Not part of any
-// student contract.
+// same hit, the same bits of t (and of the barycentrics, where the inlined tests hand them to
+// PrimitiveIntersector::closest_triangle_hit) and the same count of triangles tested. Not part
+// of any student contract.
 #pragma once
 
 #include "../03_triangle/moller_trumbore.h"
@@ -48,9 +49,10 @@ struct OneAfterAnother {
 
 #if RAYLAB_REFERENCE_LEAF_SSE
 // moller_trumbore() in four lanes: the triangles at positions [first, first + 4) of the
-// columns. Returns the mask of the lanes hit in (ray.t_min, ray.t_max), their t in t_hit.
+// columns. Returns the mask of the lanes hit in (ray.t_min, ray.t_max), their t and
+// barycentrics in t_hit, b1 and b2.
 inline unsigned moller_trumbore4(const Ray& ray, const TriangleColumns& columns, std::uint32_t first,
-                                 float t_hit[4]) {
+                                 float t_hit[4], float b1_hit[4], float b2_hit[4]) {
   const auto column = [&](int c) { return _mm_loadu_ps(columns.values + c * columns.stride + first); };
   const __m128 p0_x = column(0), p0_y = column(1), p0_z = column(2);
   const __m128 e1_x = column(3), e1_y = column(4), e1_z = column(5);
@@ -84,6 +86,8 @@ inline unsigned moller_trumbore4(const Ray& ray, const TriangleColumns& columns,
   const __m128 t = _mm_mul_ps(dot(e2_x, e2_y, e2_z, q_x, q_y, q_z), inverse_determinant);
   hit = _mm_and_ps(hit, _mm_and_ps(_mm_cmpgt_ps(t, _mm_set1_ps(ray.t_min)), _mm_cmplt_ps(t, _mm_set1_ps(ray.t_max))));
   _mm_storeu_ps(t_hit, t);
+  _mm_storeu_ps(b1_hit, b1);
+  _mm_storeu_ps(b2_hit, b2);
   return static_cast<unsigned>(_mm_movemask_ps(hit));
 }
 #endif
@@ -95,14 +99,15 @@ inline unsigned moller_trumbore4(const Ray& ray, const TriangleColumns& columns,
 struct FourAtATime {
   const std::uint32_t* primitive_order;
   TriangleColumns columns;
+  TriangleHit* closest_triangle_hit;  // PrimitiveIntersector::closest_triangle_hit: nullptr or where each closer hit goes
 
   void operator()(Ray& search, std::uint32_t begin, std::uint32_t end, bool any_hit,
                   std::optional<BvhHit>& closest, std::uint64_t& tested) const {
 #if RAYLAB_REFERENCE_LEAF_SSE
     for (std::uint32_t first = begin; first < end; first += 4) {
       const std::uint32_t lanes = end - first < 4 ? end - first : 4;
-      float t_hit[4];
-      unsigned mask = moller_trumbore4(search, columns, first, t_hit) & ((1u << lanes) - 1u);
+      float t_hit[4], b1_hit[4], b2_hit[4];
+      unsigned mask = moller_trumbore4(search, columns, first, t_hit, b1_hit, b2_hit) & ((1u << lanes) - 1u);
       if (mask == 0) {
         tested += lanes;
         continue;
@@ -111,15 +116,15 @@ struct FourAtATime {
       while (!(mask & (1u << best))) ++best;  // the first lane hit
       if (any_hit) {
         tested += static_cast<std::uint64_t>(best) + 1;
-        search.t_max = t_hit[best];
-        closest = BvhHit{t_hit[best], primitive_order[first + best]};
-        return;
+      } else {
+        tested += lanes;
+        for (int lane = best + 1; lane < 4; ++lane)
+          if ((mask & (1u << lane)) && t_hit[lane] < t_hit[best]) best = lane;
       }
-      tested += lanes;
-      for (int lane = best + 1; lane < 4; ++lane)
-        if ((mask & (1u << lane)) && t_hit[lane] < t_hit[best]) best = lane;
       search.t_max = t_hit[best];
       closest = BvhHit{t_hit[best], primitive_order[first + best]};
+      if (closest_triangle_hit) *closest_triangle_hit = TriangleHit{t_hit[best], b1_hit[best], b2_hit[best]};
+      if (any_hit) return;
     }
 #else
     (void)search, (void)begin, (void)end, (void)any_hit, (void)closest, (void)tested;
@@ -133,14 +138,17 @@ std::optional<BvhHit> with_leaf_test(const PrimitiveIntersector& intersector, co
                                      const Traverse& traverse) {
   if (const TriangleEdges* triangles = intersector.triangles) {
 #if RAYLAB_REFERENCE_LEAF_SSE
-    if (intersector.columns.values) return traverse(FourAtATime{primitive_order, intersector.columns});
+    if (intersector.columns.values)
+      return traverse(FourAtATime{primitive_order, intersector.columns, intersector.closest_triangle_hit});
 #endif
-    const auto test = [triangles](const Ray& search, std::uint32_t primitive) {
+    // (Every hit a leaf test returns lowers search.t_max: each is closer than the one before.)
+    const auto test = [triangles, closest_triangle_hit = intersector.closest_triangle_hit](const Ray& search,
+                                                                                          std::uint32_t primitive) {
       const TriangleEdges& triangle = triangles[primitive];
       TriangleHit hit;
-      return moller_trumbore(search, triangle.p0, triangle.edge_01, triangle.edge_02, hit)
-                 ? std::optional<float>(hit.t_hit)
-                 : std::nullopt;
+      if (!moller_trumbore(search, triangle.p0, triangle.edge_01, triangle.edge_02, hit)) return std::optional<float>();
+      if (closest_triangle_hit) *closest_triangle_hit = hit;
+      return std::optional<float>(hit.t_hit);
     };
     return traverse(OneAfterAnother<decltype(test)>{primitive_order, test});
   }

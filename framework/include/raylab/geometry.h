@@ -104,9 +104,15 @@ class SceneGeometry {
 
  private:
   struct Triangle {
+    Triangle(const glm::vec3& p0_, const glm::vec3& p1_, const glm::vec3& p2_, std::uint32_t mesh_,
+             std::uint32_t first_index_);
     glm::vec3 p0, p1, p2;
     std::uint32_t mesh;
     std::uint32_t first_index;  // into the mesh's indices: its 3 vertices start here
+    // Its unit normal, cross(p1 - p0, p2 - p0) normalised, once for all of its hits; has_area
+    // false (and normal zero) when the triangle is degenerate and has none.
+    glm::vec3 normal;
+    bool has_area;
   };
   enum class Kind : std::uint8_t { None, Sphere, Triangle };
   // One mesh's triangles (with reference_trees_, every mesh's): triangles_[first_triangle ..
@@ -127,28 +133,17 @@ class SceneGeometry {
     std::uint32_t index = 0;  // into spheres_ or triangles_
     float t_hit = kInfinity;  // kInfinity while kind == Kind::None
     TriangleHit triangle_hit;
-    // A triangle found by the reference traversal's inlined test: triangle_hit is not filled
-    // yet; intersect() computes it once, for the closest hit only.
-    bool triangle_hit_pending = false;
 
     void set_sphere(std::uint32_t sphere, float t) {
       kind = Kind::Sphere;
       index = sphere;
       t_hit = t;
-      triangle_hit_pending = false;
     }
     void set_triangle(std::uint32_t triangle, const TriangleHit& hit) {
       kind = Kind::Triangle;
       index = triangle;
       t_hit = hit.t_hit;
       triangle_hit = hit;
-      triangle_hit_pending = false;
-    }
-    void set_triangle_pending(std::uint32_t triangle, float t) {
-      kind = Kind::Triangle;
-      index = triangle;
-      t_hit = t;
-      triangle_hit_pending = true;
     }
   };
   struct Query;

@@ -18,6 +18,8 @@
 
 namespace raylab {
 
+struct TriangleHit;  // raylab/stages/03_triangle.h
+
 // One node, 32 bytes, so that two share a 64-byte cache line. All nodes of a tree live in
 // one array (Bvh::nodes); nodes[0] is the root.
 //   inner node: primitive_count == 0; its two children are nodes[first_index] and
@@ -116,6 +118,9 @@ struct PrimitiveIntersector {
   // With `triangles`, optionally: the same triangles in the traversed tree's leaf order, for
   // the reference's test of a leaf's triangles four at a time (same answers, same counts).
   TriangleColumns columns = {};
+  // With `triangles`, optionally: where that inlined test writes the t and barycentrics of
+  // each closer hit it finds, so that the renderer need not test the returned triangle again.
+  TriangleHit* closest_triangle_hit = nullptr;
 };
 
 // The columns (TriangleColumns::values) of triangles[primitive_order[i]] for every position i,
