@@ -124,8 +124,8 @@ std::string text_of(const std::optional<BvhHit>& hit) {
 TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
   // The renderer hands the reference traversal its triangles (TriangleEdges) so that it tests
   // them inlined, and their columns in leaf order so that it tests four at a time; every
-  // answer, t to the bit, and every count must be those of calling stage 03, for the binary
-  // traversal and for the 4-wide one (stage 05c).
+  // answer, t and the barycentrics handed back to the bit, and every count must be those of
+  // calling stage 03, for the binary traversal and for the 4-wide one (stage 05c).
   const Mesh& mesh = large_mesh();
   const testkit::IndexedTriangles triangles{&mesh.triangles.positions, &mesh.triangles.indices, &intersect_ray_triangle};
   const PrimitiveIntersector by_calls = testkit::intersector_over(triangles);
@@ -170,10 +170,20 @@ TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
           hits += expected ? 1 : 0;
           for (const PrimitiveIntersector* intersector : {&inlined, &four_at_a_time}) {
             BvhTraversalStats stats;
-            const std::optional<BvhHit> got = trace(*intersector, stats);
+            // The inlined tests also hand over the hit's details: those of stage 03's function
+            // on the triangle returned, to the bit.
+            TriangleHit details{std::nanf(""), std::nanf(""), std::nanf("")};
+            PrimitiveIntersector with_details = *intersector;
+            with_details.closest_triangle_hit = &details;
+            const std::optional<BvhHit> got = trace(with_details, stats);
+            std::optional<TriangleHit> stage_details;
+            if (got)
+              stage_details = intersect_ray_triangle(ray, mesh.corner(got->primitive, 0), mesh.corner(got->primitive, 1),
+                                                     mesh.corner(got->primitive, 2));
             const bool same = got.has_value() == expected.has_value() &&
                               (!got || (std::memcmp(&got->t_hit, &expected->t_hit, sizeof(float)) == 0 &&
-                                        got->primitive == expected->primitive));
+                                        got->primitive == expected->primitive && stage_details &&
+                                        std::memcmp(&details, &*stage_details, sizeof(TriangleHit)) == 0));
             const bool same_work = calls_stats.nodes_visited == stats.nodes_visited &&
                                    calls_stats.primitives_tested == stats.primitives_tested;
             if (!same || !same_work) {

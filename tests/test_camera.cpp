@@ -13,8 +13,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <thread>
+#include <vector>
 
 namespace raylab {
 namespace {
@@ -144,6 +147,46 @@ TEST(CameraRays, UpNeedNotBeUnitOrPerpendicular) {
 }
 
 // --- validate_camera ----------------------------------------------------------------------
+
+TEST(CameraRays, EachCameraGetsItsOwnRaysWhateverCameraCameBefore) {
+  // The reference keeps the frame of the last camera it saw, per thread: a camera that differs
+  // in any one field (also by the sign of a zero) must get the rays it gets on a fresh thread.
+  Camera base = make_camera(7, 5, 60.0f);
+  base.position = glm::vec3(0.0f, 1.0f, 2.0f);
+  base.look_at = glm::vec3(0.5f, 1.0f, -3.0f);
+  std::vector<Camera> cameras(8, base);
+  cameras[1].position.x = -0.0f;
+  cameras[2].look_at.y = 1.5f;
+  cameras[3].up = glm::vec3(0.1f, 1.0f, 0.0f);
+  cameras[4].fov_y_degrees = 61.0f;
+  cameras[5].width = 9;
+  cameras[6].height = 4;
+  cameras[7].position = glm::vec3(0.0f, 1.0f, 2.5f);
+  const auto rays_of = [](const Camera& camera) {
+    std::vector<Ray> rays;
+    for (const glm::vec2 position_in_pixel : {glm::vec2(0.5f), glm::vec2(0.0f), glm::vec2(0.99f, 0.25f)})
+      for (int y = 0; y < camera.height; y += 2)
+        for (int x = 0; x < camera.width; x += 3) rays.push_back(generate_camera_ray(camera, x, y, position_in_pixel));
+    return rays;
+  };
+  const auto same_bits = [](const std::vector<Ray>& a, const std::vector<Ray>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (std::memcmp(&a[i].origin, &b[i].origin, sizeof(glm::vec3)) != 0 ||
+          std::memcmp(&a[i].direction, &b[i].direction, sizeof(glm::vec3)) != 0)
+        return false;
+    return true;
+  };
+  std::vector<std::vector<Ray>> fresh(cameras.size());
+  for (std::size_t c = 0; c < cameras.size(); ++c) std::thread([&] { fresh[c] = rays_of(cameras[c]); }).join();
+  // Every camera right after every other (each pair with the base differs in one field only).
+  for (std::size_t c = 0; c < cameras.size(); ++c)
+    for (std::size_t before = 0; before < cameras.size(); ++before) {
+      (void)rays_of(cameras[before]);
+      EXPECT_TRUE(same_bits(rays_of(cameras[c]), fresh[c])) << "camera " << c << " after camera " << before;
+    }
+  EXPECT_FALSE(same_bits(fresh[0], fresh[4])) << "the cameras must differ for this test to mean anything";
+}
 
 TEST(ValidateCamera, AcceptsAUsualCamera) {
   // The counterpart of the rejections below: a valid camera must not throw.
