@@ -6,8 +6,10 @@
 // about N triangles (default 1,000,000) made by make_displaced_sphere: no big files.
 // Accelerators: brute force (bunny only: every ray tests every triangle), the reference
 // median-split BVH, the reference binned-SAH BVH, the SAH tree collapsed into a 4-wide one
-// (stage 05c; "sah-wide": its leaves' triangles tested four at a time, as the renderer does;
-// "sah-wide-serial": one after another), and Embree (3 or 4) when CMake found it.
+// (stage 05c; "sah-wide": its leaves' triangles tested four at a time; "sah-wide-serial": one
+// after another), the same tree 8 wide with AVX2 box tests ("sah-wide8", solutions/05c_wide_bvh/
+// wide8.h: what raylab-reference traces; not on a CPU without AVX2), and Embree (3 or 4) when
+// CMake found it.
 // Rays: "primary" (a 512 x 384 camera framing the mesh) and "random" (origins spread over
 // 1.5 times the mesh's box, directions uniform on the sphere), each traced as closest hit
 // and as any hit (t_max = infinity). Each timed iteration traces the whole set on one thread
@@ -29,6 +31,8 @@
 #include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
 #include "raylab/stages/05c_wide_bvh.h"
+
+#include "../solutions/05c_wide_bvh/wide8.h"  // "sah-wide8", and the renderer's tree
 #include "raylab/testkit/random_values.h"
 #include "raylab/testkit/triangles.h"
 
@@ -151,6 +155,9 @@ struct ReferenceBvh {
   std::vector<TriangleEdges> edges;
   // "sah-wide": bvh collapsed into a 4-wide tree (stage 05c), traversed by intersect_bvh4.
   std::optional<Bvh4> wide;
+  // "sah-wide8": bvh as the reference's 8-wide tree (solutions/05c_wide_bvh/wide8.h), its
+  // triangles as columns tested four at a time; what raylab-reference traces.
+  std::shared_ptr<const void> wide8;
   // "sah-wide": the triangles also as columns (PrimitiveIntersector::columns), tested four at
   // a time, as the renderer hands them over; "sah-wide-serial": without, one after another.
   std::vector<float> columns;
@@ -158,7 +165,7 @@ struct ReferenceBvh {
 };
 
 ReferenceBvh build_reference(const TestMesh& mesh, bool sah) {
-  ReferenceBvh result{sah ? "sah" : "median", {}, {}, {}, std::nullopt, {}};
+  ReferenceBvh result{sah ? "sah" : "median", {}, {}, {}, std::nullopt, nullptr, {}};
   const std::vector<Bounds3> boxes = triangle_boxes(mesh);
   result.bvh = sah ? build_bvh_sah(boxes, kLeafSize) : build_bvh(boxes, kLeafSize);
   result.corners.reserve(mesh.corners.size());
@@ -189,6 +196,18 @@ ReferenceBvh collapsed(const ReferenceBvh& tree, bool four_at_a_time) {
   return copy;
 }
 
+// The same tree as the reference's 8-wide one (the "-wide8" rows); nullopt on a CPU without AVX2.
+std::optional<ReferenceBvh> collapsed8(const ReferenceBvh& tree) {
+  const ReferenceTreeFunctions* functions = reference::reference_tree_functions();
+  if (!functions) return std::nullopt;
+  ReferenceBvh copy = tree;
+  copy.name += "-wide8";
+  copy.wide8 = functions->build(tree.bvh);
+  if (!copy.wide8) return std::nullopt;
+  copy.columns = triangle_columns(copy.edges.data(), tree.bvh.primitive_order);
+  return copy;
+}
+
 // Traces rays[begin, end) (every `stride`-th); writes t (infinity for a miss) when t_out.
 void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std::size_t begin,
                      std::size_t end, bool any_hit, float* t_out, BvhTraversalStats& stats) {
@@ -198,8 +217,10 @@ void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std
   if (!tree.columns.empty()) intersector.columns = TriangleColumns::of(tree.columns);
   for (std::size_t i = begin; i < end; ++i) {
     // Not const: DoNotOptimize(const T&) is deprecated since Google Benchmark 1.8.
-    std::optional<BvhHit> hit = tree.wide ? intersect_bvh4(*tree.wide, rays[i], intersector, any_hit, stats)
-                                          : intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
+    std::optional<BvhHit> hit =
+        tree.wide8  ? reference::reference_tree_functions()->intersect(tree.wide8.get(), rays[i], intersector, any_hit, stats)
+        : tree.wide ? intersect_bvh4(*tree.wide, rays[i], intersector, any_hit, stats)
+                    : intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
     if (t_out) t_out[i] = hit ? hit->t_hit : kInfinity;
     benchmark::DoNotOptimize(hit);
   }
@@ -481,6 +502,7 @@ std::vector<std::unique_ptr<Fixture>> make_fixtures(std::uint32_t large_triangle
     }
     f->trees.push_back(collapsed(f->trees[2], true));  // the SAH tree
     f->trees.push_back(collapsed(f->trees[2], false));
+    if (std::optional<ReferenceBvh> eight_wide = collapsed8(f->trees[2])) f->trees.push_back(std::move(*eight_wide));
   }
   return fixtures;
 }
@@ -491,6 +513,12 @@ void print_trees(const Fixture& f) {
     if (tree.wide) {
       std::printf("  %-12s %-15s %9zu triangles  %9zu nodes of 4 children at most\n", f.mesh.name.c_str(),
                   tree.name.c_str(), f.mesh.triangle_count(), tree.wide->nodes.size());
+      continue;
+    }
+    if (tree.wide8) {
+      std::printf("  %-12s %-15s %9zu triangles  %9zu nodes of 8 children at most\n", f.mesh.name.c_str(),
+                  tree.name.c_str(), f.mesh.triangle_count(),
+                  static_cast<const reference::Bvh8*>(tree.wide8.get())->nodes.size());
       continue;
     }
     std::printf("  %-12s %-15s %9zu triangles  %9zu nodes  depth %2d  SAH cost %8.2f\n",
@@ -591,7 +619,7 @@ void check_and_count(const Fixture& f, const Embree* embree, std::vector<TraceRo
 
 void check_invariants(const Fixture& f) {
   for (const ReferenceBvh& tree : f.trees) {
-    if (tree.tested_by_calls() || tree.wide) continue;  // the tree checked just before
+    if (tree.tested_by_calls() || tree.wide || tree.wide8) continue;  // the tree checked just before
     // The tree's primitives are now in leaf order: their boxes in that order.
     std::vector<Bounds3> boxes(tree.corners.size() / 3);
     for (std::size_t i = 0; i < boxes.size(); ++i)
@@ -728,7 +756,7 @@ void print_trace_summary(const std::vector<TraceRow>& rows, int threads, const S
 // renders, and the speed-ups measured in the same run.
 void print_render_summary() {
   std::printf("\nRenderer (raylab-reference render, scene size and integrator, 1 sample per pixel, no image written;\n"
-              "fastest of 3; \"reference\": raylab-reference's geometry, one SAH tree over every triangle, 4 wide,\n"
+              "fastest of 3; \"reference\": raylab-reference's geometry, one SAH tree over every triangle, 8 wide,\n"
               "triangles tested inlined; \"calls\": a student's program's, a median tree per mesh and a call per\n"
               "triangle; speed-up: against 1 thread, reference; the path tracer counts its camera rays only, so\n"
               "the Cornell box's Mrays/s are millions of paths per second):\n");
@@ -743,6 +771,7 @@ void print_render_summary() {
       settings.max_depth = scene.max_depth;
       settings.threads = threads;
       settings.tracing.reference_stages = inlined;  // this program links the reference's stages
+      if (inlined) settings.tracing.reference_tree = reference::reference_tree_functions();
       RenderStats best;
       for (int run = 0; run < 3; ++run) {
         RenderStats stats;

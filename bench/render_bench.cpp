@@ -13,6 +13,8 @@
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
 
+#include "../solutions/05c_wide_bvh/wide8.h"  // the reference's fastest tree, as raylab-reference traces it
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -38,6 +40,7 @@ struct Timed {
 // As raylab-reference renders: this program links solutions/ (TracingFunctions::reference_stages).
 Timed render_best_of(const Scene& scene, RenderSettings settings, int repetitions) {
   settings.tracing.reference_stages = true;
+  settings.tracing.reference_tree = reference::reference_tree_functions();
   Timed best;
   best.seconds = 1e30;
   for (int i = 0; i < repetitions; ++i) {

@@ -12,6 +12,8 @@
 
 #include "test_helpers.h"
 
+#include "../solutions/05c_wide_bvh/wide8.h"  // the reference's 8-wide tree
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -69,13 +71,16 @@ TEST(Render, OneAndTwoThreadsGiveIdenticalPixels) {
 // find the same closest t for every ray, bit for bit, and the same occlusion: camera rays at
 // 64 x 48, and rays from points spread over the scene's box in every direction. The triangle
 // found may differ only on a tie (two triangles at the same t: a shared edge, a box's face on
-// the floor), and then the same t is what this checks.
-void expect_same_hits_with_reference_stages(const std::string& scene_file) {
+// the floor), and then the same t is what this checks. reference_tree: the reference's 8-wide
+// tree (as raylab-reference traces), or nullptr for stage 05c's 4-wide one.
+void expect_same_hits_with_reference_stages(const std::string& scene_file, const ReferenceTreeFunctions* reference_tree) {
+  SCOPED_TRACE(reference_tree ? "the 8-wide reference tree" : "the 4-wide tree");
   Scene scene = load_scene(source_path(scene_file));
   scene.camera.width = 64;
   scene.camera.height = 48;
   TracingFunctions reference_stages;
   reference_stages.reference_stages = true;
+  reference_stages.reference_tree = reference_tree;
   const SceneGeometry by_calls(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore);
   const SceneGeometry inlined(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, reference_stages);
   ASSERT_GT(inlined.bvh_count(), 0u) << scene_file << ": one tree over every triangle";
@@ -115,11 +120,14 @@ void expect_same_hits_with_reference_stages(const std::string& scene_file) {
 }
 
 TEST(Render, ReferenceStagesFindTheSameHits) {
-  expect_same_hits_with_reference_stages("scenes/bunny.json");    // one mesh
-  expect_same_hits_with_reference_stages("scenes/cornell.json");  // 8 meshes, no spheres
-  // Spheres beside the merged triangles: tested one by one (2), under a tree over the objects (4).
-  expect_same_hits_with_reference_stages("scenes/cornell_specular.json");
-  expect_same_hits_with_reference_stages("scenes/mis_plates.json");
+  for (const ReferenceTreeFunctions* tree : {static_cast<const ReferenceTreeFunctions*>(nullptr),
+                                             reference::reference_tree_functions()}) {
+    expect_same_hits_with_reference_stages("scenes/bunny.json", tree);    // one mesh
+    expect_same_hits_with_reference_stages("scenes/cornell.json", tree);  // 8 meshes, no spheres
+    // Spheres beside the merged triangles: tested one by one (2), under a tree over the objects (4).
+    expect_same_hits_with_reference_stages("scenes/cornell_specular.json", tree);
+    expect_same_hits_with_reference_stages("scenes/mis_plates.json", tree);
+  }
 }
 
 TEST(Render, ReferenceStagesGiveTheSameImage) {
@@ -128,7 +136,10 @@ TEST(Render, ReferenceStagesGiveTheSameImage) {
   // no ties on its mesh); for the Cornell box's paths up to a path that met a tie somewhere
   // (a different triangle at the same t gives a point an ulp away, and the path goes on from
   // there): at most 1% of the pixels, each within 1% of its value.
-  for (const std::string scene_file : {"scenes/bunny.json", "scenes/cornell.json"}) {
+  for (const std::string scene_file : {"scenes/bunny.json", "scenes/cornell.json"})
+  for (const ReferenceTreeFunctions* tree : {static_cast<const ReferenceTreeFunctions*>(nullptr),
+                                             reference::reference_tree_functions()}) {
+    SCOPED_TRACE(tree ? "the 8-wide reference tree" : "the 4-wide tree");
     Scene scene = load_scene(source_path(scene_file));
     scene.camera.width = 64;
     scene.camera.height = 48;
@@ -138,6 +149,7 @@ TEST(Render, ReferenceStagesGiveTheSameImage) {
     by_calls.samples_per_pixel = scene_file == "scenes/bunny.json" ? 1 : 4;
     RenderSettings inlined = by_calls;
     inlined.tracing.reference_stages = true;
+    inlined.tracing.reference_tree = tree;
     const Image expected = render(scene, by_calls);
     const Image got = render(scene, inlined);
     const int allowed = scene_file == "scenes/bunny.json" ? 0 : 64 * 48 / 100;

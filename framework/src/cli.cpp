@@ -49,6 +49,7 @@ struct RenderOptions {
   bool quiet = false;
   bool watertight = false;
   bool reference_stages = false;  // the program links solutions/ (LinkedStages::Reference)
+  const ReferenceTreeFunctions* reference_tree = nullptr;  // with reference_stages: run_cli's
 };
 
 int run_render(const RenderOptions& options) {
@@ -87,6 +88,7 @@ int run_render(const RenderOptions& options) {
   settings.threads = options.threads;
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
   settings.tracing.reference_stages = options.reference_stages;
+  if (options.reference_stages) settings.tracing.reference_tree = options.reference_tree;
   settings.show_progress = !options.quiet && RAYLAB_ISATTY(stderr);
   RenderStats stats;
   const RenderOutput output = render_with_variance(scene, settings, &stats);
@@ -114,11 +116,12 @@ int run_render(const RenderOptions& options) {
 
 }  // namespace
 
-int run_cli(int argc, char** argv, LinkedStages stages) {
+int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunctions* reference_tree) {
   CLI::App app{"raylab: a step-by-step ray tracer (course kit)"};
   app.require_subcommand(1);
   RenderOptions options;
   options.reference_stages = stages == LinkedStages::Reference;
+  options.reference_tree = reference_tree;
   CLI::App* render_command = app.add_subcommand("render", "Render a scene file to an image");
   render_command->add_option("scene", options.scene_path, "Scene file (JSON), e.g. scenes/whitted.json")->required();
   render_command->add_option("-o,--output", options.output_path, "Output image: .png, .exr or .ppm")->required();

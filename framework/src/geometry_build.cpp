@@ -46,11 +46,13 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
                                                                       : intersect_ray_triangle),
       intersect_sphere_(tracing.sphere ? tracing.sphere : intersect_ray_sphere) {
   // The reference's own stages (raylab-reference, bench/) trace every triangle of the scene
-  // through one SAH tree (stage 05b), 4 wide (stage 05c): no tree per mesh under a tree over
+  // through one SAH tree (stage 05b), 8 wide (TracingFunctions::reference_tree) or else 4 wide
+  // (stage 05c): no tree per mesh under a tree over
   // the objects, and no calls for the small meshes (a wall of two triangles) that a per-mesh
   // tree would not pay for. The same closest hits; a student's program keeps a median tree
   // per mesh, as the header says.
   reference_trees_ = tracing.reference_stages && !tracing.replaces_primitive_tests();
+  if (reference_trees_) reference_tree_functions_ = tracing.reference_tree;
   for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
     const TriangleMesh& mesh = scene.meshes[m];
     if (meshes_.empty() || !reference_trees_) {
@@ -77,9 +79,10 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
     for (const Triangle& triangle : triangles_)
       triangle_edges_.push_back(TriangleEdges::of(triangle.p0, triangle.p1, triangle.p2));
     // The reference's trees also get the triangles as columns, for its four-at-a-time leaf test.
+    // (Both trees keep the binary tree's primitive_order: the identity, in leaf order.)
     for (MeshPart& mesh : meshes_)
-      if (!mesh.wide.nodes.empty())
-        mesh.columns = triangle_columns(triangle_edges_.data() + mesh.first_triangle, mesh.wide.primitive_order);
+      if (!mesh.wide.nodes.empty() || mesh.reference_tree)
+        mesh.columns = triangle_columns(triangle_edges_.data() + mesh.first_triangle, mesh.bvh.primitive_order);
   }
 }
 
@@ -104,7 +107,10 @@ void SceneGeometry::build_bvhs() {
         mesh.bvh.primitive_order[i] = i;
       }
       std::copy(reordered.begin(), reordered.end(), first);
-      if (reference_trees_) mesh.wide = collapse_bvh4(mesh.bvh);
+      if (reference_trees_) {
+        if (reference_tree_functions_) mesh.reference_tree = reference_tree_functions_->build(mesh.bvh);
+        if (!mesh.reference_tree) mesh.wide = collapse_bvh4(mesh.bvh);
+      }
     }
     const std::size_t object_count = spheres_.size() + meshes_.size();
     if (object_count > brute_force_limit_) {
@@ -136,6 +142,7 @@ void SceneGeometry::build_bvhs() {
     for (MeshPart& mesh : meshes_) {
       mesh.bvh = Bvh();
       mesh.wide = Bvh4();
+      mesh.reference_tree.reset();
     }
     objects_bvh_ = Bvh();
     fallback_stage_ = error.stage_id();

@@ -51,8 +51,10 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
       if (!mesh.columns.empty()) intersector.columns = TriangleColumns::of(mesh.columns);
       if (!query.any_hit) intersector.closest_triangle_hit = &inlined_hit;
     }
-    // The reference's own programs traverse the 4-wide tree (same leaves, same hits).
+    // The reference's own programs traverse its 8-wide tree, or the 4-wide one (same hits).
     const auto traverse = [&](bool any_hit) {
+      if (mesh.reference_tree)
+        return reference_tree_functions_->intersect(mesh.reference_tree.get(), ray, intersector, any_hit, stats);
       return mesh.wide.nodes.empty() ? intersect_bvh(mesh.bvh, ray, intersector, any_hit, stats)
                                      : intersect_bvh4(mesh.wide, ray, intersector, any_hit, stats);
     };

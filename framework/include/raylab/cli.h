@@ -8,7 +8,11 @@ namespace raylab {
 // paths (TracingFunctions::reference_stages in geometry.h).
 enum class LinkedStages { Student, Reference };
 
+struct ReferenceTreeFunctions;  // raylab/geometry.h
+
 // Runs `raylab render ...` etc. Returns the exit status (ExitStatus in error.h); never throws.
-int run_cli(int argc, char** argv, LinkedStages stages = LinkedStages::Student);
+// reference_tree: with LinkedStages::Reference, the reference's fastest tree (or nullptr).
+int run_cli(int argc, char** argv, LinkedStages stages = LinkedStages::Student,
+            const ReferenceTreeFunctions* reference_tree = nullptr);
 
 }  // namespace raylab

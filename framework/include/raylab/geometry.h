@@ -27,6 +27,7 @@
 #include "raylab/stages/05c_wide_bvh.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,6 +64,19 @@ enum class TriangleTest {
 // Monte Carlo stages (08, 09) give the grader's own (autograder/suites/grader_geometry.h), so
 // that a mistake in stages 01-05 costs points only in its own stage. A geometry given its own
 // sphere or triangle test tests every primitive: the trees of stages 04-05 are stage code too.
+// A tree that the reference's own programs trace instead of stage 05c's 4-wide one, with the
+// same hits to the bit: solutions/05c_wide_bvh/wide8.h (8 wide, its boxes tested with AVX2).
+// Not a stage, and not for students: the framework only holds the functions, which
+// raylab-reference and bench/ hand it (TracingFunctions::reference_tree).
+struct ReferenceTreeFunctions {
+  // The tree of a binary tree (whose primitive_order it keeps); nullptr when it cannot run
+  // here (a CPU without AVX2): then the 4-wide tree is traced.
+  std::shared_ptr<const void> (*build)(const Bvh& binary) = nullptr;
+  // As intersect_bvh4, on a tree that `build` returned.
+  std::optional<BvhHit> (*intersect)(const void* tree, const Ray& ray, const PrimitiveIntersector& intersector,
+                                     bool any_hit, BvhTraversalStats& stats) = nullptr;
+};
+
 struct TracingFunctions {
   Ray (*camera_ray)(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) = nullptr;
   std::optional<float> (*sphere)(const Ray& ray, const glm::vec3& center, float radius) = nullptr;
@@ -76,6 +90,8 @@ struct TracingFunctions {
   // triangle found may differ on a tie). Never in a student's program or a grader, whose
   // stages may be others than the reference's.
   bool reference_stages = false;
+  // With reference_stages, optionally: that tree is traced instead of the 4-wide one.
+  const ReferenceTreeFunctions* reference_tree = nullptr;
   bool replaces_primitive_tests() const { return sphere != nullptr || triangle != nullptr; }
 };
 
@@ -124,6 +140,9 @@ class SceneGeometry {
     Bounds3 bounds;
     Bvh bvh;  // empty: test every triangle
     Bvh4 wide;  // reference_trees_ only: bvh collapsed to 4 wide (stage 05c), traversed instead
+    // reference_trees_ with TracingFunctions::reference_tree (and a CPU it runs on): built from
+    // bvh, traversed instead of wide.
+    std::shared_ptr<const void> reference_tree;
     std::vector<float> columns;  // with triangle_edges_: its triangles as TriangleColumns, for wide's leaves
   };
   // The closest hit a query's primitive tests have reported so far (by the framework's own
@@ -172,6 +191,7 @@ class SceneGeometry {
   // triangles, under a tree of the reference's SAH build (stage 05b) collapsed to 4 wide
   // (stage 05c).
   bool reference_trees_ = false;
+  const ReferenceTreeFunctions* reference_tree_functions_ = nullptr;  // with reference_trees_
   // reference_trees_, no spheres, and a tree: a query goes straight into it.
   bool only_one_tree_ = false;
   std::vector<MeshPart> meshes_;
