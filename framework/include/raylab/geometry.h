@@ -5,7 +5,7 @@
 // BVH over its triangles, and a scene of more than a few objects (spheres and meshes) a
 // top-level BVH over the objects' boxes; smaller sets are tested one by one. (The reference's
 // own programs, TracingFunctions::reference_stages, put every triangle under one SAH tree
-// collapsed to 4 wide, stages 05b and 05c, and test the triangles inlined.) If build_bvh,
+// collapsed to 8 wide, or 4 wide as in stage 05c, and test the triangles inlined.) If build_bvh,
 // intersect_bvh or intersect_ray_box is still a stub (throws NotImplemented), the geometry
 // tests every primitive and says so once per process on stderr, at the first query:
 // "raylab: stage 05_bvh not implemented yet: testing every primitive (slow)": a student who has not reached stage 5 can still render.
@@ -84,13 +84,14 @@ struct TracingFunctions {
                                          const glm::vec3& p2) = nullptr;
   // Set only by programs whose stages are all the reference's (raylab-reference, bench/):
   // then every triangle of the scene goes under one tree, built by the SAH (stage 05b) and
-  // collapsed to 4 wide (stage 05c), and with stage 03's Moller-Trumbore test the geometry
-  // hands the traversal the triangles (PrimitiveIntersector::triangles), which the reference
-  // traversal tests inlined instead of a call per triangle: the same closest t, faster (the
-  // triangle found may differ on a tie). Never in a student's program or a grader, whose
-  // stages may be others than the reference's.
+  // collapsed to 4 wide (stage 05c; or 8 wide, reference_tree below), and with stage 03's
+  // Moller-Trumbore test the geometry hands the traversal the triangles
+  // (PrimitiveIntersector::triangles), which the reference traversal tests inlined instead of
+  // a call per triangle: the same closest t, faster (the triangle found may differ on a tie).
+  // Never in a student's program or a grader, whose stages may be others than the reference's.
   bool reference_stages = false;
-  // With reference_stages, optionally: that tree is traced instead of the 4-wide one.
+  // With reference_stages, optionally: the reference's 8-wide tree (ReferenceTreeFunctions
+  // above), traced instead of the 4-wide one where the CPU runs it.
   const ReferenceTreeFunctions* reference_tree = nullptr;
   bool replaces_primitive_tests() const { return sphere != nullptr || triangle != nullptr; }
 };
@@ -188,8 +189,8 @@ class SceneGeometry {
   std::vector<TriangleEdges> triangle_edges_;
   bool hand_triangles_to_traversal_ = false;
   // TracingFunctions::reference_stages (and no tests of its own): one part for every mesh's
-  // triangles, under a tree of the reference's SAH build (stage 05b) collapsed to 4 wide
-  // (stage 05c).
+  // triangles, under a tree of the reference's SAH build (stage 05b) collapsed to 8 wide
+  // (reference_tree_functions_) or 4 wide (stage 05c).
   bool reference_trees_ = false;
   const ReferenceTreeFunctions* reference_tree_functions_ = nullptr;  // with reference_trees_
   // reference_trees_, no spheres, and a tree: a query goes straight into it.
