@@ -756,10 +756,11 @@ void print_trace_summary(const std::vector<TraceRow>& rows, int threads, const S
 // renders, and the speed-ups measured in the same run.
 void print_render_summary() {
   std::printf("\nRenderer (raylab-reference render, scene size and integrator, 1 sample per pixel, no image written;\n"
-              "fastest of 3; \"reference\": raylab-reference's geometry, one SAH tree over every triangle, 8 wide,\n"
+              "fastest of 3; \"reference\": raylab-reference's geometry, one SAH tree over every triangle, %s,\n"
               "triangles tested inlined; \"calls\": a student's program's, a median tree per mesh and a call per\n"
               "triangle; speed-up: against 1 thread, reference; the path tracer counts its camera rays only, so\n"
-              "the Cornell box's Mrays/s are millions of paths per second):\n");
+              "the Cornell box's Mrays/s are millions of paths per second):\n",
+              reference::eight_wide_tree_runs_here() ? "8 wide" : "4 wide");
   std::printf("  %-8s %-10s %8s %-9s %9s %10s %9s\n", "scene", "size", "threads", "geometry", "seconds", "Mrays/s",
               "speed-up");
   for (const char* name : {"whitted", "bunny", "cornell"}) {

@@ -150,7 +150,8 @@ TEST(CameraRays, UpNeedNotBeUnitOrPerpendicular) {
 
 TEST(CameraRays, EachCameraGetsItsOwnRaysWhateverCameraCameBefore) {
   // The reference keeps the frame of the last camera it saw, per thread: a camera that differs
-  // in any one field (also by the sign of a zero) must get the rays it gets on a fresh thread.
+  // in any one field must get the rays it gets on a fresh thread. (Camera 1 differs only by the
+  // sign of a zero, which these rays do not show: it checks that such a camera is served too.)
   Camera base = make_camera(7, 5, 60.0f);
   base.position = glm::vec3(0.0f, 1.0f, 2.0f);
   base.look_at = glm::vec3(0.5f, 1.0f, -3.0f);

@@ -7,6 +7,8 @@
 #include "raylab/stages/05_bvh.h"
 #include "raylab/stages/05c_wide_bvh.h"
 
+#include <limits>
+
 namespace raylab {
 
 bool SceneGeometry::record_is_of_object(const HitRecord& record, std::uint32_t object, float t_hit) const {
@@ -45,7 +47,9 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
   if (!mesh.bvh.nodes.empty()) {
     BvhTraversalStats stats;
     PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
-    TriangleHit inlined_hit;  // hand_triangles_to_traversal_: the closest hit's details, from the traversal's own test
+    // hand_triangles_to_traversal_: the closest hit's details, from the traversal's own test
+    // (t NaN until it writes them).
+    TriangleHit inlined_hit{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
     if (hand_triangles_to_traversal_) {
       intersector.triangles = triangle_edges_.data() + mesh.first_triangle;
       if (!mesh.columns.empty()) intersector.columns = TriangleColumns::of(mesh.columns);
@@ -71,7 +75,7 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     query.record = query_record;
     if (!hit || hit->primitive >= mesh.triangle_count) return std::nullopt;
     const std::uint32_t returned = mesh.first_triangle + hit->primitive;
-    if (hand_triangles_to_traversal_) {
+    if (hand_triangles_to_traversal_ && inlined_hit.t_hit == hit->t_hit) {
       // The reference traversal tested the triangles itself, inlined, and wrote the details of
       // the closest hit it returns (the same bits as stage 03's reference function gives).
       mesh_record.set_triangle(returned, inlined_hit);

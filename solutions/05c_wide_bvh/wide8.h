@@ -3,8 +3,11 @@
 // than SSE2). raylab-reference and bench/ trace it instead of the 4-wide tree
 // (TracingFunctions::reference_tree in raylab/geometry.h); a leaf's triangles are tested four
 // at a time as there (solutions/05_bvh/leaf_test.h). The same visit rule as
-// solutions/05c_wide_bvh/wide_bvh.cpp's traverse4, so the same hits to the bit; fewer nodes
-// per ray. Not a stage and not part of any student contract; docs/performance.md measures it.
+// solutions/05c_wide_bvh/wide_bvh.cpp's traverse4, and fewer nodes per ray. The same closest t,
+// except that where a ray meets a vertex the triangles around it give t's an ulp apart and trees
+// of other widths may prune between them (as the 4-wide tree already does against the binary
+// one): the course scenes render to the same bits either way (tests/test_render.cpp). Not a
+// stage and not part of any student contract; docs/performance.md measures it.
 #pragma once
 
 #include "../05_bvh/leaf_test.h"
@@ -21,12 +24,24 @@
 #include <optional>
 #include <vector>
 
-#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
+// GCC or Clang on x86; not MinGW's GCC, which cannot align a 32-byte vector on the stack of a
+// Win64 function (GCC bug 54412) and could crash on the spilled __m256 values.
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__)) && \
+    !(defined(_WIN32) && !defined(__clang__))
 #include <immintrin.h>
 #define RAYLAB_REFERENCE_WIDE8 1
 #endif
 
 namespace raylab::reference {
+
+// Whether the 8-wide tree is traced on this machine (else the 4-wide one is).
+inline bool eight_wide_tree_runs_here() {
+#if RAYLAB_REFERENCE_WIDE8
+  return __builtin_cpu_supports("avx2");  // (GCC's and Clang's check include the OS saving AVX state)
+#else
+  return false;
+#endif
+}
 
 #if RAYLAB_REFERENCE_WIDE8
 constexpr int kBvh8Width = 8;
@@ -162,8 +177,8 @@ __attribute__((target("avx2"))) std::optional<BvhHit> traverse8(const Bvh8& bvh,
         enter = _mm256_max_ps(entry, enter);  // (a NaN entry leaves enter as it was, as _mm_max_ps)
         exit = _mm256_min_ps(leave, exit);
       }
-      alignas(32) float entries[kBvh8Width];
-      _mm256_store_ps(entries, enter);
+      float entries[kBvh8Width];
+      _mm256_storeu_ps(entries, enter);
       const unsigned used = (1u << node.child_count) - 1u;
       const unsigned mask = static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(enter, exit, _CMP_LE_OQ))) & used;
       ++nodes_visited;
@@ -216,7 +231,7 @@ __attribute__((target("avx2"))) std::optional<BvhHit> traverse8(const Bvh8& bvh,
 
 // The functions of TracingFunctions::reference_tree.
 inline std::shared_ptr<const void> build_bvh8_if_supported(const Bvh& binary) {
-  if (binary.nodes.empty() || !__builtin_cpu_supports("avx2")) return nullptr;
+  if (binary.nodes.empty() || !eight_wide_tree_runs_here()) return nullptr;
   return std::make_shared<const Bvh8>(collapse_bvh8(binary));
 }
 

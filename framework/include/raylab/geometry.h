@@ -65,9 +65,9 @@ enum class TriangleTest {
 // that a mistake in stages 01-05 costs points only in its own stage. A geometry given its own
 // sphere or triangle test tests every primitive: the trees of stages 04-05 are stage code too.
 // A tree that the reference's own programs trace instead of stage 05c's 4-wide one, with the
-// same hits to the bit: solutions/05c_wide_bvh/wide8.h (8 wide, its boxes tested with AVX2).
-// Not a stage, and not for students: the framework only holds the functions, which
-// raylab-reference and bench/ hand it (TracingFunctions::reference_tree).
+// same closest hits (8 wide, its boxes tested with AVX2; written in the reference solutions, not
+// in the student release). Not a stage, and not for students: the framework only holds the
+// functions, which raylab-reference and bench/ hand it (TracingFunctions::reference_tree).
 struct ReferenceTreeFunctions {
   // The tree of a binary tree (whose primitive_order it keeps); nullptr when it cannot run
   // here (a CPU without AVX2): then the 4-wide tree is traced.

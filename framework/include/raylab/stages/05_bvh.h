@@ -118,8 +118,9 @@ struct PrimitiveIntersector {
   // With `triangles`, optionally: the same triangles in the traversed tree's leaf order, for
   // the reference's test of a leaf's triangles four at a time (same answers, same counts).
   TriangleColumns columns = {};
-  // With `triangles`, optionally: where that inlined test writes the t and barycentrics of
-  // each closer hit it finds, so that the renderer need not test the returned triangle again.
+  // Not for your traversal either: with `triangles`, optionally, where that inlined test writes
+  // the t and barycentrics of each closer hit it finds, so that the renderer need not test the
+  // returned triangle again.
   TriangleHit* closest_triangle_hit = nullptr;
 };
 
