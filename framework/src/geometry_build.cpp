@@ -47,10 +47,9 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
       intersect_sphere_(tracing.sphere ? tracing.sphere : intersect_ray_sphere) {
   // The reference's own stages (raylab-reference, bench/) trace every triangle of the scene
   // through one SAH tree (stage 05b), 8 wide (TracingFunctions::reference_tree) or else 4 wide
-  // (stage 05c): no tree per mesh under a tree over
-  // the objects, and no calls for the small meshes (a wall of two triangles) that a per-mesh
-  // tree would not pay for. The same closest hits; a student's program keeps a median tree
-  // per mesh, as the header says.
+  // (stage 05c): no tree per mesh under a tree over the objects, and no calls for the small
+  // meshes (a wall of two triangles) that a per-mesh tree would not pay for. The same closest
+  // hits; a student's program keeps a median tree per mesh, as the header says.
   reference_trees_ = tracing.reference_stages && !tracing.replaces_primitive_tests();
   if (reference_trees_) reference_tree_functions_ = tracing.reference_tree;
   for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
