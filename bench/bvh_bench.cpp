@@ -515,12 +515,14 @@ void print_trees(const Fixture& f) {
                   tree.name.c_str(), f.mesh.triangle_count(), tree.wide->nodes.size());
       continue;
     }
+#if RAYLAB_REFERENCE_WIDE8  // (tree.wide8 is never set without it)
     if (tree.wide8) {
       std::printf("  %-12s %-15s %9zu triangles  %9zu nodes of 8 children at most\n", f.mesh.name.c_str(),
                   tree.name.c_str(), f.mesh.triangle_count(),
                   static_cast<const reference::Bvh8*>(tree.wide8.get())->nodes.size());
       continue;
     }
+#endif
     std::printf("  %-12s %-15s %9zu triangles  %9zu nodes  depth %2d  SAH cost %8.2f\n",
                 f.mesh.name.c_str(), tree.name.c_str(), f.mesh.triangle_count(), tree.bvh.nodes.size(),
                 bvh_depth(tree.bvh), bvh_sah_cost(tree.bvh));
