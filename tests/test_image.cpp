@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -113,6 +114,41 @@ TEST(Image, PpmIsBinaryP6AndPngHasItsSignature) {
   write_image(make_test_image(), (dir / "image.png").string());
   EXPECT_EQ(read_bytes(dir / "image.ppm", 2), "P6") << dir / "image.ppm";
   EXPECT_EQ(read_bytes(dir / "image.png", 4), "\x89PNG") << dir / "image.png";
+}
+
+TEST(Image, PngIsMarkedAsSrgb) {
+  // The 8-bit files hold sRGB values; a PNG says so in its sRGB chunk, which viewers read.
+  const std::filesystem::path path = scratch_dir() / "marked.png";
+  write_image(make_test_image(), path.string());
+  const std::string bytes = read_bytes(path, 4096);
+  const auto data = bytes.find("IDAT");
+  ASSERT_NE(data, std::string::npos) << path << " has no image data";
+  EXPECT_NE(bytes.substr(0, data).find("sRGB"), std::string::npos) << path << ": no sRGB chunk before the image data";
+}
+
+TEST(Image, WritingWhereNoFileCanBeMadeNamesThePath) {
+  for (const std::string extension : {"png", "ppm", "exr"}) {
+    const std::string path = (scratch_dir() / "no_such_folder" / ("image." + extension)).string();
+    try {
+      write_image(make_test_image(), path);
+      FAIL() << "write_image(" << path << ") returned instead of throwing InputError";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path + ": cannot write image: "), std::string::npos)
+          << "the message should name the file; got: " << e.what();
+    }
+  }
+}
+
+TEST(Image, LoadingTheImageIoEarlyChangesNothing) {
+  // start_loading_image_io() may be called any number of times, also while a load runs.
+  start_loading_image_io();
+  start_loading_image_io();
+  const Image image = make_test_image();
+  const std::string path = (scratch_dir() / "after_early_load.exr").string();
+  write_image(image, path);
+  const Image back = read_image(path);
+  ASSERT_EQ(back.width(), image.width()) << path;
+  EXPECT_EQ(std::memcmp(back.pixels().data(), image.pixels().data(), sizeof(glm::vec3) * image.pixels().size()), 0) << path;
 }
 
 TEST(Image, UnknownExtensionThrowsInputError) {

@@ -22,6 +22,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace raylab {
@@ -117,6 +118,27 @@ void expect_same_hits_with_reference_stages(const std::string& scene_file, const
   }
   EXPECT_EQ(differing, 0) << scene_file << " over " << rays.size() << " rays";
   EXPECT_GT(hits, static_cast<int>(rays.size()) / 4) << scene_file << ": rays that hit something";
+}
+
+TEST(Render, TellsTheCallerOnceWhenItsWorkersHaveStarted) {
+  // raylab render starts loading the image I/O from this call (render.h: a thread cannot be
+  // created while another is inside dlopen, so the workers must exist first).
+  Scene scene = load_scene(source_path("scenes/whitted.json"));
+  scene.camera.width = 32;
+  scene.camera.height = 24;
+  for (const int threads : {1, 2}) {
+    RenderSettings settings;
+    settings.threads = threads;
+    int calls = 0;
+    std::thread::id caller;
+    settings.on_workers_started = [&] {
+      ++calls;
+      caller = std::this_thread::get_id();
+    };
+    (void)render(scene, settings);
+    EXPECT_EQ(calls, 1) << threads << " threads";
+    EXPECT_EQ(caller, std::this_thread::get_id()) << threads << " threads: called from another thread";
+  }
 }
 
 TEST(Render, ReferenceStagesFindTheSameHits) {

@@ -4,7 +4,9 @@
 #include "raylab/error.h"
 
 #include <algorithm>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 namespace raylab {
 namespace {
@@ -19,7 +21,36 @@ std::string lower_extension(const std::string& path) {
 
 const image_io::ModuleFunctions& oiio() { return image_io::load_image_io_module(); }
 
+// The background load of start_loading_image_io(), joined at exit (before the dynamic loader's
+// own clean-up, which must not meet a load still running).
+class ImageIoLoader {
+ public:
+  void start() {
+    std::call_once(started_, [this] {
+      thread_ = std::thread([] {
+        try {
+          image_io::load_image_io_module().warm_up();
+        } catch (...) {
+          // Reported by the first image call, which tries again.
+        }
+      });
+    });
+  }
+  ~ImageIoLoader() {
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  std::once_flag started_;
+  std::thread thread_;
+};
+
 }  // namespace
+
+void start_loading_image_io() {
+  static ImageIoLoader loader;
+  loader.start();
+}
 
 void check_image_extension(const std::string& path) {
   const std::string ext = lower_extension(path);

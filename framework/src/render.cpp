@@ -135,6 +135,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
 
   std::vector<std::thread> threads;
   for (int i = 0; i < thread_count; ++i) threads.emplace_back(worker);
+  if (settings.on_workers_started) settings.on_workers_started();
   if (settings.show_progress) {
     while (tiles_done < tiles.size() && !stop) {
       std::this_thread::sleep_for(std::chrono::milliseconds(200));

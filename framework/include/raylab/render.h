@@ -15,6 +15,7 @@
 #include "raylab/shading.h"
 
 #include <cstdint>
+#include <functional>
 
 namespace raylab {
 
@@ -37,6 +38,11 @@ struct RenderSettings {
   TriangleTest triangle_test = TriangleTest::MollerTrumbore;  // --watertight: stage 03b's test
   // Who computes camera rays and primitive tests (geometry.h); by default the stages' own.
   TracingFunctions tracing;
+  // Called once by the calling thread as soon as the render's worker threads exist, to start
+  // other work beside them: `raylab render` starts loading the image I/O (image.h). Work that
+  // loads shared libraries must wait until then, as glibc cannot create a thread while another
+  // is inside dlopen (it waits for the loader's lock).
+  std::function<void()> on_workers_started;
 };
 
 struct RenderStats {

@@ -19,7 +19,7 @@ namespace raylab::image_io {
 
 // Raised whenever a field is added, removed or changes type, so that a stale module built from
 // older sources is refused instead of called with the wrong layout.
-constexpr int kModuleVersion = 1;
+constexpr int kModuleVersion = 2;
 
 struct ModuleFunctions {
   int version = kModuleVersion;
@@ -32,6 +32,9 @@ struct ModuleFunctions {
   std::string (*resize)(const Image& image, int width, int height, Image& resized) = nullptr;
   std::string (*side_by_side_difference)(const Image& actual, const Image& expected,
                                          float full_scale, Image& picture) = nullptr;
+  // OpenImageIO's one-time work done ahead (its plugins found, their functions bound), so that
+  // the first write is as fast as the next; writes no file. For a background load (image.h).
+  void (*warm_up)() = nullptr;
 };
 
 // The one symbol the module exports (unmangled, so that the loader can look it up by name).

@@ -4,8 +4,14 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
+#include <memory>
 #include <vector>
 
 #if defined(_WIN32)
@@ -53,23 +59,104 @@ std::string reason_of(Body&& body) {
   }
 }
 
+// Collects an encoder's output in memory. OpenImageIO's writers hand their output over in
+// small pieces (its PPM writer one byte at a time: 3.7 million calls for a 1280x960 image),
+// and a C file write per piece cost more than the encoding itself (70 ms against 20 ms for
+// that image, measured 2026-12-03). The bytes are the same; write() below puts them in the
+// file in one call.
+class MemoryOutput final : public oiio::Filesystem::IOProxy {
+ public:
+  MemoryOutput() : IOProxy("", Write) {}
+  const char* proxytype() const override { return "raylab_memory"; }
+  size_t write(const void* data, size_t size) override {
+    const size_t written = pwrite(data, size, m_pos);
+    m_pos += static_cast<int64_t>(written);
+    return written;
+  }
+  size_t pwrite(const void* data, size_t size, int64_t offset) override {
+    if (offset < 0) return 0;
+    const auto start = static_cast<size_t>(offset);
+    if (bytes_.size() < start + size) bytes_.resize(start + size);
+    std::memcpy(bytes_.data() + start, data, size);
+    return size;
+  }
+  size_t size() const override { return bytes_.size(); }
+  void reserve(size_t size) { bytes_.reserve(size); }
+  const std::vector<unsigned char>& bytes() const { return bytes_; }
+
+ private:
+  std::vector<unsigned char> bytes_;
+};
+
+// Encodes `image` for the file `path` (its extension chooses the format): .exr as linear float,
+// anything else as 8-bit sRGB. Into `memory` where the format's writer takes an I/O proxy (png,
+// exr and ppm do in OpenImageIO 2.4 and 2.5); a writer without one writes the file itself, and
+// `written_to_file` says so. Returns "" or the reason.
+std::string encode(const Image& image, const std::string& path, bool linear_float, MemoryOutput& memory,
+                   bool& written_to_file) {
+  written_to_file = false;
+  const int width = image.width(), height = image.height();
+  std::vector<unsigned char> bytes;
+  oiio::ImageSpec spec(width, height, 3, oiio::TypeDesc::FLOAT);
+  const void* pixels = image.pixels().data();  // exr: linear float, as in memory
+  if (!linear_float) {
+    // png, ppm: 8-bit sRGB. The sRGB curve applied in place to a copy (OpenImageIO's
+    // colorconvert), then quantised with values clamped to [0, 1] by get_pixels. The writer is
+    // handed 8-bit data: OpenImageIO 2.5's PNM writer flips the rows of float data it is given
+    // (its PFM convention) even when it writes an 8-bit PPM. Marked as sRGB, a PNG carries
+    // its sRGB, gAMA and cHRM chunks.
+    std::vector<glm::vec3> copy = image.pixels();
+    oiio::ImageBuf srgb(spec, copy.data());
+    if (!oiio::ImageBufAlgo::colorconvert(srgb, srgb, "linear", "sRGB")) return failure(srgb.geterror());
+    bytes.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+    if (!srgb.get_pixels(oiio::ROI::All(), oiio::TypeDesc::UINT8, bytes.data())) return failure(srgb.geterror());
+    spec.set_format(oiio::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    pixels = bytes.data();
+  }
+  std::unique_ptr<oiio::ImageOutput> output = oiio::ImageOutput::create(path);
+  if (!output) return failure(oiio::geterror());
+  if (output->supports("ioproxy")) {
+    memory.reserve(spec.image_bytes() + 1024);
+    output->set_ioproxy(&memory);
+  } else {
+    written_to_file = true;
+  }
+  if (output->open(path, spec) && output->write_image(spec.format, pixels) && output->close()) return "";
+  return failure(output->geterror());
+}
+
 std::string write(const Image& image, const std::string& path, bool linear_float) {
   return reason_of([&]() -> std::string {
-    oiio::ImageBuf linear = to_image_buf(image);
-    if (linear_float) {  // exr: linear float, as in memory
-      if (linear.write(path, oiio::TypeDesc::FLOAT)) return "";
-      return failure(linear.geterror());
+    MemoryOutput memory;
+    bool written_to_file = false;
+    const std::string reason = encode(image, path, linear_float, memory, written_to_file);
+    if (!reason.empty() || written_to_file) return reason;
+    FILE* file = oiio::Filesystem::fopen(path, "wb");
+    if (file == nullptr) return std::string("cannot open the file: ") + std::strerror(errno);
+    const size_t written = std::fwrite(memory.bytes().data(), 1, memory.bytes().size(), file);
+    const bool closed = std::fclose(file) == 0;
+    if (written != memory.bytes().size() || !closed)
+      return std::string("cannot write the file: ") + std::strerror(errno);
+    return "";
+  });
+}
+
+// Encodes a tiny image in each format, into memory only (no file is written), so that the
+// first real write does not pay OpenImageIO's one-time work: finding its format plugins,
+// binding their functions, starting its thread pool (about 30 ms here). Called beside a render
+// by start_loading_image_io() (image.h).
+void warm_up() {
+  (void)reason_of([]() -> std::string {
+    const Image tiny(2, 2, glm::vec3(0.5f));
+    for (const char* path : {"warm_up.png", "warm_up.ppm", "warm_up.exr"}) {
+      std::unique_ptr<oiio::ImageOutput> output = oiio::ImageOutput::create(path);
+      if (!output || !output->supports("ioproxy")) continue;  // would write a file
+      MemoryOutput memory;
+      bool written_to_file = false;
+      (void)encode(tiny, path, std::string(path).find(".exr") != std::string::npos, memory, written_to_file);
     }
-    // png, ppm: 8-bit sRGB
-    oiio::ImageBuf srgb = oiio::ImageBufAlgo::colorconvert(linear, "linear", "sRGB");
-    srgb = oiio::ImageBufAlgo::clamp(srgb, 0.0f, 1.0f);
-    // Quantise in memory and hand the writer 8-bit data: OpenImageIO 2.5's PNM writer flips
-    // the rows of float data it is given (its PFM convention) even when it writes an 8-bit PPM.
-    oiio::ImageBuf srgb8;
-    if (!srgb.has_error() && srgb8.copy(srgb, oiio::TypeDesc::UINT8) &&
-        srgb8.write(path, oiio::TypeDesc::UINT8))
-      return "";
-    return failure(srgb.has_error() ? srgb.geterror() : srgb8.geterror());
+    return "";
   });
 }
 
@@ -145,6 +232,7 @@ const ModuleFunctions kFunctions = [] {
   functions.compare = compare;
   functions.resize = resize;
   functions.side_by_side_difference = side_by_side_difference;
+  functions.warm_up = warm_up;
   return functions;
 }();
 
