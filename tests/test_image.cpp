@@ -140,12 +140,15 @@ TEST(Image, WritingWhereNoFileCanBeMadeNamesThePath) {
 }
 
 TEST(Image, LoadingTheImageIoEarlyChangesNothing) {
-  // start_loading_image_io() may be called any number of times, also while a load runs.
-  start_loading_image_io();
-  start_loading_image_io();
+  // An image call while a background load runs waits for it; a second preload starts nothing.
   const Image image = make_test_image();
   const std::string path = (scratch_dir() / "after_early_load.exr").string();
-  write_image(image, path);
+  {
+    ImageIoPreload preload;
+    ImageIoPreload another;
+    write_image(image, path);
+  }
+  ImageIoPreload after_the_load;
   const Image back = read_image(path);
   ASSERT_EQ(back.width(), image.width()) << path;
   EXPECT_EQ(std::memcmp(back.pixels().data(), image.pixels().data(), sizeof(glm::vec3) * image.pixels().size()), 0) << path;

@@ -90,7 +90,10 @@ int run_render(const RenderOptions& options) {
   settings.tracing.reference_stages = options.reference_stages;
   if (options.reference_stages) settings.tracing.reference_tree = options.reference_tree;
   settings.show_progress = !options.quiet && RAYLAB_ISATTY(stderr);
-  settings.on_workers_started = start_loading_image_io;  // loaded beside the render, written after it
+  // OpenImageIO loaded beside the render, once its workers run; waited for by the first write
+  // (and before this function returns or throws).
+  std::optional<ImageIoPreload> image_io_preload;
+  settings.on_workers_started = [&image_io_preload] { image_io_preload.emplace(); };
   RenderStats stats;
   const RenderOutput output = render_with_variance(scene, settings, &stats);
   const Image& image = output.mean;

@@ -4,9 +4,9 @@
 #include "raylab/error.h"
 
 #include <algorithm>
+#include <future>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
 
 namespace raylab {
 namespace {
@@ -19,38 +19,42 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-const image_io::ModuleFunctions& oiio() { return image_io::load_image_io_module(); }
+// The background load of an ImageIoPreload, if one was started (image.h).
+std::mutex preload_mutex;
+std::shared_future<void> preload;
 
-// The background load of start_loading_image_io(), joined at exit (before the dynamic loader's
-// own clean-up, which must not meet a load still running).
-class ImageIoLoader {
- public:
-  void start() {
-    std::call_once(started_, [this] {
-      thread_ = std::thread([] {
-        try {
-          image_io::load_image_io_module().warm_up();
-        } catch (...) {
-          // Reported by the first image call, which tries again.
-        }
-      });
-    });
+void wait_for_preload() {
+  std::shared_future<void> pending;
+  {
+    std::lock_guard<std::mutex> lock(preload_mutex);
+    pending = preload;
   }
-  ~ImageIoLoader() {
-    if (thread_.joinable()) thread_.join();
-  }
+  if (pending.valid()) pending.wait();
+}
 
- private:
-  std::once_flag started_;
-  std::thread thread_;
-};
+// Every image call waits for a background load first: OpenImageIO is then never used from two
+// threads at once by the framework.
+const image_io::ModuleFunctions& oiio() {
+  wait_for_preload();
+  return image_io::load_image_io_module();
+}
 
 }  // namespace
 
-void start_loading_image_io() {
-  static ImageIoLoader loader;
-  loader.start();
+ImageIoPreload::ImageIoPreload() {
+  std::lock_guard<std::mutex> lock(preload_mutex);
+  if (preload.valid()) return;  // started already (and the module, once loaded, stays)
+  preload = std::async(std::launch::async, [] {
+              try {
+                // The module's one-time work too, so that the first write is as fast as the next.
+                image_io::load_image_io_module().warm_up();
+              } catch (...) {
+                // Reported by the first image call, which tries again.
+              }
+            }).share();
 }
+
+ImageIoPreload::~ImageIoPreload() { wait_for_preload(); }
 
 void check_image_extension(const std::string& path) {
   const std::string ext = lower_extension(path);

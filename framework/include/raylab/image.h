@@ -48,13 +48,21 @@ void write_image(const Image& image, const std::string& path);
 // long work whose result would then be lost.
 void check_image_extension(const std::string& path);
 
-// Starts loading OpenImageIO (0.16 s on the course's Debian machines: the dynamic loader binds
-// the ~260 shared libraries it brings) on a background thread, for a program that will write an
-// image: the load then overlaps its work (a render) instead of following it. Optional, and
-// harmless to call more than once: the first image call waits for a load still running, and a
-// failed load is reported by that call as it would have been without this one. The thread is
-// joined when the program exits.
-void start_loading_image_io();
+// Loads OpenImageIO (0.16 s on the course's Debian machines: the dynamic loader binds the ~260
+// shared libraries it brings) on a background thread from its construction, for a program that
+// will write an image: the load then overlaps its work (a render) instead of following it.
+// Every image call below waits until that load is done (a failed load is reported by the call
+// as it would have been without it), and so does the destructor: keep the object until the
+// images are written, and do not leave the program (std::exit) while it lives, as the exit
+// would destroy OpenImageIO's static objects under the load. A second object while one lives
+// starts nothing.
+class ImageIoPreload {
+ public:
+  ImageIoPreload();
+  ~ImageIoPreload();
+  ImageIoPreload(const ImageIoPreload&) = delete;
+  ImageIoPreload& operator=(const ImageIoPreload&) = delete;
+};
 
 // Reads any format OpenImageIO knows into linear RGB (8-bit files are taken as sRGB).
 // Throws InputError with the path and reason if it cannot.

@@ -145,7 +145,7 @@ std::string write(const Image& image, const std::string& path, bool linear_float
 // Encodes a tiny image in each format, into memory only (no file is written), so that the
 // first real write does not pay OpenImageIO's one-time work: finding its format plugins,
 // binding their functions, starting its thread pool (about 30 ms here). Called beside a render
-// by start_loading_image_io() (image.h).
+// by an ImageIoPreload (image.h).
 void warm_up() {
   (void)reason_of([]() -> std::string {
     const Image tiny(2, 2, glm::vec3(0.5f));
