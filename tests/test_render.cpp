@@ -17,6 +17,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -120,24 +122,42 @@ void expect_same_hits_with_reference_stages(const std::string& scene_file, const
   EXPECT_GT(hits, static_cast<int>(rays.size()) / 4) << scene_file << ": rays that hit something";
 }
 
+// Counts camera rays, from whichever thread asks (TellsTheCallerOnceWhenItsWorkersHaveStarted).
+std::atomic<int> camera_rays_asked{0};
+Ray counting_camera_ray(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) {
+  ++camera_rays_asked;
+  return generate_camera_ray(camera, pixel_x, pixel_y, position_in_pixel);
+}
+
 TEST(Render, TellsTheCallerOnceWhenItsWorkersHaveStarted) {
   // raylab render starts loading the image I/O from this call (render.h: a thread cannot be
-  // created while another is inside dlopen, so the workers must exist first).
+  // created while another is inside dlopen, so the workers must exist first). Called before
+  // them, the callback would wait here for a camera ray that no worker asks for.
   Scene scene = load_scene(source_path("scenes/whitted.json"));
   scene.camera.width = 32;
   scene.camera.height = 24;
   for (const int threads : {1, 2}) {
     RenderSettings settings;
     settings.threads = threads;
+    settings.tracing.camera_ray = counting_camera_ray;
+    camera_rays_asked = 0;
     int calls = 0;
+    bool workers_ran = false;
     std::thread::id caller;
     settings.on_workers_started = [&] {
       ++calls;
       caller = std::this_thread::get_id();
+      // (Not a time limit on the render: only so that a callback called too early fails
+      // instead of waiting for ever.)
+      const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+      while (camera_rays_asked == 0 && std::chrono::steady_clock::now() < give_up)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      workers_ran = camera_rays_asked > 0;
     };
     (void)render(scene, settings);
     EXPECT_EQ(calls, 1) << threads << " threads";
     EXPECT_EQ(caller, std::this_thread::get_id()) << threads << " threads: called from another thread";
+    EXPECT_TRUE(workers_ran) << threads << " threads: called before any worker ran";
   }
 }
 

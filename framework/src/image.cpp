@@ -7,6 +7,7 @@
 #include <future>
 #include <mutex>
 #include <stdexcept>
+#include <system_error>
 
 namespace raylab {
 namespace {
@@ -44,14 +45,18 @@ const image_io::ModuleFunctions& oiio() {
 ImageIoPreload::ImageIoPreload() {
   std::lock_guard<std::mutex> lock(preload_mutex);
   if (preload.valid()) return;  // started already (and the module, once loaded, stays)
-  preload = std::async(std::launch::async, [] {
-              try {
-                // The module's one-time work too, so that the first write is as fast as the next.
-                image_io::load_image_io_module().warm_up();
-              } catch (...) {
-                // Reported by the first image call, which tries again.
-              }
-            }).share();
+  try {
+    preload = std::async(std::launch::async, [] {
+                try {
+                  // The module's one-time work too, so that the first write is as fast as the next.
+                  image_io::load_image_io_module().warm_up();
+                } catch (...) {
+                  // Reported by the first image call, which tries again.
+                }
+              }).share();
+  } catch (const std::system_error&) {
+    // No thread to be had: the first image call loads the module itself.
+  }
 }
 
 ImageIoPreload::~ImageIoPreload() { wait_for_preload(); }

@@ -134,8 +134,14 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   };
 
   std::vector<std::thread> threads;
-  for (int i = 0; i < thread_count; ++i) threads.emplace_back(worker);
-  if (settings.on_workers_started) settings.on_workers_started();
+  try {
+    for (int i = 0; i < thread_count; ++i) threads.emplace_back(worker);
+    if (settings.on_workers_started) settings.on_workers_started();
+  } catch (...) {  // no thread to be had (std::system_error): stop the ones started, then say why
+    stop = true;
+    for (std::thread& thread : threads) thread.join();
+    throw;
+  }
   if (settings.show_progress) {
     while (tiles_done < tiles.size() && !stop) {
       std::this_thread::sleep_for(std::chrono::milliseconds(200));

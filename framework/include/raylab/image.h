@@ -54,8 +54,10 @@ void check_image_extension(const std::string& path);
 // Every image call below waits until that load is done (a failed load is reported by the call
 // as it would have been without it), and so does the destructor: keep the object until the
 // images are written, and do not leave the program (std::exit) while it lives, as the exit
-// would destroy OpenImageIO's static objects under the load. A second object while one lives
-// starts nothing.
+// would destroy OpenImageIO's static objects under the load. Only the first object of a
+// process starts a load (later ones wait for it); where no thread can be started, none does,
+// and the first image call loads OpenImageIO itself. A render that fails after the load
+// started (a stage not written yet) waits for it too, up to about 0.2 s, before it reports.
 class ImageIoPreload {
  public:
   ImageIoPreload();
