@@ -23,7 +23,8 @@
 //   games101           light sampling + uniform hemisphere directions: GAMES101 assignment 7's
 //                      estimator (its castRay), with independent random numbers
 //   light-cosine       light sampling + cosine-weighted directions, independent random numbers
-//   light-cosine-cmj   the same with the kit's stratified samples (raylab/sampler.h): the reference
+//   light-cosine-sobol the same with the kit's stratified samples (raylab/sampler.h: Owen-scrambled
+//                      Sobol' points): the reference
 //   mis                light sampling and cosine-weighted directions, both counting emission, weighted
 //                      by the power heuristic (Veach), stratified samples
 //   raylab-reference   not a replica: the renderer itself, render() as raylab-reference render
@@ -77,7 +78,7 @@ constexpr float kRoulette = 0.8f;
 constexpr double kPeerSeconds = 31.8;  // GAMES101 assignment 7, 784x784, 16 spp, one thread
 constexpr int kPeerWidth = 784, kPeerSamples = 16;
 
-enum class Strategy { BsdfUniform, BsdfCosine, Games101, LightCosine, LightCosineCmj, Mis, Renderer, RendererAuto };
+enum class Strategy { BsdfUniform, BsdfCosine, Games101, LightCosine, LightCosineSobol, Mis, Renderer, RendererAuto };
 
 struct StrategyInfo {
   Strategy strategy;
@@ -89,7 +90,7 @@ constexpr StrategyInfo kStrategies[] = {
     {Strategy::BsdfCosine, "bsdf-cosine", false, false, false, false},
     {Strategy::Games101, "games101", true, true, false, false},
     {Strategy::LightCosine, "light-cosine", true, false, false, false},
-    {Strategy::LightCosineCmj, "light-cosine-cmj", true, false, true, false},
+    {Strategy::LightCosineSobol, "light-cosine-sobol", true, false, true, false},
     {Strategy::Mis, "mis", true, false, true, true},
     {Strategy::Renderer, "raylab-reference", true, false, true, false},
     {Strategy::RendererAuto, "raylab-reference-auto", true, false, true, false},

@@ -1,11 +1,15 @@
 // Pcg32 against the published reference outputs of O'Neill's pcg_basic (pcg32-demo,
 // seed 42, stream 54), and the properties the rest of the kit relies on.
+#include "raylab/math.h"
 #include "raylab/random.h"
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <limits>
 #include <vector>
 
 namespace raylab {
@@ -95,6 +99,36 @@ TEST(MixBits, IsTheSplitmix64FinaliserAndSpreadsNeighbouringInputs) {
     EXPECT_GT(bits, 12) << "inputs " << input << " and " << input + 1;
     EXPECT_LT(bits, 52) << "inputs " << input << " and " << input + 1;
   }
+}
+
+// The bits of a float, to compare results bit for bit (-0 against +0, NaN against NaN).
+std::uint32_t bits_of(float value) {
+  std::uint32_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  return bits;
+}
+
+TEST(NextFloat, StepsAsStdNextafterDoesOnEveryKindOfFloat) {
+  // The offset of a spawned ray's origin (offset_ray_origin) rounds with these; they must be
+  // std::nextafter bit for bit: zeros of both signs, denormals, the largest finite floats,
+  // infinities, and ordinary numbers of both signs; NaN stays NaN.
+  using limits = std::numeric_limits<float>;
+  std::vector<float> values = {0.0f, -0.0f, limits::denorm_min(), -limits::denorm_min(), limits::min(),
+                               -limits::min(), limits::max(), -limits::max(), kInfinity, -kInfinity,
+                               1.0f, -1.0f, 0x1.fffffep-1f, 278.0f, -800.0f, 1e-30f, -1e-30f};
+  Pcg32 random(7, 3);
+  for (int i = 0; i < 10000; ++i) {  // any bit pattern: every exponent and sign
+    const std::uint32_t bits = random.next_uint32();
+    float value;
+    std::memcpy(&value, &bits, sizeof value);
+    if (!std::isnan(value)) values.push_back(value);
+  }
+  for (const float value : values) {
+    EXPECT_EQ(bits_of(next_float_up(value)), bits_of(std::nextafter(value, kInfinity))) << value;
+    EXPECT_EQ(bits_of(next_float_down(value)), bits_of(std::nextafter(value, -kInfinity))) << value;
+  }
+  EXPECT_TRUE(std::isnan(next_float_up(limits::quiet_NaN())));
+  EXPECT_TRUE(std::isnan(next_float_down(limits::quiet_NaN())));
 }
 
 }  // namespace

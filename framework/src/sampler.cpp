@@ -2,49 +2,76 @@
 
 #include "raylab/random.h"
 
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace raylab {
 namespace {
 
-// A permutation of [0, count), chosen by `key`: a bijection on the smallest power of two
-// >= count (odd multiplications and right xorshifts are invertible modulo a power of two),
-// walked until the value lands below count (Kensler 2013, section 3).
-std::uint32_t permute(std::uint32_t index, std::uint32_t count, std::uint64_t key) {
-  if (count <= 1u) return 0u;
-  std::uint32_t mask = count - 1u;
-  mask |= mask >> 1u; mask |= mask >> 2u; mask |= mask >> 4u; mask |= mask >> 8u; mask |= mask >> 16u;
-  const auto key_low = static_cast<std::uint32_t>(key);
-  const auto key_high = static_cast<std::uint32_t>(key >> 32u);
-  do {
-    index ^= key_low;
-    index *= 0x9e3779b1u;
-    index ^= (index & mask) >> 3u;
-    index += key_high;
-    index *= 0x85ebca6bu | 1u;
-    index ^= (index & mask) >> 5u;
-    index *= 0xc2b2ae35u | 1u;
-    index ^= (index & mask) >> 2u;
-    index &= mask;
-  } while (index >= count);
-  return index;
+// The bits of x in the opposite order: bit 0 becomes bit 31.
+constexpr std::uint32_t reverse_bits(std::uint32_t x) {
+  x = (x << 16u) | (x >> 16u);
+  x = ((x & 0x00ff00ffu) << 8u) | ((x >> 8u) & 0x00ff00ffu);
+  x = ((x & 0x0f0f0f0fu) << 4u) | ((x >> 4u) & 0x0f0f0f0fu);
+  x = ((x & 0x33333333u) << 2u) | ((x >> 2u) & 0x33333333u);
+  x = ((x & 0x55555555u) << 1u) | ((x >> 1u) & 0x55555555u);
+  return x;
 }
 
-// A uniform jitter in [0, 1) for (key, sample): the first number of a Pcg32 stream.
-float jitter(std::uint64_t key, std::uint32_t sample_index) {
-  return Pcg32(key, sample_index).next_float();
+// A permutation of the 32-bit numbers, chosen by `seed`, in which every output bit depends only on
+// the input bits at and below it (Laine and Karras 2011): multiplying by an even number or adding
+// only carries upwards, and each step can be undone. Burley's hash, with the constants Vegdahl
+// (2021) found to scramble better.
+constexpr std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed) {
+  x ^= x * 0x3d20adeau;
+  x += seed;
+  x *= (seed >> 16u) | 1u;
+  x ^= x * 0x05526c56u;
+  x ^= x * 0x53a22864u;
+  return x;
 }
+
+// Owen scrambling of a number read as a binary fraction (bit 31 is the 1/2 digit): every digit is
+// flipped or not at random, depending on the digits before it. On the reversed bits this is a
+// Laine-Karras permutation. For a sample index (bit 0 first) it is the shuffle of a pixel's
+// samples that keeps every block of 2^k consecutive indices whole.
+constexpr std::uint32_t owen_scramble_reversed(std::uint32_t reversed_value, std::uint32_t seed) {
+  return reverse_bits(laine_karras_permutation(reversed_value, seed));
+}
+
+// The second dimension of Sobol's sequence, with its bits reversed, as four tables of 256 (one per
+// byte of the index): the sequence is linear in the index's bits (XOR), so the tables' entries for
+// the index's four bytes XOR together. Its direction numbers are v_0 = 2^31, v_k = v_(k-1) XOR
+// (v_(k-1) >> 1). (The first dimension is the index's bits reversed: the van der Corput sequence.)
+struct SobolSecondDimension {
+  std::uint32_t reversed[4][256] = {};
+  constexpr SobolSecondDimension() {
+    std::uint32_t direction[32] = {};
+    direction[0] = 1u << 31u;
+    for (int k = 1; k < 32; ++k) direction[k] = direction[k - 1] ^ (direction[k - 1] >> 1u);
+    for (int byte = 0; byte < 4; ++byte)
+      for (std::uint32_t value = 0; value < 256u; ++value) {
+        std::uint32_t sum = 0;
+        for (int bit = 0; bit < 8; ++bit)
+          if (value & (1u << bit)) sum ^= direction[8 * byte + bit];
+        reversed[byte][value] = reverse_bits(sum);
+      }
+  }
+  std::uint32_t of(std::uint32_t index) const {
+    return reversed[0][index & 0xffu] ^ reversed[1][(index >> 8u) & 0xffu] ^ reversed[2][(index >> 16u) & 0xffu] ^
+           reversed[3][index >> 24u];
+  }
+};
+constexpr SobolSecondDimension kSobolSecondDimension;
+
+// The 24 leading bits of a binary fraction as a float in [0, 1), exactly.
+float to_unit_float(std::uint32_t fraction) { return static_cast<float>(fraction >> 8u) * 0x1p-24f; }
 
 }  // namespace
 
 Sampler::Sampler(int samples_per_pixel, std::uint64_t seed) : samples_per_pixel_(samples_per_pixel), seed_(seed) {
   if (samples_per_pixel < 1)
     throw std::invalid_argument("samples per pixel must be at least 1, got " + std::to_string(samples_per_pixel));
-  grid_columns_ = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(samples_per_pixel)))));
-  grid_rows_ = (samples_per_pixel + grid_columns_ - 1) / grid_columns_;
 }
 
 Sampler Sampler::constant(float u1, glm::vec2 u2) {
@@ -61,21 +88,31 @@ Sampler Sampler::constant(float u1, glm::vec2 u2) {
 std::uint64_t Sampler::dimension_key() {
   if (!pixel_key_ready_) {
     pixel_key_ = mix_bits(pixel_ ^ mix_bits(seed_ + 0x9e3779b97f4a7c15ULL));
+    reversed_sample_index_ = reverse_bits(sample_index_);
     pixel_key_ready_ = true;
   }
   return mix_bits(pixel_key_ + static_cast<std::uint64_t>(dimension_++) * 0x9e3779b97f4a7c15ULL);
 }
+
+// One dimension's three scramblings from its 64-bit key: the shuffle of the sample index, and the
+// Owen scrambling of each coordinate.
+struct DimensionSeeds {
+  std::uint32_t shuffle, first, second;
+  explicit DimensionSeeds(std::uint64_t key)
+      : shuffle(static_cast<std::uint32_t>(key)),
+        first(static_cast<std::uint32_t>(key >> 32u)),
+        second(static_cast<std::uint32_t>((key * 0xd1342543de82ef95ULL) >> 32u)) {}
+};
 
 float Sampler::get_1d() {
   if (constant_) {
     ++dimension_;
     return constant_1d_;
   }
-  const std::uint64_t key = dimension_key();
-  const auto count = static_cast<std::uint32_t>(samples_per_pixel_);
-  const std::uint32_t stratum = permute(sample_index_ % count, count, key);
-  const float value = (static_cast<float>(stratum) + jitter(key, sample_index_)) / static_cast<float>(count);
-  return std::min(value, 0x1.fffffep-1f);  // the division may round up to 1
+  const DimensionSeeds seeds(dimension_key());
+  // The sample index shuffled, then its van der Corput value (the index reversed), scrambled.
+  const std::uint32_t index = owen_scramble_reversed(reversed_sample_index_, seeds.shuffle);
+  return to_unit_float(owen_scramble_reversed(index, seeds.first));
 }
 
 glm::vec2 Sampler::get_2d() {
@@ -83,22 +120,11 @@ glm::vec2 Sampler::get_2d() {
     ++dimension_;
     return constant_2d_;
   }
-  // Correlated multi-jitter: sample s sits in column s % m, row s / m of the m x n grid; its
-  // offset inside the cell is itself a stratum of the cell's finer n x m grid, shuffled per
-  // column and row, so that the x and y projections are stratified into m n intervals each.
-  const std::uint64_t key = dimension_key();
-  const auto m = static_cast<std::uint32_t>(grid_columns_), n = static_cast<std::uint32_t>(grid_rows_);
-  const std::uint32_t s = permute(sample_index_ % static_cast<std::uint32_t>(samples_per_pixel_),
-                                  static_cast<std::uint32_t>(samples_per_pixel_), key);
-  const std::uint32_t column = s % m, row = s / m;
-  const std::uint32_t fine_x = permute(row, n, mix_bits(key ^ 0x1u));     // by row: x strata differ
-  const std::uint32_t fine_y = permute(column, m, mix_bits(key ^ 0x2u));  // by column: y strata differ
-  const float jitter_x = jitter(key ^ 0x3u, sample_index_), jitter_y = jitter(key ^ 0x4u, sample_index_);
-  const float x = (static_cast<float>(column) + (static_cast<float>(fine_x) + jitter_x) / static_cast<float>(n)) /
-                  static_cast<float>(m);
-  const float y = (static_cast<float>(row) + (static_cast<float>(fine_y) + jitter_y) / static_cast<float>(m)) /
-                  static_cast<float>(n);
-  return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
+  // Sobol's first two dimensions at the shuffled index, each scrambled on its own.
+  const DimensionSeeds seeds(dimension_key());
+  const std::uint32_t index = owen_scramble_reversed(reversed_sample_index_, seeds.shuffle);
+  return {to_unit_float(owen_scramble_reversed(index, seeds.first)),
+          to_unit_float(owen_scramble_reversed(kSobolSecondDimension.of(index), seeds.second))};
 }
 
 }  // namespace raylab

@@ -45,8 +45,8 @@ glm::vec3 offset_ray_origin(const SurfaceHit& hit, const glm::vec3& direction) {
   glm::vec3 origin = hit.point + offset;
   // Round away from the surface so that the offset survives the addition's rounding.
   for (int axis = 0; axis < 3; ++axis) {
-    if (offset[axis] > 0.0f) origin[axis] = std::nextafter(origin[axis], kInfinity);
-    else if (offset[axis] < 0.0f) origin[axis] = std::nextafter(origin[axis], -kInfinity);
+    if (offset[axis] > 0.0f) origin[axis] = next_float_up(origin[axis]);
+    else if (offset[axis] < 0.0f) origin[axis] = next_float_down(origin[axis]);
   }
   return origin;
 }

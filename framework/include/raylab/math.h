@@ -5,6 +5,8 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <ostream>
 
@@ -21,6 +23,21 @@ constexpr float gamma_bound(int n) {
   constexpr float unit_roundoff = std::numeric_limits<float>::epsilon() * 0.5f;
   return (static_cast<float>(n) * unit_roundoff) / (1.0f - static_cast<float>(n) * unit_roundoff);
 }
+
+// The next float above (below) v: std::nextafter(v, +infinity) (-infinity), without the call into
+// the maths library (pbrt-v4's NextFloatUp): a finite float's neighbours are its bit pattern plus
+// or minus one. Infinities towards themselves and NaN stay as they are; -0 and +0 both step to
+// the smallest denormal.
+inline float next_float_up(float v) {
+  if (std::isnan(v) || v == kInfinity) return v;
+  if (v == 0.0f) return std::numeric_limits<float>::denorm_min();
+  std::uint32_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  bits = v > 0.0f ? bits + 1u : bits - 1u;
+  std::memcpy(&v, &bits, sizeof bits);
+  return v;
+}
+inline float next_float_down(float v) { return -next_float_up(-v); }
 
 inline bool is_finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

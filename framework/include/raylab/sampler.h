@@ -8,13 +8,17 @@
 //   float u = sampler.get_1d(); glm::vec2 uv = sampler.get_2d();   // then as the integrator needs
 // Each call takes the next dimension; the same call sequence gives the same numbers.
 //
-// Stratified: over the samples_per_pixel samples of a pixel, each dimension's values are
-// correlated multi-jittered (Kensler, "Correlated Multi-Jittered Sampling", 2013): a 2D
-// dimension puts one sample in each cell of an m x n grid (m n >= samples_per_pixel) and
-// its x and y projections are stratified in 1D too; a 1D dimension puts one sample in each
-// of samples_per_pixel equal intervals. Strata are shuffled by a hash of (pixel, dimension)
-// so that dimensions are not correlated with each other. The jitter inside each stratum is
-// drawn from Pcg32. All values are in [0, 1).
+// Stratified and progressive: every dimension (a 1D value or a 2D pair) of a pixel's samples is
+// an Owen-scrambled Sobol' sequence (Burley, "Practical Hash-based Owen Scrambling", JCGT 2020),
+// padded: each dimension has its own scrambling and its own shuffle of the sample index, drawn
+// from a hash of (pixel, dimension, seed), so that dimensions are not correlated with each
+// other. The first 2^k samples of a pixel, for every k, put one value in each of the 2^k equal
+// intervals of a 1D dimension, and one point in each of the 2^k cells of every grid of
+// 2^a x 2^b cells (a + b = k) of a 2D dimension (a (0, k, 2)-net). The sample count does not
+// change the numbers (a pixel's first 4 samples are the same at --spp 4 and --spp 64; only
+// one sample per pixel is special, the pixel's centre), so a pixel that stops early, as
+// adaptive sampling does, keeps samples as well spread as a render of that count. Within its
+// cell a value is uniformly random. All values are in [0, 1). docs/07_sampling.md, section 9.
 #pragma once
 
 #include "raylab/math.h"
@@ -25,8 +29,8 @@ namespace raylab {
 
 class Sampler {
  public:
-  // samples_per_pixel >= 1: how many samples each pixel takes (the strata count).
-  // seed: changes every number (different seeds give independent renders).
+  // samples_per_pixel >= 1: how many samples each pixel takes (at 1, get_pixel_2d() is the
+  // pixel's centre). seed: changes every number (different seeds give independent renders).
   explicit Sampler(int samples_per_pixel, std::uint64_t seed = 0);
 
   // A sampler of one sample per pixel that gives the same numbers at every dimension: every
@@ -65,12 +69,12 @@ class Sampler {
   std::uint64_t dimension_key();
 
   int samples_per_pixel_ = 1;
-  int grid_columns_ = 1, grid_rows_ = 1;  // the 2D strata: columns * rows >= samples_per_pixel
   std::uint64_t seed_ = 0;
   std::uint64_t pixel_ = 0;      // (pixel_y, pixel_x) in one number
   std::uint64_t pixel_key_ = 0;  // its hash with the seed, once a number is drawn
   bool pixel_key_ready_ = false;
   std::uint32_t sample_index_ = 0;
+  std::uint32_t reversed_sample_index_ = 0;  // its bits reversed, with pixel_key_
   int dimension_ = 0;
   bool constant_ = false;  // Sampler::constant: the numbers below at every dimension
   float constant_1d_ = 0.0f;
