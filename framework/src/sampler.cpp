@@ -67,6 +67,16 @@ constexpr SobolSecondDimension kSobolSecondDimension;
 // The 24 leading bits of a binary fraction as a float in [0, 1), exactly.
 float to_unit_float(std::uint32_t fraction) { return static_cast<float>(fraction >> 8u) * 0x1p-24f; }
 
+// One dimension's three scramblings from its 64-bit key: the shuffle of the sample index, and the
+// Owen scrambling of each coordinate.
+struct DimensionSeeds {
+  std::uint32_t shuffle, first, second;
+  explicit DimensionSeeds(std::uint64_t key)
+      : shuffle(static_cast<std::uint32_t>(key)),
+        first(static_cast<std::uint32_t>(key >> 32u)),
+        second(static_cast<std::uint32_t>((key * 0xd1342543de82ef95ULL) >> 32u)) {}
+};
+
 }  // namespace
 
 Sampler::Sampler(int samples_per_pixel, std::uint64_t seed) : samples_per_pixel_(samples_per_pixel), seed_(seed) {
@@ -93,16 +103,6 @@ std::uint64_t Sampler::dimension_key() {
   }
   return mix_bits(pixel_key_ + static_cast<std::uint64_t>(dimension_++) * 0x9e3779b97f4a7c15ULL);
 }
-
-// One dimension's three scramblings from its 64-bit key: the shuffle of the sample index, and the
-// Owen scrambling of each coordinate.
-struct DimensionSeeds {
-  std::uint32_t shuffle, first, second;
-  explicit DimensionSeeds(std::uint64_t key)
-      : shuffle(static_cast<std::uint32_t>(key)),
-        first(static_cast<std::uint32_t>(key >> 32u)),
-        second(static_cast<std::uint32_t>((key * 0xd1342543de82ef95ULL) >> 32u)) {}
-};
 
 float Sampler::get_1d() {
   if (constant_) {
