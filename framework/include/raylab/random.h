@@ -3,9 +3,10 @@
 // XSH RR variant: 64 bits of state, a 64-bit stream selector, 32 bits out per step. Small,
 // fast, well tested, and the same on every compiler and platform (std::mt19937 is too, but
 // std::uniform_real_distribution is not). Everything that needs random numbers - the
-// renderer's sampler, the autograder's cases, the stress suite, the benchmarks, the mesh
-// generator - draws them from here, seeded from what it is computing (mix_bits), never from
-// the clock or a shared stream, so every run gives the same numbers.
+// autograder's cases, the stress suite, the benchmarks, the mesh generator - draws them from
+// here, seeded from what it is computing (mix_bits), never from the clock or a shared stream, so
+// every run gives the same numbers. The renderer's sampler (sampler.h) keys its scrambled points
+// with mix_bits in the same way.
 #pragma once
 
 #include <cmath>
