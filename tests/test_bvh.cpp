@@ -126,9 +126,10 @@ std::string text_of(const std::optional<BvhHit>& hit) {
 
 TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
   // The renderer hands the reference traversal its triangles (TriangleEdges) so that it tests
-  // them inlined, and their columns in leaf order so that it tests four at a time; every
-  // answer, t and the barycentrics handed back to the bit, and every count must be those of
-  // calling stage 03, for the binary traversal and for the 4-wide one (stage 05c).
+  // them inlined, and their columns in leaf order so that it tests four (the 8-wide tree:
+  // eight) at a time; every answer, t and the barycentrics handed back to the bit, and every
+  // count must be those of calling stage 03, for the binary traversal, the 4-wide one (stage
+  // 05c) and the reference's 8-wide one, whose leaves are whole subtrees of up to 8 triangles.
   const Mesh& mesh = large_mesh();
   const testkit::IndexedTriangles triangles{&mesh.triangles.positions, &mesh.triangles.indices, &intersect_ray_triangle};
   const PrimitiveIntersector by_calls = testkit::intersector_over(triangles);
@@ -148,7 +149,7 @@ TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
     rays.push_back(ray);
   }
   int hits = 0, failures = 0;
-  // Leaves of up to 9 triangles too: then a leaf is tested four, four and one at a time.
+  // Leaves of up to 9 triangles too: then a leaf is tested four, four and one (eight and one) at a time.
   for (const Bvh& bvh :
        {build_bvh(mesh.boxes, kLeafSize), build_bvh_sah(mesh.boxes, kLeafSize), build_bvh(mesh.boxes, 9)}) {
     const Bvh4 wide = collapse_bvh4(bvh);

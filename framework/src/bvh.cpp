@@ -27,7 +27,7 @@ std::ostream& operator<<(std::ostream& out, const BvhNode& node) {
 }
 
 std::vector<float> triangle_columns(const TriangleEdges* triangles, const std::vector<std::uint32_t>& primitive_order) {
-  const std::size_t stride = primitive_order.size() + 3;
+  const std::size_t stride = primitive_order.size() + 7;
   std::vector<float> values(9 * stride, 0.0f);
   for (std::size_t i = 0; i < primitive_order.size(); ++i) {
     const TriangleEdges& triangle = triangles[primitive_order[i]];

@@ -5,6 +5,8 @@
 // (geometry_build.cpp builds the trees.)
 #include "geometry_query.h"
 
+#include <limits>
+
 namespace raylab {
 
 SceneGeometry::Triangle::Triangle(const glm::vec3& p0_, const glm::vec3& p1_, const glm::vec3& p2_,
@@ -16,48 +18,78 @@ SceneGeometry::Triangle::Triangle(const glm::vec3& p0_, const glm::vec3& p1_, co
   normal = has_area ? unnormalised / length : glm::vec3(0.0f);
 }
 
+std::optional<BvhHit> SceneGeometry::traverse_the_one_tree(const Ray& ray, bool any_hit,
+                                                          TriangleHit* closest_hit) const {
+  const MeshPart& mesh = meshes_.front();
+  // The traversal tests the triangles itself (their columns): the calls below are not made, but
+  // are there for a traversal that would.
+  HitRecord record;
+  Query query{this, &record, any_hit, triangles_.data(), 0};
+  PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
+  intersector.triangles = triangle_edges_.data();
+  intersector.columns = TriangleColumns::of(mesh.columns);
+  intersector.closest_triangle_hit = closest_hit;
+  BvhTraversalStats stats;
+  if (mesh.reference_tree)
+    return reference_tree_functions_->intersect(mesh.reference_tree.get(), ray, intersector, any_hit, stats);
+  return intersect_bvh4(mesh.wide, ray, intersector, any_hit, stats);
+}
+
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
+  if (straight_into_the_one_tree_) {
+    TriangleHit details{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
+    const std::optional<BvhHit> hit = traverse_the_one_tree(ray, /*any_hit=*/false, &details);
+    if (!hit || hit->primitive >= triangles_.size()) return std::nullopt;
+    // The details are of the hit returned (the reference's traversals always hand them over).
+    if (details.t_hit == hit->t_hit) return triangle_surface_hit(hit->primitive, details, ray);
+  }
   // Find the closest t first (shrinking t_max after every hit), then fill the record once.
   HitRecord record;
   Query query{this, &record, /*any_hit=*/false};
   const std::optional<float> t_hit = intersect_objects(ray, query);
   if (!t_hit || record.kind == Kind::None) return std::nullopt;
-  const Kind kind = record.kind;
-  const std::size_t index = record.index;
-  const TriangleHit& triangle_hit = record.triangle_hit;
-
+  if (record.kind == Kind::Triangle) {
+    TriangleHit details = record.triangle_hit;
+    details.t_hit = *t_hit;
+    return triangle_surface_hit(record.index, details, ray);
+  }
   SurfaceHit hit;
   hit.t_hit = *t_hit;
-  if (kind == Kind::Sphere) {
-    const Sphere& sphere = spheres_[index];
-    // Re-project the hit point onto the surface: its error is then a few ulps (pbrt-v4 6.8.5).
-    const glm::vec3 outward = glm::normalize(ray.at(hit.t_hit) - sphere.center);
-    hit.point = sphere.center + sphere.radius * outward;
-    hit.point_error = gamma_bound(5) * glm::abs(hit.point) + gamma_bound(5) * glm::abs(sphere.center);
-    hit.geometric_normal = sphere.faces_inward ? -outward : outward;
-    hit.material = sphere.material;
-  } else {
-    const Triangle& tri = triangles_[index];
-    const TriangleMesh& mesh = scene_.meshes[tri.mesh];
-    const float b1 = triangle_hit.barycentric_b1, b2 = triangle_hit.barycentric_b2;
-    const float b0 = 1.0f - b1 - b2;
-    // The point from barycentrics is far more accurate than origin + t * direction.
-    hit.point = b0 * tri.p0 + b1 * tri.p1 + b2 * tri.p2;
-    hit.point_error = gamma_bound(7) * (glm::abs(b0 * tri.p0) + glm::abs(b1 * tri.p1) + glm::abs(b2 * tri.p2));
-    // A degenerate triangle has no normal; face the ray so that shading stays finite.
-    hit.geometric_normal = tri.has_area ? tri.normal : -glm::normalize(ray.direction);
-    if (!mesh.texcoords.empty()) {
-      hit.texcoord = b0 * mesh.texcoords[mesh.indices[tri.first_index]] +
-                     b1 * mesh.texcoords[mesh.indices[tri.first_index + 1]] +
-                     b2 * mesh.texcoords[mesh.indices[tri.first_index + 2]];
-      hit.has_texcoord = true;
-    }
-    hit.material = mesh.material;
+  const Sphere& sphere = spheres_[record.index];
+  // Re-project the hit point onto the surface: its error is then a few ulps (pbrt-v4 6.8.5).
+  const glm::vec3 outward = glm::normalize(ray.at(hit.t_hit) - sphere.center);
+  hit.point = sphere.center + sphere.radius * outward;
+  hit.point_error = gamma_bound(5) * glm::abs(hit.point) + gamma_bound(5) * glm::abs(sphere.center);
+  hit.geometric_normal = sphere.faces_inward ? -outward : outward;
+  hit.material = sphere.material;
+  return hit;
+}
+
+SurfaceHit SceneGeometry::triangle_surface_hit(std::uint32_t triangle, const TriangleHit& details,
+                                               const Ray& ray) const {
+  const Triangle& tri = triangles_[triangle];
+  const TriangleMesh& mesh = scene_.meshes[tri.mesh];
+  const float b1 = details.barycentric_b1, b2 = details.barycentric_b2;
+  const float b0 = 1.0f - b1 - b2;
+  SurfaceHit hit;
+  hit.t_hit = details.t_hit;
+  // The point from barycentrics is far more accurate than origin + t * direction.
+  hit.point = b0 * tri.p0 + b1 * tri.p1 + b2 * tri.p2;
+  hit.point_error = gamma_bound(7) * (glm::abs(b0 * tri.p0) + glm::abs(b1 * tri.p1) + glm::abs(b2 * tri.p2));
+  // A degenerate triangle has no normal; face the ray so that shading stays finite.
+  hit.geometric_normal = tri.has_area ? tri.normal : -glm::normalize(ray.direction);
+  if (!mesh.texcoords.empty()) {
+    hit.texcoord = b0 * mesh.texcoords[mesh.indices[tri.first_index]] +
+                   b1 * mesh.texcoords[mesh.indices[tri.first_index + 1]] +
+                   b2 * mesh.texcoords[mesh.indices[tri.first_index + 2]];
+    hit.has_texcoord = true;
   }
+  hit.material = mesh.material;
   return hit;
 }
 
 bool SceneGeometry::occluded(const Ray& ray) const {
+  if (straight_into_the_one_tree_) return traverse_the_one_tree(ray, /*any_hit=*/true, nullptr).has_value();
   HitRecord record;
   Query query{this, &record, /*any_hit=*/true};
   return intersect_objects(ray, query).has_value();

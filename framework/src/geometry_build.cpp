@@ -83,6 +83,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
       if (!mesh.wide.nodes.empty() || mesh.reference_tree)
         mesh.columns = triangle_columns(triangle_edges_.data() + mesh.first_triangle, mesh.bvh.primitive_order);
   }
+  straight_into_the_one_tree_ = only_one_tree_ && hand_triangles_to_traversal_ && !meshes_.front().columns.empty();
 }
 
 void SceneGeometry::build_bvhs() {

@@ -1,93 +1,9 @@
 #include "raylab/sampler.h"
 
-#include "raylab/random.h"
-
 #include <stdexcept>
 #include <string>
 
 namespace raylab {
-namespace {
-
-// The bits of x in the opposite order: bit 0 becomes bit 31.
-constexpr std::uint32_t reverse_bits(std::uint32_t x) {
-  x = (x << 16u) | (x >> 16u);
-  x = ((x & 0x00ff00ffu) << 8u) | ((x >> 8u) & 0x00ff00ffu);
-  x = ((x & 0x0f0f0f0fu) << 4u) | ((x >> 4u) & 0x0f0f0f0fu);
-  x = ((x & 0x33333333u) << 2u) | ((x >> 2u) & 0x33333333u);
-  x = ((x & 0x55555555u) << 1u) | ((x >> 1u) & 0x55555555u);
-  return x;
-}
-
-// A permutation of the 32-bit numbers, chosen by `seed`, in which every output bit depends only on
-// the input bits at and below it (Laine and Karras 2011): multiplying by an even number or adding
-// only carries upwards, and each step can be undone. Burley's hash, with the constants Vegdahl
-// (2021) found to scramble better.
-constexpr std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed) {
-  x ^= x * 0x3d20adeau;
-  x += seed;
-  x *= (seed >> 16u) | 1u;
-  x ^= x * 0x05526c56u;
-  x ^= x * 0x53a22864u;
-  return x;
-}
-
-// Owen scrambling of a number read as a binary fraction (bit 31 is the 1/2 digit): every digit is
-// flipped or not at random, depending on the digits before it. On the reversed bits this is a
-// Laine-Karras permutation. For a sample index (bit 0 first) it is the shuffle of a pixel's
-// samples that keeps every block of 2^k consecutive indices whole.
-constexpr std::uint32_t owen_scramble_reversed(std::uint32_t reversed_value, std::uint32_t seed) {
-  return reverse_bits(laine_karras_permutation(reversed_value, seed));
-}
-
-// The second dimension of Sobol's sequence, with its bits reversed, as four tables of 256 (one per
-// byte of the index): the sequence is linear in the index's bits (XOR), so the tables' entries for
-// the index's four bytes XOR together. Its direction numbers are v_0 = 2^31, v_k = v_(k-1) XOR
-// (v_(k-1) >> 1). (The first dimension is the index's bits reversed: the van der Corput sequence.)
-struct SobolSecondDimension {
-  std::uint32_t reversed[4][256] = {};
-  constexpr SobolSecondDimension() {
-    std::uint32_t direction_reversed[32] = {};
-    std::uint32_t direction = 1u << 31u;
-    for (int k = 0; k < 32; ++k) {
-      direction_reversed[k] = reverse_bits(direction);
-      direction ^= direction >> 1u;
-    }
-    // Each table by its highest bit: value = (value - 2^bit) + 2^bit. About a thousand steps, well
-    // within every compiler's budget for constant evaluation (MSVC's is 100 000 by default).
-    for (int byte = 0; byte < 4; ++byte)
-      for (int bit = 0; bit < 8; ++bit)
-        for (std::uint32_t value = 1u << bit; value < (2u << bit); ++value)
-          reversed[byte][value] = reversed[byte][value - (1u << bit)] ^ direction_reversed[8 * byte + bit];
-  }
-  constexpr std::uint32_t of(std::uint32_t index) const {
-    return reversed[0][index & 0xffu] ^ reversed[1][(index >> 8u) & 0xffu] ^ reversed[2][(index >> 16u) & 0xffu] ^
-           reversed[3][index >> 24u];
-  }
-};
-constexpr SobolSecondDimension kSobolSecondDimension;
-// Its direction numbers against known values (Joe and Kuo's dimension 2; bit k of the index is
-// v_k, whose bits are row k of Pascal's triangle modulo 2): v_1 = 0xc0000000, v_8 = 0x80800000,
-// v_15 = 0xffff0000, v_31 = 0xffffffff, here bit-reversed.
-static_assert(kSobolSecondDimension.of(1u << 1u) == reverse_bits(0xc0000000u), "Sobol' v_1");
-static_assert(kSobolSecondDimension.of(1u << 8u) == reverse_bits(0x80800000u), "Sobol' v_8");
-static_assert(kSobolSecondDimension.of(1u << 15u) == reverse_bits(0xffff0000u), "Sobol' v_15");
-static_assert(kSobolSecondDimension.of(1u << 31u) == 0xffffffffu, "Sobol' v_31");
-static_assert(kSobolSecondDimension.of(3u) == reverse_bits(0x80000000u ^ 0xc0000000u), "Sobol' linearity");
-
-// The 24 leading bits of a binary fraction as a float in [0, 1), exactly.
-float to_unit_float(std::uint32_t fraction) { return static_cast<float>(fraction >> 8u) * 0x1p-24f; }
-
-// One dimension's three scramblings from its 64-bit key: the shuffle of the sample index, and the
-// Owen scrambling of each coordinate.
-struct DimensionSeeds {
-  std::uint32_t shuffle, first, second;
-  explicit DimensionSeeds(std::uint64_t key)
-      : shuffle(static_cast<std::uint32_t>(key)),
-        first(static_cast<std::uint32_t>(key >> 32u)),
-        second(static_cast<std::uint32_t>((key * 0xd1342543de82ef95ULL) >> 32u)) {}
-};
-
-}  // namespace
 
 Sampler::Sampler(int samples_per_pixel, std::uint64_t seed) : samples_per_pixel_(samples_per_pixel), seed_(seed) {
   if (samples_per_pixel < 1)
@@ -103,38 +19,6 @@ Sampler Sampler::constant(float u1, glm::vec2 u2) {
   sampler.constant_1d_ = u1;
   sampler.constant_2d_ = u2;
   return sampler;
-}
-
-std::uint64_t Sampler::dimension_key() {
-  if (!pixel_key_ready_) {
-    pixel_key_ = mix_bits(pixel_ ^ mix_bits(seed_ + 0x9e3779b97f4a7c15ULL));
-    reversed_sample_index_ = reverse_bits(sample_index_);
-    pixel_key_ready_ = true;
-  }
-  return mix_bits(pixel_key_ + static_cast<std::uint64_t>(dimension_++) * 0x9e3779b97f4a7c15ULL);
-}
-
-float Sampler::get_1d() {
-  if (constant_) {
-    ++dimension_;
-    return constant_1d_;
-  }
-  const DimensionSeeds seeds(dimension_key());
-  // The sample index shuffled, then its van der Corput value (the index reversed), scrambled.
-  const std::uint32_t index = owen_scramble_reversed(reversed_sample_index_, seeds.shuffle);
-  return to_unit_float(owen_scramble_reversed(index, seeds.first));
-}
-
-glm::vec2 Sampler::get_2d() {
-  if (constant_) {
-    ++dimension_;
-    return constant_2d_;
-  }
-  // Sobol's first two dimensions at the shuffled index, each scrambled on its own.
-  const DimensionSeeds seeds(dimension_key());
-  const std::uint32_t index = owen_scramble_reversed(reversed_sample_index_, seeds.shuffle);
-  return {to_unit_float(owen_scramble_reversed(index, seeds.first)),
-          to_unit_float(owen_scramble_reversed(kSobolSecondDimension.of(index), seeds.second))};
 }
 
 }  // namespace raylab

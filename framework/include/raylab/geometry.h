@@ -195,6 +195,13 @@ class SceneGeometry {
   const ReferenceTreeFunctions* reference_tree_functions_ = nullptr;  // with reference_trees_
   // reference_trees_, no spheres, and a tree: a query goes straight into it.
   bool only_one_tree_ = false;
+  // only_one_tree_ and hand_triangles_to_traversal_: intersect() and occluded() call the
+  // reference's traversal themselves (traverse_the_one_tree), which tests the triangles inlined
+  // and hands back the closest hit's details, and skip the records of the general queries.
+  bool straight_into_the_one_tree_ = false;
+  std::optional<BvhHit> traverse_the_one_tree(const Ray& ray, bool any_hit, TriangleHit* closest_hit) const;
+  // What shading needs of a hit on triangles_[triangle] with the test's details.
+  SurfaceHit triangle_surface_hit(std::uint32_t triangle, const TriangleHit& details, const Ray& ray) const;
   std::vector<MeshPart> meshes_;
   Bvh objects_bvh_;  // over spheres_ then meshes_; empty: test every object
   // The stub stage ("05_bvh" or "04_box") that made us fall back to testing every primitive;

@@ -22,6 +22,8 @@
 #pragma once
 
 #include "raylab/math.h"
+#include "raylab/owen_sobol.h"
+#include "raylab/random.h"
 
 #include <cstdint>
 
@@ -80,5 +82,39 @@ class Sampler {
   float constant_1d_ = 0.0f;
   glm::vec2 constant_2d_{0.0f};
 };
+
+// The draws, inline: they are a large share of a path's work.
+inline std::uint64_t Sampler::dimension_key() {
+  if (!pixel_key_ready_) {
+    pixel_key_ = mix_bits(pixel_ ^ mix_bits(seed_ + 0x9e3779b97f4a7c15ULL));
+    reversed_sample_index_ = owen_sobol::reverse_bits(sample_index_);
+    pixel_key_ready_ = true;
+  }
+  return mix_bits(pixel_key_ + static_cast<std::uint64_t>(dimension_++) * 0x9e3779b97f4a7c15ULL);
+}
+
+inline float Sampler::get_1d() {
+  if (constant_) {
+    ++dimension_;
+    return constant_1d_;
+  }
+  const owen_sobol::DimensionSeeds seeds(dimension_key());
+  // The sample index shuffled, then its van der Corput value (the index reversed), scrambled.
+  const std::uint32_t index = owen_sobol::owen_scramble_reversed(reversed_sample_index_, seeds.shuffle);
+  return owen_sobol::to_unit_float(owen_sobol::owen_scramble_reversed(index, seeds.first));
+}
+
+inline glm::vec2 Sampler::get_2d() {
+  if (constant_) {
+    ++dimension_;
+    return constant_2d_;
+  }
+  // Sobol's first two dimensions at the shuffled index, each scrambled on its own.
+  const owen_sobol::DimensionSeeds seeds(dimension_key());
+  const std::uint32_t index = owen_sobol::owen_scramble_reversed(reversed_sample_index_, seeds.shuffle);
+  const std::uint32_t second_reversed = owen_sobol::kSobolSecondDimension.of(index);
+  return {owen_sobol::to_unit_float(owen_sobol::owen_scramble_reversed(index, seeds.first)),
+          owen_sobol::to_unit_float(owen_sobol::owen_scramble_reversed(second_reversed, seeds.second))};
+}
 
 }  // namespace raylab

@@ -75,9 +75,9 @@ struct TriangleEdges {
 
 // The same triangles as nine columns of floats (p0.x, p0.y, p0.z, edge_01.x, ... edge_02.z),
 // in the order of a tree's primitive_order: column c of the triangle at position i is
-// values[c * stride + i], and each column ends with 3 values of padding, so that the
-// reference's leaf test loads four neighbours' coordinates at once (triangle_columns() makes
-// them). Not part of your contract.
+// values[c * stride + i], and each column ends with 7 values of padding, so that the
+// reference's leaf tests load four or eight neighbours' coordinates at once (triangle_columns()
+// makes them). Not part of your contract.
 struct TriangleColumns {
   const float* values = nullptr;
   std::size_t stride = 0;
@@ -125,7 +125,7 @@ struct PrimitiveIntersector {
 };
 
 // The columns (TriangleColumns::values) of triangles[primitive_order[i]] for every position i,
-// padded: their stride is primitive_order.size() + 3 (TriangleColumns::of takes it from them).
+// padded: their stride is primitive_order.size() + 7 (TriangleColumns::of takes it from them).
 std::vector<float> triangle_columns(const TriangleEdges* triangles, const std::vector<std::uint32_t>& primitive_order);
 
 // The work one query did, counted the same way by every correct traversal (bench/, grader).
