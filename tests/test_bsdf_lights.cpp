@@ -356,6 +356,7 @@ Light triangle_light(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& 
   light.p1 = p1;
   light.p2 = p2;
   light.area = triangle_area(p0, p1, p2);
+  light.normal = triangle_normal(p0, p1, p2);
   light.radiance = radiance;
   return light;
 }

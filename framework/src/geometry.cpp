@@ -5,7 +5,6 @@
 // (geometry_build.cpp builds the trees.)
 #include "geometry_query.h"
 
-#include <limits>
 
 namespace raylab {
 
@@ -18,30 +17,13 @@ SceneGeometry::Triangle::Triangle(const glm::vec3& p0_, const glm::vec3& p1_, co
   normal = has_area ? unnormalised / length : glm::vec3(0.0f);
 }
 
-std::optional<BvhHit> SceneGeometry::traverse_the_one_tree(const Ray& ray, bool any_hit,
-                                                          TriangleHit* closest_hit) const {
-  const MeshPart& mesh = meshes_.front();
-  // The traversal tests the triangles itself (their columns): the calls below are not made, but
-  // are there for a traversal that would.
-  HitRecord record;
-  Query query{this, &record, any_hit, triangles_.data(), 0};
-  PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
-  intersector.triangles = triangle_edges_.data();
-  intersector.columns = TriangleColumns::of(mesh.columns);
-  intersector.closest_triangle_hit = closest_hit;
-  BvhTraversalStats stats;
-  if (mesh.reference_tree)
-    return reference_tree_functions_->intersect(mesh.reference_tree.get(), ray, intersector, any_hit, stats);
-  return intersect_bvh4(mesh.wide, ray, intersector, any_hit, stats);
-}
-
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
-  if (straight_into_the_one_tree_) {
-    TriangleHit details{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
-    const std::optional<BvhHit> hit = traverse_the_one_tree(ray, /*any_hit=*/false, &details);
+  if (the_one_tree_) {
+    TriangleHit details;
+    const std::optional<BvhHit> hit =
+        reference_tree_functions_->closest_triangle(the_one_tree_, ray, the_one_tree_columns_, details);
     if (!hit || hit->primitive >= triangles_.size()) return std::nullopt;
-    // The details are of the hit returned (the reference's traversals always hand them over).
-    if (details.t_hit == hit->t_hit) return triangle_surface_hit(hit->primitive, details, ray);
+    return triangle_surface_hit(hit->primitive, details, ray);
   }
   // Find the closest t first (shrinking t_max after every hit), then fill the record once.
   HitRecord record;
@@ -89,7 +71,7 @@ SurfaceHit SceneGeometry::triangle_surface_hit(std::uint32_t triangle, const Tri
 }
 
 bool SceneGeometry::occluded(const Ray& ray) const {
-  if (straight_into_the_one_tree_) return traverse_the_one_tree(ray, /*any_hit=*/true, nullptr).has_value();
+  if (the_one_tree_) return reference_tree_functions_->any_triangle(the_one_tree_, ray, the_one_tree_columns_);
   HitRecord record;
   Query query{this, &record, /*any_hit=*/true};
   return intersect_objects(ray, query).has_value();

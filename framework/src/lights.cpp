@@ -52,7 +52,8 @@ std::optional<LightSample> sample_li(const Light& light, const glm::vec3& refere
       return sample;
     }
     case LightKind::Triangle:
-      return area_sample(sample_triangle(light.p0, light.p1, light.p2, u), light.radiance, reference_point);
+      return area_sample(sample_triangle(light.p0, light.p1, light.p2, light.normal, u), light.radiance,
+                         reference_point);
     case LightKind::Sphere:
       return area_sample(sample_sphere(light.sphere, u), light.radiance, reference_point);
   }
@@ -142,6 +143,7 @@ LightSet::LightSet(const Scene& scene) {
       light.p2 = mesh.positions[mesh.indices[3 * t + 2]];
       light.area = triangle_area(light.p0, light.p1, light.p2);
       if (!(light.area > 0.0f)) continue;  // a degenerate triangle emits nothing
+      light.normal = triangle_normal(light.p0, light.p1, light.p2);
       light.radiance = scene.materials[mesh.material].emission;
       lights_.push_back(light);
     }

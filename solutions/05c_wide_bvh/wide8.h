@@ -367,13 +367,30 @@ inline std::optional<BvhHit> intersect_bvh8(const void* tree, const Ray& ray, co
     return any_hit ? traverse8<true>(bvh, ray, stats, test_leaf) : traverse8<false>(bvh, ray, stats, test_leaf);
   });
 }
+
+// The short way of ReferenceTreeFunctions (closest_triangle, any_triangle): a scene's one tree.
+__attribute__((target("avx2"))) inline std::optional<BvhHit> closest_triangle_bvh8(const void* tree, const Ray& ray,
+                                                                                const TriangleColumns& columns,
+                                                                                TriangleHit& details) {
+  const Bvh8& bvh = *static_cast<const Bvh8*>(tree);
+  BvhTraversalStats uncounted;
+  return traverse8<false>(bvh, ray, uncounted, EightAtATime{bvh.primitive_order.data(), columns, &details});
+}
+
+__attribute__((target("avx2"))) inline bool any_triangle_bvh8(const void* tree, const Ray& ray,
+                                                              const TriangleColumns& columns) {
+  const Bvh8& bvh = *static_cast<const Bvh8*>(tree);
+  BvhTraversalStats uncounted;
+  return traverse8<true>(bvh, ray, uncounted, EightAtATime{bvh.primitive_order.data(), columns, nullptr}).has_value();
+}
 #endif
 
 // What raylab-reference and bench/ hand the renderer: the 8-wide tree, or nullptr where this
 // compiler or CPU family has none (then the 4-wide tree is traced).
 inline const ReferenceTreeFunctions* reference_tree_functions() {
 #if RAYLAB_REFERENCE_WIDE8
-  static const ReferenceTreeFunctions functions{&build_bvh8_if_supported, &intersect_bvh8};
+  static const ReferenceTreeFunctions functions{&build_bvh8_if_supported, &intersect_bvh8, &closest_triangle_bvh8,
+                                                &any_triangle_bvh8};
   return &functions;
 #else
   return nullptr;

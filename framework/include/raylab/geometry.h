@@ -75,6 +75,14 @@ struct ReferenceTreeFunctions {
   // As intersect_bvh4, on a tree that `build` returned.
   std::optional<BvhHit> (*intersect)(const void* tree, const Ray& ray, const PrimitiveIntersector& intersector,
                                      bool any_hit, BvhTraversalStats& stats) = nullptr;
+  // The short way, for a tree over all of a scene's triangles (SceneGeometry::intersect and
+  // occluded take it): the triangles tested from `columns` (triangle_columns of the tree's
+  // primitive_order) with stage 03's test, the same bits. closest_triangle writes the closest
+  // hit's t and barycentrics to `details`; any_triangle stops at the first hit. Neither counts
+  // its work.
+  std::optional<BvhHit> (*closest_triangle)(const void* tree, const Ray& ray, const TriangleColumns& columns,
+                                            TriangleHit& details) = nullptr;
+  bool (*any_triangle)(const void* tree, const Ray& ray, const TriangleColumns& columns) = nullptr;
 };
 
 struct TracingFunctions {
@@ -195,11 +203,11 @@ class SceneGeometry {
   const ReferenceTreeFunctions* reference_tree_functions_ = nullptr;  // with reference_trees_
   // reference_trees_, no spheres, and a tree: a query goes straight into it.
   bool only_one_tree_ = false;
-  // only_one_tree_ and hand_triangles_to_traversal_: intersect() and occluded() call the
-  // reference's traversal themselves (traverse_the_one_tree), which tests the triangles inlined
-  // and hands back the closest hit's details, and skip the records of the general queries.
-  bool straight_into_the_one_tree_ = false;
-  std::optional<BvhHit> traverse_the_one_tree(const Ray& ray, bool any_hit, TriangleHit* closest_hit) const;
+  // only_one_tree_, hand_triangles_to_traversal_ and a reference tree: intersect() and
+  // occluded() call its closest_triangle and any_triangle themselves, which test the triangles
+  // inlined and hand back the closest hit's details, and skip the records of the general queries.
+  const void* the_one_tree_ = nullptr;  // meshes_.front().reference_tree, or nullptr
+  TriangleColumns the_one_tree_columns_;  // TriangleColumns::of(meshes_.front().columns)
   // What shading needs of a hit on triangles_[triangle] with the test's details.
   SurfaceHit triangle_surface_hit(std::uint32_t triangle, const TriangleHit& details, const Ray& ray) const;
   std::vector<MeshPart> meshes_;
