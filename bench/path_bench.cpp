@@ -1,6 +1,6 @@
 // raylab-bench-path: the path tracer's error against time on the Cornell box, per strategy.
 //
-//   raylab-bench-path [--width N] [--max-spp N] [--reference-spp N] [--output DIR]
+//   raylab-bench-path [--width N] [--max-spp N] [--reference-spp N] [--repetitions N] [--output DIR]
 //
 // Every strategy estimates the same image: scenes/cornell.json at N x N, paths of at most 32
 // bounces with Russian roulette (go on with p = 0.8 from the first bounce, as GAMES101's
@@ -14,7 +14,11 @@
 // light, 40 times brighter than white, and the pixels on its edge, whose error is the light's
 // coverage, saturated white in any picture).
 // Times are the process's CPU seconds (std::clock) of each one-thread render: on a shared machine
-// they do not count the time other processes hold the core.
+// they do not count the time other processes hold the core, but such a machine still moves them by
+// 5-10% from run to run. So every render is made --repetitions times (3 by default), the
+// strategies taking turns, and each render's time is the median of its repetitions; the ratio
+// against the peer is given with its lowest and highest over the repetitions. The images of the
+// repetitions must be the same (the same seeds): the bench fails if they are not.
 //
 // The strategies (the light is sampled by area, one sample per diffuse vertex, with its shadow ray):
 //   bsdf-uniform       no light sampling: directions uniform over the hemisphere, emission
@@ -65,7 +69,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -252,13 +258,15 @@ double samples_to_reach(const std::vector<Point>& curve, double rmse) {
 
 int main(int argc, char** argv) {
   CLI::App app{"raylab-bench-path: the path tracer's error against time on the Cornell box, per strategy"};
-  int width = 128, max_spp = 64, reference_spp = 1024;
+  int width = 128, max_spp = 64, reference_spp = 1024, repetitions = 3;
   std::string output = "bench-results";
   app.add_option("--width", width, "Image width and height")->check(CLI::Range(8, 1024))->capture_default_str();
   app.add_option("--max-spp", max_spp, "Largest samples per pixel of a strategy (1, 2, 4, ... up to it)")
       ->check(CLI::Range(1, 4096))->capture_default_str();
   app.add_option("--reference-spp", reference_spp, "Samples per pixel of the reference (every core)")
       ->check(CLI::Range(16, 1 << 20))->capture_default_str();
+  app.add_option("--repetitions", repetitions, "Times each render is made (its time: the median)")
+      ->check(CLI::Range(1, 99))->capture_default_str();
   app.add_option("--output", output, "Folder for path_error.csv")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
@@ -300,30 +308,62 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(output);
     std::ofstream csv(output + "/path_error.csv");
     csv << "strategy,spp,seconds,paths_per_second,rmse\n";
-    std::printf("%-21s %5s %11s %12s %9s\n", "strategy", "spp", "CPU seconds", "paths/s", "RMSE");
-    std::vector<std::vector<Point>> curves;
-    std::vector<double> paths_per_second;
     const double pixels = static_cast<double>(width) * width;
     RenderSettings renderer = settings;  // the raylab-reference row: one thread, another seed
     renderer.threads = 1;
     renderer.seed = 2;
     renderer.track_variance = false;
-    for (const StrategyInfo& strategy : kStrategies) {
-      std::vector<Point> curve;
-      double seconds = 0.0, paths = 0.0;
-      for (int spp = 1; spp <= max_spp; spp *= 2) {
-        const Timed timed = render_strategy(scene, context, strategy, spp, renderer);
-        const double rmse = std::sqrt(std::max(0.0, mean_squared_error(timed.image, reference)));
-        curve.push_back({spp, timed.seconds, rmse});
-        seconds += timed.seconds;
+    // seconds[strategy][k][repetition] for 2^k spp; the images' errors, the same at every repetition.
+    constexpr std::size_t kStrategyCount = std::size(kStrategies);
+    std::vector<std::vector<std::vector<double>>> seconds(kStrategyCount);
+    std::vector<std::vector<double>> errors(kStrategyCount);
+    for (int repetition = 0; repetition < repetitions; ++repetition) {
+      std::printf("repetition %d of %d ...\n", repetition + 1, repetitions);
+      std::fflush(stdout);
+      for (std::size_t i = 0; i < kStrategyCount; ++i) {
+        std::size_t k = 0;
+        for (int spp = 1; spp <= max_spp; spp *= 2, ++k) {
+          const Timed timed = render_strategy(scene, context, kStrategies[i], spp, renderer);
+          const double rmse = std::sqrt(std::max(0.0, mean_squared_error(timed.image, reference)));
+          if (repetition == 0) {
+            errors[i].push_back(rmse);
+            seconds[i].emplace_back();
+          } else if (rmse != errors[i][k]) {
+            throw std::runtime_error(std::string(kStrategies[i].name) + " at " + std::to_string(spp) +
+                                     " spp: another image at repetition " + std::to_string(repetition + 1) +
+                                     " (RMSE " + std::to_string(rmse) + ", first " + std::to_string(errors[i][k]) +
+                                     "): a render must not depend on its run");
+          }
+          seconds[i][k].push_back(timed.seconds);
+        }
+      }
+    }
+    const auto median = [](std::vector<double> values) {
+      std::sort(values.begin(), values.end());
+      const std::size_t n = values.size();
+      return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    };
+    std::printf("\n%-21s %5s %11s %12s %9s   (CPU seconds: the median of %d)\n", "strategy", "spp", "CPU seconds",
+                "paths/s", "RMSE", repetitions);
+    std::vector<std::vector<Point>> curves(kStrategyCount);
+    std::vector<double> paths_per_second(kStrategyCount);                      // over the run, median times
+    std::vector<std::vector<double>> paths_per_second_each(kStrategyCount);  // over the run, per repetition
+    for (std::size_t i = 0; i < kStrategyCount; ++i) {
+      double total_seconds = 0.0, paths = 0.0;
+      std::vector<double> total_each(static_cast<std::size_t>(repetitions), 0.0);
+      for (std::size_t k = 0; k < errors[i].size(); ++k) {
+        const int spp = 1 << k;
+        const double time = median(seconds[i][k]);
+        curves[i].push_back({spp, time, errors[i][k]});
+        total_seconds += time;
         paths += pixels * spp;
-        std::printf("%-21s %5d %11.3f %12.0f %9.5f\n", strategy.name, spp, timed.seconds, pixels * spp / timed.seconds, rmse);
-        std::fflush(stdout);
-        csv << strategy.name << ',' << spp << ',' << timed.seconds << ',' << pixels * spp / timed.seconds << ',' << rmse
+        for (int r = 0; r < repetitions; ++r) total_each[static_cast<std::size_t>(r)] += seconds[i][k][static_cast<std::size_t>(r)];
+        std::printf("%-21s %5d %11.3f %12.0f %9.5f\n", kStrategies[i].name, spp, time, pixels * spp / time, errors[i][k]);
+        csv << kStrategies[i].name << ',' << spp << ',' << time << ',' << pixels * spp / time << ',' << errors[i][k]
             << '\n';
       }
-      curves.push_back(curve);
-      paths_per_second.push_back(paths / seconds);
+      paths_per_second[i] = paths / total_seconds;
+      for (const double each : total_each) paths_per_second_each[i].push_back(paths / each);
     }
 
     // The peer's error: the games101 strategy at 16 spp (read off its curve).
@@ -339,13 +379,18 @@ int main(int argc, char** argv) {
                 width, width);
     std::printf("Time to reach it at %dx%d on one thread (peer, measured on this machine: %.1f s):\n", kPeerWidth,
                 kPeerWidth, kPeerSeconds);
-    std::printf("%-21s %12s %14s %10s %14s\n", "strategy", "paths/s", "spp needed", "seconds", "peer / this");
+    std::printf("%-21s %12s %14s %10s %14s %17s\n", "strategy", "paths/s", "spp needed", "seconds", "peer / this",
+                "lowest - highest");
     const double peer_pixels = static_cast<double>(kPeerWidth) * kPeerWidth;
     for (std::size_t i = 0; i < curves.size(); ++i) {
       const double spp = samples_to_reach(curves[i], peer_rmse);
-      const double seconds = peer_pixels * spp / paths_per_second[i];
-      std::printf("%-21s %12.0f %14.2f %10.2f %13.1fx\n", kStrategies[i].name, paths_per_second[i], spp, seconds,
-                  spp > 0 ? kPeerSeconds / seconds : 0.0);
+      // peer / this at a rate of paths per second: the peer's seconds over this strategy's
+      const auto against_peer = [&](double rate) { return spp > 0 ? kPeerSeconds / (peer_pixels * spp / rate) : 0.0; };
+      const auto [lowest, highest] =
+          std::minmax_element(paths_per_second_each[i].begin(), paths_per_second_each[i].end());
+      std::printf("%-21s %12.0f %14.2f %10.2f %13.1fx %8.1fx - %4.1fx\n", kStrategies[i].name, paths_per_second[i], spp,
+                  peer_pixels * spp / paths_per_second[i], against_peer(paths_per_second[i]), against_peer(*lowest),
+                  against_peer(*highest));
     }
     std::printf("(peer: %.0f paths/s on one thread)\n\nCSV written to %s/path_error.csv\n",
                 peer_pixels * kPeerSamples / kPeerSeconds, output.c_str());

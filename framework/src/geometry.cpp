@@ -5,7 +5,6 @@
 // (geometry_build.cpp builds the trees.)
 #include "geometry_query.h"
 
-
 namespace raylab {
 
 SceneGeometry::Triangle::Triangle(const glm::vec3& p0_, const glm::vec3& p1_, const glm::vec3& p2_,
