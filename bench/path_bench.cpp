@@ -43,7 +43,9 @@
 // taken as the games101 strategy's at 16 spp (with jittered pixel positions: the peer shoots every
 // sample through the pixel centre, which adds aliasing; leaving that out favours the peer), and the
 // time each strategy needs to reach that error at 784x784 is (784^2 x samples needed) / (its paths per
-// second on one thread), the samples needed read off its own curve (log-log interpolation).
+// second on one thread), the samples needed read off its own curve (log-log interpolation). So is
+// the time to reach RMSE 0.2, 0.1, 0.05 and 0.025, the peer's beside (GAMES101's estimator at the
+// peer's paths per second).
 // Written to DIR/path_error.csv; plot it with tools/plot_path_error.py.
 #include "raylab/bsdf.h"
 #include "raylab/geometry.h"
@@ -392,8 +394,36 @@ int main(int argc, char** argv) {
                   peer_pixels * spp / paths_per_second[i], against_peer(paths_per_second[i]), against_peer(*lowest),
                   against_peer(*highest));
     }
-    std::printf("(peer: %.0f paths/s on one thread)\n\nCSV written to %s/path_error.csv\n",
-                peer_pixels * kPeerSamples / kPeerSeconds, output.c_str());
+    const double peer_paths_per_second = peer_pixels * kPeerSamples / kPeerSeconds;
+    std::printf("(peer: %.0f paths/s on one thread)\n", peer_paths_per_second);
+
+    // The time to each error level: seconds at 784x784 on one thread, from each curve's samples
+    // needed (read between its measured points only: "-" outside them) and its paths per second.
+    // The peer's row: GAMES101's estimator's samples at its measured rate.
+    const double levels[] = {0.2, 0.1, 0.05, 0.025};
+    const auto within = [](const std::vector<Point>& curve, double rmse) {
+      return !curve.empty() && rmse <= curve.front().rmse && rmse >= curve.back().rmse;
+    };
+    std::printf("\nSeconds to each RMSE (as measured at %dx%d) at %dx%d on one thread:\n%-21s", width, width,
+                kPeerWidth, kPeerWidth, "strategy");
+    for (const double level : levels) std::printf(" %9.3f", level);
+    std::printf("\n%-21s", "peer (GAMES101)");
+    for (const double level : levels) {
+      if (within(games101, level))
+        std::printf(" %9.2f", peer_pixels * samples_to_reach(games101, level) / peer_paths_per_second);
+      else
+        std::printf(" %9s", "-");
+    }
+    for (std::size_t i = 0; i < curves.size(); ++i) {
+      std::printf("\n%-21s", kStrategies[i].name);
+      for (const double level : levels) {
+        if (within(curves[i], level))
+          std::printf(" %9.2f", peer_pixels * samples_to_reach(curves[i], level) / paths_per_second[i]);
+        else
+          std::printf(" %9s", "-");
+      }
+    }
+    std::printf("\n\nCSV written to %s/path_error.csv\n", output.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "raylab-bench-path: %s\n", e.what());
     return 1;
