@@ -16,9 +16,11 @@
 // Times are the process's CPU seconds (std::clock) of each one-thread render: on a shared machine
 // they do not count the time other processes hold the core, but such a machine still moves them by
 // 5-10% from run to run. So every render is made --repetitions times (3 by default), the
-// strategies taking turns, and each render's time is the median of its repetitions; the ratio
-// against the peer is given with its lowest and highest over the repetitions. The images of the
-// repetitions must be the same (the same seeds): the bench fails if they are not.
+// strategies taking turns: each render's time (the CSV, the curves) is the median of its
+// repetitions, a strategy's paths per second the median of its repetitions' rates, and the ratio
+// against the peer comes with its lowest and highest over the repetitions. Every repetition of a
+// render must have the first one's error to the last bit (the same seeds make the same image):
+// the bench fails if not.
 //
 // The strategies (the light is sampled by area, one sample per diffuse vertex, with its shadow ray):
 //   bsdf-uniform       no light sampling: directions uniform over the hemisphere, emission
@@ -336,7 +338,8 @@ int main(int argc, char** argv) {
                                      " (RMSE " + std::to_string(rmse) + ", first " + std::to_string(errors[i][k]) +
                                      "): a render must not depend on its run");
           }
-          seconds[i][k].push_back(timed.seconds);
+          // (A render too short for the clock counts as one tick, so that no rate is infinite.)
+          seconds[i][k].push_back(std::max(timed.seconds, 1.0 / CLOCKS_PER_SEC));
         }
       }
     }
@@ -348,24 +351,25 @@ int main(int argc, char** argv) {
     std::printf("\n%-21s %5s %11s %12s %9s   (CPU seconds: the median of %d)\n", "strategy", "spp", "CPU seconds",
                 "paths/s", "RMSE", repetitions);
     std::vector<std::vector<Point>> curves(kStrategyCount);
-    std::vector<double> paths_per_second(kStrategyCount);                      // over the run, median times
-    std::vector<std::vector<double>> paths_per_second_each(kStrategyCount);  // over the run, per repetition
+    // Paths per second over a repetition's renders of the strategy, each repetition's, and their median.
+    std::vector<std::vector<double>> paths_per_second_each(kStrategyCount);
+    std::vector<double> paths_per_second(kStrategyCount);
     for (std::size_t i = 0; i < kStrategyCount; ++i) {
-      double total_seconds = 0.0, paths = 0.0;
-      std::vector<double> total_each(static_cast<std::size_t>(repetitions), 0.0);
+      double paths = 0.0;
+      std::vector<double> seconds_each(static_cast<std::size_t>(repetitions), 0.0);
       for (std::size_t k = 0; k < errors[i].size(); ++k) {
         const int spp = 1 << k;
         const double time = median(seconds[i][k]);
         curves[i].push_back({spp, time, errors[i][k]});
-        total_seconds += time;
         paths += pixels * spp;
-        for (int r = 0; r < repetitions; ++r) total_each[static_cast<std::size_t>(r)] += seconds[i][k][static_cast<std::size_t>(r)];
-        std::printf("%-21s %5d %11.3f %12.0f %9.5f\n", kStrategies[i].name, spp, time, pixels * spp / time, errors[i][k]);
+        for (std::size_t r = 0; r < seconds_each.size(); ++r) seconds_each[r] += seconds[i][k][r];
+        std::printf("%-21s %5d %11.3f %12.0f %9.5f\n", kStrategies[i].name, spp, time, pixels * spp / time,
+                    errors[i][k]);
         csv << kStrategies[i].name << ',' << spp << ',' << time << ',' << pixels * spp / time << ',' << errors[i][k]
             << '\n';
       }
-      paths_per_second[i] = paths / total_seconds;
-      for (const double each : total_each) paths_per_second_each[i].push_back(paths / each);
+      for (const double each : seconds_each) paths_per_second_each[i].push_back(paths / each);
+      paths_per_second[i] = median(paths_per_second_each[i]);
     }
 
     // The peer's error: the games101 strategy at 16 spp (read off its curve).
@@ -373,36 +377,39 @@ int main(int argc, char** argv) {
     double peer_rmse = 0.0;
     for (const Point& point : games101)
       if (point.samples == kPeerSamples) peer_rmse = point.rmse;
-    if (peer_rmse <= 0.0) {
-      std::printf("\n(--max-spp below %d: no comparison with the peer's %d-spp render)\n", kPeerSamples, kPeerSamples);
-      return 0;
-    }
-    std::printf("\nThe peer's error: GAMES101's estimator at %d spp, RMSE %.5f at %dx%d.\n", kPeerSamples, peer_rmse,
-                width, width);
-    std::printf("Time to reach it at %dx%d on one thread (peer, measured on this machine: %.1f s):\n", kPeerWidth,
-                kPeerWidth, kPeerSeconds);
-    std::printf("%-21s %12s %14s %10s %14s %17s\n", "strategy", "paths/s", "spp needed", "seconds", "peer / this",
-                "lowest - highest");
     const double peer_pixels = static_cast<double>(kPeerWidth) * kPeerWidth;
-    for (std::size_t i = 0; i < curves.size(); ++i) {
-      const double spp = samples_to_reach(curves[i], peer_rmse);
-      // peer / this at a rate of paths per second: the peer's seconds over this strategy's
-      const auto against_peer = [&](double rate) { return spp > 0 ? kPeerSeconds / (peer_pixels * spp / rate) : 0.0; };
-      const auto [lowest, highest] =
-          std::minmax_element(paths_per_second_each[i].begin(), paths_per_second_each[i].end());
-      std::printf("%-21s %12.0f %14.2f %10.2f %13.1fx %8.1fx - %4.1fx\n", kStrategies[i].name, paths_per_second[i], spp,
-                  peer_pixels * spp / paths_per_second[i], against_peer(paths_per_second[i]), against_peer(*lowest),
-                  against_peer(*highest));
-    }
     const double peer_paths_per_second = peer_pixels * kPeerSamples / kPeerSeconds;
-    std::printf("(peer: %.0f paths/s on one thread)\n", peer_paths_per_second);
+    if (peer_rmse > 0.0) {
+      std::printf("\nThe peer's error: GAMES101's estimator at %d spp, RMSE %.5f at %dx%d.\n", kPeerSamples, peer_rmse,
+                  width, width);
+      std::printf("Time to reach it at %dx%d on one thread (peer, measured on this machine: %.1f s):\n", kPeerWidth,
+                  kPeerWidth, kPeerSeconds);
+      std::printf("%-21s %12s %14s %10s %14s %17s\n", "strategy", "paths/s", "spp needed", "seconds", "peer / this",
+                  "lowest - highest");
+      for (std::size_t i = 0; i < curves.size(); ++i) {
+        const double spp = samples_to_reach(curves[i], peer_rmse);
+        // peer / this at a rate of paths per second: the peer's seconds over this strategy's
+        const auto against_peer = [&](double rate) {
+          return spp > 0 ? kPeerSeconds / (peer_pixels * spp / rate) : 0.0;
+        };
+        const auto [lowest, highest] =
+            std::minmax_element(paths_per_second_each[i].begin(), paths_per_second_each[i].end());
+        std::printf("%-21s %12.0f %14.2f %10.2f %13.1fx %8.1fx - %4.1fx\n", kStrategies[i].name, paths_per_second[i],
+                    spp, peer_pixels * spp / paths_per_second[i], against_peer(paths_per_second[i]),
+                    against_peer(*lowest), against_peer(*highest));
+      }
+      std::printf("(peer: %.0f paths/s on one thread; paths/s: the median of the repetitions')\n",
+                  peer_paths_per_second);
+    } else {
+      std::printf("\n(--max-spp below %d: no comparison with the peer's %d-spp render)\n", kPeerSamples, kPeerSamples);
+    }
 
     // The time to each error level: seconds at 784x784 on one thread, from each curve's samples
     // needed (read between its measured points only: "-" outside them) and its paths per second.
-    // The peer's row: GAMES101's estimator's samples at its measured rate.
+    // The peer's row: GAMES101's estimator's samples at the peer's measured rate.
     const double levels[] = {0.2, 0.1, 0.05, 0.025};
     const auto within = [](const std::vector<Point>& curve, double rmse) {
-      return !curve.empty() && rmse <= curve.front().rmse && rmse >= curve.back().rmse;
+      return curve.size() > 1 && rmse <= curve.front().rmse && rmse >= curve.back().rmse;
     };
     std::printf("\nSeconds to each RMSE (as measured at %dx%d) at %dx%d on one thread:\n%-21s", width, width,
                 kPeerWidth, kPeerWidth, "strategy");

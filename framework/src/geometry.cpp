@@ -5,6 +5,8 @@
 // (geometry_build.cpp builds the trees.)
 #include "geometry_query.h"
 
+#include <limits>
+
 namespace raylab {
 
 SceneGeometry::Triangle::Triangle(const glm::vec3& p0_, const glm::vec3& p1_, const glm::vec3& p2_,
@@ -16,13 +18,31 @@ SceneGeometry::Triangle::Triangle(const glm::vec3& p0_, const glm::vec3& p1_, co
   normal = has_area ? unnormalised / length : glm::vec3(0.0f);
 }
 
+std::optional<BvhHit> SceneGeometry::traverse_the_4_wide_tree(const Ray& ray, bool any_hit,
+                                                              TriangleHit* closest_hit) const {
+  // The traversal tests the triangles itself (their columns) where it can; the calls below are
+  // there for a leaf test that would not.
+  HitRecord record;
+  Query query{this, &record, any_hit, triangles_.data(), 0};
+  PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
+  intersector.triangles = triangle_edges_.data();
+  intersector.columns = the_one_tree_columns_;
+  intersector.closest_triangle_hit = closest_hit;
+  BvhTraversalStats stats;
+  return intersect_bvh4(meshes_.front().wide, ray, intersector, any_hit, stats);
+}
+
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
-  if (the_one_tree_) {
-    TriangleHit details;
+  if (straight_into_the_one_tree_) {
+    TriangleHit details{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
     const std::optional<BvhHit> hit =
-        reference_tree_functions_->closest_triangle(the_one_tree_, ray, the_one_tree_columns_, details);
+        the_one_reference_tree_
+            ? reference_tree_functions_->closest_triangle(the_one_reference_tree_, ray, the_one_tree_columns_, details)
+            : traverse_the_4_wide_tree(ray, /*any_hit=*/false, &details);
     if (!hit || hit->primitive >= triangles_.size()) return std::nullopt;
-    return triangle_surface_hit(hit->primitive, details, ray);
+    // The details are of the hit returned (unless a 4-wide leaf test without them ran: then the
+    // general query below).
+    if (details.t_hit == hit->t_hit) return triangle_surface_hit(hit->primitive, details, ray);
   }
   // Find the closest t first (shrinking t_max after every hit), then fill the record once.
   HitRecord record;
@@ -70,7 +90,10 @@ SurfaceHit SceneGeometry::triangle_surface_hit(std::uint32_t triangle, const Tri
 }
 
 bool SceneGeometry::occluded(const Ray& ray) const {
-  if (the_one_tree_) return reference_tree_functions_->any_triangle(the_one_tree_, ray, the_one_tree_columns_);
+  if (straight_into_the_one_tree_)
+    return the_one_reference_tree_
+               ? reference_tree_functions_->any_triangle(the_one_reference_tree_, ray, the_one_tree_columns_)
+               : traverse_the_4_wide_tree(ray, /*any_hit=*/true, nullptr).has_value();
   HitRecord record;
   Query query{this, &record, /*any_hit=*/true};
   return intersect_objects(ray, query).has_value();

@@ -83,10 +83,12 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
       if (!mesh.wide.nodes.empty() || mesh.reference_tree)
         mesh.columns = triangle_columns(triangle_edges_.data() + mesh.first_triangle, mesh.bvh.primitive_order);
   }
-  if (only_one_tree_ && hand_triangles_to_traversal_ && meshes_.front().reference_tree &&
-      !meshes_.front().columns.empty() && reference_tree_functions_->closest_triangle &&
-      reference_tree_functions_->any_triangle) {
-    the_one_tree_ = meshes_.front().reference_tree.get();
+  straight_into_the_one_tree_ =
+      only_one_tree_ && hand_triangles_to_traversal_ && !meshes_.front().columns.empty() &&
+      (!meshes_.front().reference_tree ||
+       (reference_tree_functions_->closest_triangle && reference_tree_functions_->any_triangle));
+  if (straight_into_the_one_tree_) {
+    the_one_reference_tree_ = meshes_.front().reference_tree.get();
     the_one_tree_columns_ = TriangleColumns::of(meshes_.front().columns);
   }
 }

@@ -110,6 +110,10 @@ class SceneGeometry {
   explicit SceneGeometry(const Scene& scene, Acceleration acceleration = Acceleration::Bvh,
                          TriangleTest triangle_test = TriangleTest::MollerTrumbore,
                          const TracingFunctions& tracing = {});
+  // Not copied: it keeps pointers into its own arrays (a move keeps them valid).
+  SceneGeometry(const SceneGeometry&) = delete;
+  SceneGeometry& operator=(const SceneGeometry&) = delete;
+  SceneGeometry(SceneGeometry&&) = default;
 
   // The closest hit in (ray.t_min, ray.t_max), or nullopt.
   std::optional<SurfaceHit> intersect(const Ray& ray) const;
@@ -203,11 +207,15 @@ class SceneGeometry {
   const ReferenceTreeFunctions* reference_tree_functions_ = nullptr;  // with reference_trees_
   // reference_trees_, no spheres, and a tree: a query goes straight into it.
   bool only_one_tree_ = false;
-  // only_one_tree_, hand_triangles_to_traversal_ and a reference tree: intersect() and
-  // occluded() call its closest_triangle and any_triangle themselves, which test the triangles
-  // inlined and hand back the closest hit's details, and skip the records of the general queries.
-  const void* the_one_tree_ = nullptr;  // meshes_.front().reference_tree, or nullptr
-  TriangleColumns the_one_tree_columns_;  // TriangleColumns::of(meshes_.front().columns)
+  // only_one_tree_ and hand_triangles_to_traversal_: intersect() and occluded() go straight into
+  // the one tree, whose traversal tests the triangles inlined (from the_one_tree_columns_) and
+  // hands back the closest hit's details, and skip the records of the general queries: the
+  // reference tree's ReferenceTreeFunctions::closest_triangle and any_triangle, or where there is
+  // none (a CPU without AVX2, a compiler without the 8-wide tree) the 4-wide tree of stage 05c.
+  bool straight_into_the_one_tree_ = false;
+  const void* the_one_reference_tree_ = nullptr;  // meshes_.front().reference_tree, or nullptr
+  TriangleColumns the_one_tree_columns_;           // of meshes_.front().columns
+  std::optional<BvhHit> traverse_the_4_wide_tree(const Ray& ray, bool any_hit, TriangleHit* closest_hit) const;
   // What shading needs of a hit on triangles_[triangle] with the test's details.
   SurfaceHit triangle_surface_hit(std::uint32_t triangle, const TriangleHit& details, const Ray& ray) const;
   std::vector<MeshPart> meshes_;

@@ -32,7 +32,7 @@ struct Light {
   glm::vec3 position{0.0f};   // Point: where it is
   glm::vec3 intensity{0.0f};  // Point: W/sr
   glm::vec3 p0{0.0f}, p1{0.0f}, p2{0.0f};  // Triangle: its corners, world space
-  glm::vec3 normal{0.0f};                // Triangle: triangle_normal(p0, p1, p2), the side it emits from
+  glm::vec3 normal{0.0f};  // Triangle: triangle_normal(p0, p1, p2); LightSet sets it (a Light made by hand must too)
   Sphere sphere;                         // Sphere
   glm::vec3 radiance{0.0f};  // Triangle and Sphere: emitted radiance
   float area = 0.0f;         // Triangle and Sphere
