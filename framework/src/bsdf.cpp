@@ -29,39 +29,40 @@ float bsdf_pdf(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, c
   return microfacet_pdf(frame.to_local(wo), frame.to_local(wi), bsdf.alpha);
 }
 
-std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo,
-                                        float u_lobe, glm::vec2 u) {
+namespace {
+
+// bsdf_sample_f's work: fills `sample` (as constructed) and returns true, or returns false
+// where there is no sample.
+bool sample_f_into(BsdfSample& sample, const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, float u_lobe,
+                   glm::vec2 u) {
   const float cos_o = glm::dot(normal, wo);
-  if (cos_o == 0.0f || !std::isfinite(cos_o)) return std::nullopt;
+  if (cos_o == 0.0f || !std::isfinite(cos_o)) return false;
   const glm::vec3 facing_normal = cos_o > 0.0f ? normal : -normal;  // on wo's side
-  BsdfSample sample;
   switch (bsdf.kind) {
     case BsdfKind::Lambertian: {
       const glm::vec3 local = sample_cosine_hemisphere(u);
-      if (!(local.z > 0.0f)) return std::nullopt;  // on the rim: no density
+      if (!(local.z > 0.0f)) return false;  // on the rim: no density
       sample.wi = glm::normalize(Frame(facing_normal).to_world(local));
       const float cos_i = glm::dot(facing_normal, sample.wi);
-      if (!(cos_i > 0.0f)) return std::nullopt;
+      if (!(cos_i > 0.0f)) return false;
       sample.f = lambertian_f(bsdf.albedo);
       sample.pdf = cosine_hemisphere_pdf(local);
-      if (!(sample.pdf > 0.0f) || !std::isfinite(sample.pdf)) return std::nullopt;
-      return sample;
+      return sample.pdf > 0.0f && std::isfinite(sample.pdf);
     }
     case BsdfKind::Microfacet: {
       const Frame frame(facing_normal);
       const glm::vec3 local_wo = frame.to_local(wo);
-      if (!(local_wo.z > 0.0f)) return std::nullopt;  // rounding at a grazing wo
+      if (!(local_wo.z > 0.0f)) return false;  // rounding at a grazing wo
       const glm::vec3 local_wi = sample_microfacet_wi(local_wo, u, bsdf.alpha);
-      if (!(local_wi.z > 0.0f)) return std::nullopt;  // mirrored below the surface: no sample
+      if (!(local_wi.z > 0.0f)) return false;  // mirrored below the surface: no sample
       sample.wi = glm::normalize(frame.to_world(local_wi));
-      if (!(glm::dot(facing_normal, sample.wi) > 0.0f)) return std::nullopt;
+      if (!(glm::dot(facing_normal, sample.wi) > 0.0f)) return false;
       // f and pdf of the direction returned, as bsdf_f and bsdf_pdf compute them (the same bits:
       // near a shiny lobe's peak a rounding of wi changes D by more than float precision).
       const glm::vec3 returned_wi = frame.to_local(sample.wi);
       sample.f = microfacet_f(local_wo, returned_wi, bsdf.alpha, bsdf.reflectance);
       sample.pdf = microfacet_pdf(local_wo, returned_wi, bsdf.alpha);
-      if (!(sample.pdf > 0.0f) || !std::isfinite(sample.pdf)) return std::nullopt;
-      return sample;
+      return sample.pdf > 0.0f && std::isfinite(sample.pdf);
     }
     case BsdfKind::Mirror: {
       sample.wi = glm::normalize(reflect(-wo, facing_normal));
@@ -70,7 +71,7 @@ std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& norma
       sample.f = bsdf.reflectance * (weight / cos_i);
       sample.pdf = 1.0f;
       sample.is_specular = true;
-      return sample;
+      return true;
     }
     case BsdfKind::Dielectric: {
       const glm::vec3 incident = -wo;
@@ -81,7 +82,7 @@ std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& norma
         sample.pdf = reflectance;
       } else {
         const glm::vec3 refracted = refract(incident, normal, bsdf.ior);
-        if (refracted == glm::vec3(0.0f)) return std::nullopt;  // cannot happen: F = 1 there
+        if (refracted == glm::vec3(0.0f)) return false;  // cannot happen: F = 1 there
         sample.wi = glm::normalize(refracted);
         const bool entering = cos_o > 0.0f;  // wo outside: the light comes from inside
         const float eta_ratio = entering ? 1.0f / bsdf.ior : bsdf.ior;  // eta_incident / eta_transmitted along the ray
@@ -90,11 +91,21 @@ std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& norma
         sample.pdf = transmittance;
       }
       sample.is_specular = true;
-      if (!(sample.pdf > 0.0f)) return std::nullopt;
-      return sample;
+      return sample.pdf > 0.0f;
     }
   }
-  return std::nullopt;
+  return false;
+}
+
+}  // namespace
+
+std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo,
+                                        float u_lobe, glm::vec2 u) {
+  // Filled where the caller reads it (one named return value), not copied there: see
+  // SceneGeometry::intersect.
+  std::optional<BsdfSample> result(std::in_place);
+  if (!sample_f_into(*result, bsdf, normal, wo, u_lobe, u)) result.reset();
+  return result;
 }
 
 Bsdf bsdf_of(const Material& material, const glm::vec3& diffuse_color) {

@@ -5,6 +5,7 @@
 // (geometry_build.cpp builds the trees.)
 #include "geometry_query.h"
 
+#include <cmath>
 #include <limits>
 
 namespace raylab {
@@ -33,28 +34,46 @@ std::optional<BvhHit> SceneGeometry::traverse_the_4_wide_tree(const Ray& ray, bo
 }
 
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
+  // Every return hands back `result`, so that the hit is written where the caller reads it
+  // (one named return value) and not copied: a copy reads back in 16-byte pieces what was
+  // just written in 4- and 8-byte ones, which the processor cannot forward from its stores,
+  // and the next ray waits for it (docs/performance.md, "Stores read back whole").
+  std::optional<SurfaceHit> result;
   if (straight_into_the_one_tree_) {
     TriangleHit details{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
-    const std::optional<BvhHit> hit =
-        the_one_reference_tree_
-            ? reference_tree_functions_->closest_triangle(the_one_reference_tree_, ray, the_one_tree_columns_, details)
-            : traverse_the_4_wide_tree(ray, /*any_hit=*/false, &details);
-    if (!hit || hit->primitive >= triangles_.size()) return std::nullopt;
-    // The details are of the hit returned (unless a 4-wide leaf test without them ran: then the
-    // general query below).
-    if (details.t_hit == hit->t_hit) return triangle_surface_hit(hit->primitive, details, ray);
+    if (the_one_reference_tree_) {
+      std::uint32_t triangle = 0;
+      if (!reference_tree_functions_->closest_triangle(the_one_reference_tree_, ray, the_one_tree_columns_, triangle,
+                                                       details) ||
+          triangle >= triangles_.size())
+        return result;
+      if (!std::isnan(details.t_hit)) {  // written, as it must be (else the general query below)
+        fill_triangle_surface_hit(result.emplace(), triangle, details, ray);
+        return result;
+      }
+    } else {
+      const std::optional<BvhHit> hit = traverse_the_4_wide_tree(ray, /*any_hit=*/false, &details);
+      if (!hit || hit->primitive >= triangles_.size()) return result;
+      // The details are of the hit returned (unless a 4-wide leaf test without them ran: then
+      // the general query below).
+      if (details.t_hit == hit->t_hit) {
+        fill_triangle_surface_hit(result.emplace(), hit->primitive, details, ray);
+        return result;
+      }
+    }
   }
   // Find the closest t first (shrinking t_max after every hit), then fill the record once.
   HitRecord record;
   Query query{this, &record, /*any_hit=*/false};
   const std::optional<float> t_hit = intersect_objects(ray, query);
-  if (!t_hit || record.kind == Kind::None) return std::nullopt;
+  if (!t_hit || record.kind == Kind::None) return result;
   if (record.kind == Kind::Triangle) {
     TriangleHit details = record.triangle_hit;
     details.t_hit = *t_hit;
-    return triangle_surface_hit(record.index, details, ray);
+    fill_triangle_surface_hit(result.emplace(), record.index, details, ray);
+    return result;
   }
-  SurfaceHit hit;
+  SurfaceHit& hit = result.emplace();
   hit.t_hit = *t_hit;
   const Sphere& sphere = spheres_[record.index];
   // Re-project the hit point onto the surface: its error is then a few ulps (pbrt-v4 6.8.5).
@@ -63,16 +82,15 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
   hit.point_error = gamma_bound(5) * glm::abs(hit.point) + gamma_bound(5) * glm::abs(sphere.center);
   hit.geometric_normal = sphere.faces_inward ? -outward : outward;
   hit.material = sphere.material;
-  return hit;
+  return result;
 }
 
-SurfaceHit SceneGeometry::triangle_surface_hit(std::uint32_t triangle, const TriangleHit& details,
-                                               const Ray& ray) const {
+void SceneGeometry::fill_triangle_surface_hit(SurfaceHit& hit, std::uint32_t triangle, const TriangleHit& details,
+                                              const Ray& ray) const {
   const Triangle& tri = triangles_[triangle];
   const TriangleMesh& mesh = scene_.meshes[tri.mesh];
   const float b1 = details.barycentric_b1, b2 = details.barycentric_b2;
   const float b0 = 1.0f - b1 - b2;
-  SurfaceHit hit;
   hit.t_hit = details.t_hit;
   // The point from barycentrics is far more accurate than origin + t * direction.
   hit.point = b0 * tri.p0 + b1 * tri.p1 + b2 * tri.p2;
@@ -86,7 +104,6 @@ SurfaceHit SceneGeometry::triangle_surface_hit(std::uint32_t triangle, const Tri
     hit.has_texcoord = true;
   }
   hit.material = mesh.material;
-  return hit;
 }
 
 bool SceneGeometry::occluded(const Ray& ray) const {

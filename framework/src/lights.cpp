@@ -12,19 +12,23 @@ namespace {
 // Turns a point sampled by area into a sample of direction from `reference_point`.
 std::optional<LightSample> area_sample(const ShapeSample& shape, const glm::vec3& radiance,
                                        const glm::vec3& reference_point) {
+  std::optional<LightSample> result;  // every return hands it back: see SceneGeometry::intersect
   const glm::vec3 to_light = shape.point - reference_point;
   const float distance_squared = glm::dot(to_light, to_light);
-  if (!(distance_squared > 0.0f) || !(shape.pdf_area > 0.0f)) return std::nullopt;
-  LightSample sample;
-  sample.distance = std::sqrt(distance_squared);
-  sample.direction = to_light / sample.distance;
-  const float cos_light = -glm::dot(shape.normal, sample.direction);
-  if (!(cos_light > 0.0f)) return std::nullopt;  // seen edge-on (no solid angle) or from the back (dark)
-  sample.pdf = area_pdf_to_solid_angle(shape.pdf_area, sample.distance, cos_light);  // stage 08
-  if (!std::isfinite(sample.pdf)) return std::nullopt;
+  if (!(distance_squared > 0.0f) || !(shape.pdf_area > 0.0f)) return result;
+  const float distance = std::sqrt(distance_squared);
+  const glm::vec3 direction = to_light / distance;
+  const float cos_light = -glm::dot(shape.normal, direction);
+  if (!(cos_light > 0.0f)) return result;  // seen edge-on (no solid angle) or from the back (dark)
+  const float pdf = area_pdf_to_solid_angle(shape.pdf_area, distance, cos_light);  // stage 08
+  if (!std::isfinite(pdf)) return result;
+  LightSample& sample = result.emplace();
   sample.radiance = radiance;
+  sample.direction = direction;
+  sample.distance = distance;
+  sample.pdf = pdf;
   sample.point = shape.point;
-  return sample;
+  return result;
 }
 
 // The solid-angle density of reaching a point at distance t along unit `direction` on a

@@ -369,16 +369,21 @@ inline std::optional<BvhHit> intersect_bvh8(const void* tree, const Ray& ray, co
 }
 
 // The short way of ReferenceTreeFunctions (closest_triangle, any_triangle): a scene's one tree.
-__attribute__((target("avx2"))) inline std::optional<BvhHit> closest_triangle_bvh8(const void* tree, const Ray& ray,
-                                                                                const TriangleColumns& columns,
-                                                                                TriangleHit& details) {
+// Flattened: the traversal is inlined, so that its hit is not handed back through memory
+// (docs/performance.md, "Stores read back whole").
+__attribute__((target("avx2"), flatten)) inline bool closest_triangle_bvh8(const void* tree, const Ray& ray,
+                                                                       const TriangleColumns& columns,
+                                                                       std::uint32_t& triangle, TriangleHit& details) {
   const Bvh8& bvh = *static_cast<const Bvh8*>(tree);
   BvhTraversalStats uncounted;
-  return traverse8<false>(bvh, ray, uncounted, EightAtATime{bvh.primitive_order.data(), columns, &details});
+  const std::optional<BvhHit> hit =
+      traverse8<false>(bvh, ray, uncounted, EightAtATime{bvh.primitive_order.data(), columns, &details});
+  if (hit) triangle = hit->primitive;
+  return hit.has_value();
 }
 
-__attribute__((target("avx2"))) inline bool any_triangle_bvh8(const void* tree, const Ray& ray,
-                                                              const TriangleColumns& columns) {
+__attribute__((target("avx2"), flatten)) inline bool any_triangle_bvh8(const void* tree, const Ray& ray,
+                                                                       const TriangleColumns& columns) {
   const Bvh8& bvh = *static_cast<const Bvh8*>(tree);
   BvhTraversalStats uncounted;
   return traverse8<true>(bvh, ray, uncounted, EightAtATime{bvh.primitive_order.data(), columns, nullptr}).has_value();

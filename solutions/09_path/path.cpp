@@ -43,7 +43,13 @@ glm::vec3 path_radiance(const RenderContext& context, const Ray& camera_ray, Sam
     throughput *= sample->f * (std::fabs(glm::dot(normal, sample->wi)) / sample->pdf);
     if (throughput == glm::vec3(0.0f)) return radiance;
     count_emission = sample->is_specular;
-    ray = spawn_ray(*hit, sample->wi);
+    // ray = spawn_ray(*hit, sample->wi), written out: assigning a whole Ray makes GCC copy it in
+    // 16-byte pieces that the processor cannot forward from the 4- and 8-byte stores that made it,
+    // and the next traversal waits for them (docs/performance.md, "Stores read back whole").
+    ray.origin = offset_ray_origin(*hit, sample->wi);
+    ray.direction = sample->wi;
+    ray.t_min = 0.0f;
+    ray.t_max = kInfinity;
   }
 }
 

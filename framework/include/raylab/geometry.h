@@ -77,11 +77,11 @@ struct ReferenceTreeFunctions {
                                      bool any_hit, BvhTraversalStats& stats) = nullptr;
   // The short way, for a tree over all of a scene's triangles (SceneGeometry::intersect and
   // occluded take it): the triangles tested from `columns` (triangle_columns of the tree's
-  // primitive_order) with stage 03's test, the same bits. closest_triangle writes the closest
-  // hit's t and barycentrics to `details`; any_triangle stops at the first hit. Neither counts
-  // its work.
-  std::optional<BvhHit> (*closest_triangle)(const void* tree, const Ray& ray, const TriangleColumns& columns,
-                                            TriangleHit& details) = nullptr;
+  // primitive_order) with stage 03's test, the same bits. closest_triangle returns whether a
+  // triangle was hit and writes the closest one's index to `triangle` and its t and barycentrics
+  // to `details`; any_triangle stops at the first hit. Neither counts its work.
+  bool (*closest_triangle)(const void* tree, const Ray& ray, const TriangleColumns& columns, std::uint32_t& triangle,
+                           TriangleHit& details) = nullptr;
   bool (*any_triangle)(const void* tree, const Ray& ray, const TriangleColumns& columns) = nullptr;
 };
 
@@ -216,8 +216,10 @@ class SceneGeometry {
   const void* the_one_reference_tree_ = nullptr;  // meshes_.front().reference_tree, or nullptr
   TriangleColumns the_one_tree_columns_;           // of meshes_.front().columns
   std::optional<BvhHit> traverse_the_4_wide_tree(const Ray& ray, bool any_hit, TriangleHit* closest_hit) const;
-  // What shading needs of a hit on triangles_[triangle] with the test's details.
-  SurfaceHit triangle_surface_hit(std::uint32_t triangle, const TriangleHit& details, const Ray& ray) const;
+  // What shading needs of a hit on triangles_[triangle] with the test's details, written into
+  // `hit` (a SurfaceHit as constructed: no texture coordinates).
+  void fill_triangle_surface_hit(SurfaceHit& hit, std::uint32_t triangle, const TriangleHit& details,
+                                 const Ray& ray) const;
   std::vector<MeshPart> meshes_;
   Bvh objects_bvh_;  // over spheres_ then meshes_; empty: test every object
   // The stub stage ("05_bvh" or "04_box") that made us fall back to testing every primitive;
