@@ -83,7 +83,10 @@ float area_pdf_to_solid_angle(float pdf_area, float distance, float cos_at_light
 //                             (raylab/shading.h, raylab/geometry.h)
 //   sampler.get_1d(), sampler.get_2d()   your random numbers
 // RETURN f * radiance * |cos(theta at the surface)| / (pdf * probability), or black when the
-// shadow ray is blocked.
+// shadow ray is blocked. The shadow ray starts at offset_ray_origin(hit, direction), points at
+// the light's point itself (direction = point - origin, so t = 1 is that point) and stops just
+// short of it, t_max = 1 - 1e-4: an area light is scene geometry, so a ray that reaches its point
+// (or t_max = infinity) hits the light itself and every estimate is black (handout section 5).
 glm::vec3 estimate_direct_light(const RenderContext& context, const SurfaceHit& hit, const Bsdf& bsdf,
                                 const glm::vec3& wo, Sampler& sampler) {
   (void)context;

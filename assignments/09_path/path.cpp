@@ -16,7 +16,10 @@
 //                                     samples a new direction wi with f and pdf (nullopt: stop)
 //   estimate_direct_light(context, *hit, bsdf, wo, sampler)   stage 08, for diffuse surfaces
 //   spawn_ray(*hit, wi)               the next ray, starting just off the surface
-//   context.max_depth                 the most bounces after the camera ray (--max-depth)
+//   context.max_depth                 the most bounces after the camera ray (--max-depth): the
+//                                     surfaces at depth 0, 1, ..., max_depth all count (emission
+//                                     and direct light); the path stops after the one at
+//                                     depth == max_depth, without sampling a next direction
 //   context.continue_probability(depth, throughput)   p in (0, 1]: the chance to go on after
 //                                     this surface. depth: bounces so far (0 at the camera ray's
 //                                     hit); throughput: the weight that reached this surface,

@@ -14,6 +14,7 @@
 // rounding, which a correct implementation never fails.
 #include "grading.h"
 #include "07_sampling_calls.h"
+#include "earlier_stages.h"
 #include "support.h"
 
 #include "raylab/error.h"
@@ -681,13 +682,23 @@ void hint_pdf(Warp warp, const PdfData& pdf, const PdfComparison& c) {
   }
 }
 
-void expect_pdf_integrates_to_one(Warp warp) {
-  const MessageArg section = handout_section(warp);
-  if (warp == Warp::UniformTriangle) {
-    // Triangles of every size and shape: pdf x area must be 1 on each.
+// Points outside the unit disk, where uniform_disk_pdf must be 0.
+const std::vector<glm::vec3> kOutsideDisk = {{1.05f, 0, 0}, {0, -1.5f, 0}, {2.0f, 2.0f, 0}, {-0.8f, 0.8f, 0}};
+
+// Triangles of every size and shape, on which uniform_triangle_pdf x area must be 1, and the
+// student's values there (fetched once).
+struct TrianglePdfCases {
+  std::vector<glm::vec3> corners;  // three per triangle
+  std::vector<float> areas, values;
+  bool integrates_to_one(std::size_t i) const {
+    const double integral = static_cast<double>(values[i]) * areas[i];
+    return std::isfinite(integral) && std::fabs(integral - 1.0) <= 1e-3;
+  }
+};
+const TrianglePdfCases& triangle_pdf_cases() {
+  static const TrianglePdfCases cases = [] {  // a stub throws: nothing kept, asked again next time
+    TrianglePdfCases t;
     Pcg32 random(kSeed, testkit::stream_of(std::string(kStage) + "/triangles"));
-    std::vector<glm::vec3> corners;
-    std::vector<float> areas;
     for (int i = 0; i < 64; ++i) {
       const float size = std::pow(10.0f, random.uniform(-2.0f, 2.0f));
       const glm::vec3 p0 = testkit::random_vec3(random, -10.0f, 10.0f);
@@ -695,10 +706,22 @@ void expect_pdf_integrates_to_one(Warp warp) {
       const glm::vec3 p2 = p0 + size * testkit::random_vec3(random, -1.0f, 1.0f);
       const float area = 0.5f * glm::length(glm::cross(p1 - p0, p2 - p0));
       if (!(area > 1e-6f * size * size)) continue;
-      corners.insert(corners.end(), {p0, p1, p2});
-      areas.push_back(area);
+      t.corners.insert(t.corners.end(), {p0, p1, p2});
+      t.areas.push_back(area);
     }
-    const std::vector<float> values = warp_pdfs(warp, corners);
+    t.values = warp_pdfs(Warp::UniformTriangle, t.corners);
+    return t;
+  }();
+  return cases;
+}
+
+void expect_pdf_integrates_to_one(Warp warp) {
+  const MessageArg section = handout_section(warp);
+  if (warp == Warp::UniformTriangle) {
+    const TrianglePdfCases& cases = triangle_pdf_cases();
+    const std::vector<glm::vec3>& corners = cases.corners;
+    const std::vector<float>& areas = cases.areas;
+    const std::vector<float>& values = cases.values;
     int failures = 0;
     bool returns_area = true, constant = true;
     const double first_ratio = static_cast<double>(values[0]) * areas[0];
@@ -706,7 +729,7 @@ void expect_pdf_integrates_to_one(Warp warp) {
       const double integral = static_cast<double>(values[i]) * areas[i];
       returns_area = returns_area && std::fabs(values[i] - areas[i]) <= 1e-3f * areas[i];
       constant = constant && std::fabs(integral - first_ratio) <= 1e-3 * std::fabs(first_ratio);
-      if (std::isfinite(integral) && std::fabs(integral - 1.0) <= 1e-3) continue;
+      if (cases.integrates_to_one(i)) continue;
       if (++failures <= 2)
         add_failure({MessageId::sampling_failure_triangle_pdf,
                      {{"p0", gtest_text(corners[3 * i])},
@@ -741,7 +764,7 @@ void expect_pdf_integrates_to_one(Warp warp) {
   }
   if (warp == Warp::UniformDisk) {
     // Outside the disk the density is 0.
-    const std::vector<glm::vec3> outside = {{1.05f, 0, 0}, {0, -1.5f, 0}, {2.0f, 2.0f, 0}, {-0.8f, 0.8f, 0}};
+    const std::vector<glm::vec3>& outside = kOutsideDisk;
     const std::vector<float> values = warp_pdfs(warp, outside);
     for (std::size_t i = 0; i < outside.size(); ++i)
       if (values[i] != 0.0f) {
@@ -754,23 +777,42 @@ void expect_pdf_integrates_to_one(Warp warp) {
   if (failed) hint_pdf(warp, pdf, c);
 }
 
+// The density must be > 0 wherever the warp goes (the renderer divides by it): the student's pdf
+// at up to 2000 of the samples in the warp's domain (none for the triangle, whose pdf takes no
+// point), with their indices in the samples.
+struct PdfAtSamples {
+  std::vector<glm::vec3> arguments;
+  std::vector<std::size_t> which;
+  std::vector<float> values;
+  bool all_positive() const {
+    for (const float v : values)
+      if (!(v > 0.0f) || !std::isfinite(v)) return false;
+    return true;
+  }
+};
+PdfAtSamples pdf_at_samples(Warp warp, const WarpData& data) {
+  PdfAtSamples at;
+  for (std::size_t i = 0; i < data.samples.size() && at.which.size() < 2000; i += 97) {
+    const glm::vec3& s = data.samples[i];
+    if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z) || domain_problem(warp, s)) continue;
+    if (warp == Warp::CosineHemisphere && s.z < 1e-3f) continue;  // at the rim the density itself goes to 0
+    at.which.push_back(i);
+    if (warp == Warp::UniformTriangle) continue;
+    at.arguments.push_back(s);
+  }
+  if (warp != Warp::UniformTriangle && !at.arguments.empty()) at.values = warp_pdfs(warp, at.arguments);
+  return at;
+}
+
 void expect_pdf_matches_samples(Warp warp) {
   const WarpData& data = data_of(warp);
   const PdfData& pdf = pdf_data_of(warp);
   const PdfComparison c = compare_pdf(warp, pdf);
-  // The density must be > 0 wherever the warp goes (the renderer divides by it).
-  std::vector<glm::vec3> arguments;
-  std::vector<std::size_t> which;
-  for (std::size_t i = 0; i < data.samples.size() && which.size() < 2000; i += 97) {
-    const glm::vec3& s = data.samples[i];
-    if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z) || domain_problem(warp, s)) continue;
-    if (warp == Warp::CosineHemisphere && s.z < 1e-3f) continue;  // at the rim the density itself goes to 0
-    which.push_back(i);
-    if (warp == Warp::UniformTriangle) continue;
-    arguments.push_back(s);
-  }
-  if (warp != Warp::UniformTriangle && !arguments.empty()) {
-    const std::vector<float> values = warp_pdfs(warp, arguments);
+  const PdfAtSamples at = pdf_at_samples(warp, data);
+  const std::vector<glm::vec3>& arguments = at.arguments;
+  const std::vector<std::size_t>& which = at.which;
+  if (!at.values.empty()) {
+    const std::vector<float>& values = at.values;
     for (std::size_t k = 0; k < values.size(); ++k)
       if (!(values[k] > 0.0f) || !std::isfinite(values[k])) {
         add_hint({MessageId::sampling_pdf_zero_at_sample,
@@ -862,5 +904,47 @@ GRADED_TEST(kStage, Stage07Sampling, UniformTriangleFollowsIntendedDensity, 2) {
 GRADED_TEST(kStage, Stage07Sampling, UniformTrianglePdfIntegratesToOne, 1) { expect_pdf_integrates_to_one(Warp::UniformTriangle); }
 GRADED_TEST(kStage, Stage07Sampling, UniformTrianglePdfMatchesSamples, 2) { expect_pdf_matches_samples(Warp::UniformTriangle); }
 
+// Stage 07's verdict on a function, for later stages (earlier_stages.h): the checks of its tests,
+// without their failures and hints. A sampler: its samples finite, in their domain and following
+// the intended density (SamplesInDomain, FollowsIntendedDensity). A pdf: integrating to 1 (and 0
+// outside the disk), > 0 at the samples, and describing them (PdfIntegratesToOne,
+// PdfMatchesSamples), or else equal to the intended density (then the samples are wrong, not it).
+bool sampler_passes(Warp warp) {
+  const WarpData& data = data_of(warp);
+  return !data.first_non_finite && !data.first_out_of_domain && chi_square_against(data, data.expected).passed;
+}
+
+bool pdf_passes(Warp warp) {
+  const PdfData& pdf = pdf_data_of(warp);
+  const PdfComparison c = compare_pdf(warp, pdf);
+  if (warp == Warp::UniformTriangle) {
+    const TrianglePdfCases& cases = triangle_pdf_cases();
+    for (std::size_t i = 0; i < cases.values.size(); ++i)
+      if (!cases.integrates_to_one(i)) return false;
+  } else if (!(std::fabs(pdf.integral - 1.0) <= 1e-3) || c.non_finite || c.negative) {
+    return false;
+  }
+  if (warp == Warp::UniformDisk)
+    for (const float value : warp_pdfs(warp, kOutsideDisk))
+      if (value != 0.0f) return false;
+  if (c.equals_intended) return true;
+  const WarpData& data = data_of(warp);
+  return pdf_at_samples(warp, data).all_positive() && chi_square_against(data, pdf.expected).passed;
+}
+
 }  // namespace
+
+bool sampling_function_passes(const std::string& function) {
+  for (const Warp warp : kWarps) {
+    const bool sampler = function == warp_sample_function(warp);
+    if (!sampler && function != warp_pdf_function(warp)) continue;
+    try {
+      return sampler ? sampler_passes(warp) : pdf_passes(warp);
+    } catch (const NotImplemented&) {
+      return false;
+    }
+  }
+  return true;  // not a function of stage 07
+}
+
 }  // namespace raylab::grading

@@ -15,10 +15,19 @@
 //   larger of the student's and the reference's variance (so a correct strategy of higher
 //   variance passes too), and a picture of the z-scores.
 //
-// False failures: the 3 furnace t-tests and the 2 x 64 x 3 region z-tests share
+//   A t-test cannot reject a wrong estimator whose weights grow along the path (1 / pi missing,
+//   with roulette): its spread is as huge as its mean. So each furnace's pixels must also spread
+//   no more than a correct path tracer's can (path_support.h: furnace_spread_test, by Markov's
+//   inequality from a bound on the variance of every correct variant).
+//   A failing test whose path runs a function of stage 07 or 08 that fails its own stage's tests
+//   names that function first (earlier_stages.h), and then no mistake of this stage's own.
+//
+// False failures: the 3 furnace t-tests, their 3 spread tests and the 2 x 64 x 3 region z-tests
+// share
 // kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected);
 // autograder-path-false-failures (autograder/tools/path_false_failures.cpp) measures it over
 // many seeds.
+#include "earlier_stages.h"
 #include "grading.h"
 #include "path_support.h"
 #include "support.h"
@@ -26,7 +35,6 @@
 #include "raylab/error.h"
 #include "raylab/image.h"
 #include "raylab/math.h"
-#include "raylab/stages/08_direct_light.h"
 #include "raylab/testkit/statistics.h"
 
 #include <algorithm>
@@ -61,12 +69,13 @@ const bool kRegistered = register_stage(kStage, [] {
 // ---- Furnaces ------------------------------------------------------------------------------
 
 // What a path tracer that makes a mistake computes in a furnace of emission 1: the camera's
-// hit counts `first_emission`, every vertex k = 0..max_depth (reached with weight r^k) adds its
+// hit counts `first_emission`, every vertex k = 0..max_depth + depth_offset (reached with weight r^k) adds its
 // direct light d, and vertices after the first add `later_emission` each.
 struct Model {
   std::function<double(const Furnace&)> bounce_weight;  // r
   double direct_factor = 1.0;                            // d = direct_factor * a
   double first_emission = 1.0, later_emission = 0.0;
+  int depth_offset = 0;  // -1: the vertex at depth == max_depth left out
 };
 struct Mistake {
   MessageId hint;
@@ -76,11 +85,14 @@ struct Mistake {
   // by p again and again) are left out, and a mean within 10% of the model (or 4 standard errors)
   // fits.
   bool wild_weights = false;
+  // The mistake is an earlier stage's (1 / pi missing from stage 08's lambertian_f): named also
+  // when that stage's function fails its own tests.
+  bool earlier_stage = false;
 };
 double furnace_value(const Model& model, const Furnace& f) {
   const double r = model.bounce_weight(f), d = model.direct_factor * f.albedo;
   double sum = model.first_emission, reach = 1.0;
-  for (int k = 0; k <= f.max_depth; ++k) {
+  for (int k = 0; k <= f.max_depth + model.depth_offset; ++k) {
     sum += reach * d + (k > 0 ? reach * model.later_emission : 0.0);
     reach *= r;
   }
@@ -92,8 +104,9 @@ const std::vector<Mistake>& mistakes() {
       {MessageId::path_roulette_not_divided, {[](const Furnace& f) { return f.albedo * f.roulette; }}},
       {MessageId::path_emission_twice, {[](const Furnace& f) { return f.albedo; }, 1.0, 1.0, 1.0}},
       {MessageId::path_light_black, {[](const Furnace& f) { return f.albedo; }, 1.0, 0.0, 0.0}},
+      {MessageId::path_one_surface_short, {[](const Furnace& f) { return f.albedo; }, 1.0, 1.0, 0.0, -1}},
       {MessageId::path_missing_cosine, {[](const Furnace& f) { return 2.0 * f.albedo; }}, true},
-      {MessageId::path_missing_inverse_pi, {[](const Furnace& f) { return kPiD * f.albedo; }, kPiD}, true},
+      {MessageId::path_missing_inverse_pi, {[](const Furnace& f) { return kPiD * f.albedo; }, kPiD}, true, true},
   };
   return models;
 }
@@ -128,18 +141,24 @@ bool fits(const Mistake& mistake) {
   return true;
 }
 
-// Names the stage-08 functions the path tracer uses that are wrong (the framework's BSDF and
-// light sampling call them).
-void hint_stage08() {
-  try {
-    const float f = lambertian_f(glm::vec3(1.0f)).x;
-    if (!(std::fabs(f - 1.0f / kPi) <= 1e-5f)) add_hint({MessageId::path_stage08_wrong, {{"function", "lambertian_f"}}});
-    const float pdf = area_pdf_to_solid_angle(0.5f, 2.0f, 0.5f);
-    if (!(std::fabs(pdf - 4.0f) <= 1e-4f))
-      add_hint({MessageId::path_stage08_wrong, {{"function", "area_pdf_to_solid_angle"}}});
-  } catch (const NotImplemented& e) {
-    add_hint({MessageId::path_stage08_wrong, {{"function", e.function()}}});
-  }
+// A furnace is right when its pixels pass both the t-test of their mean and the test of their
+// spread (path_support.h: furnace_spread_test).
+bool furnace_right(int index) {
+  const FurnaceRender& render = furnace_render(index);
+  if (render.not_finite || render.pixel_means.size() < 2) return false;
+  const double exact = furnace_value(kCorrect, kFurnaces[index]);
+  return furnace_mean_test(render.pixel_means, exact, kLevel).passed &&
+         furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel).passed;
+}
+
+// The hints of a failing test: the earlier stages' functions it runs that fail their own tests;
+// then the fitted models of the furnaces, but only those of an earlier stage's mistake when an
+// earlier function fails (the furnaces cannot tell this stage's mistakes from that one).
+bool hint_mistakes(const std::vector<std::string>& earlier_functions) {
+  const bool earlier_fails = hint_failing_earlier_functions(kStage, earlier_functions);
+  for (const Mistake& mistake : mistakes())
+    if ((mistake.earlier_stage || !earlier_fails) && fits(mistake)) add_hint({mistake.hint, {}});
+  return earlier_fails;
 }
 
 void expect_furnace(int index) {
@@ -148,13 +167,13 @@ void expect_furnace(int index) {
     add_not_finite(render.not_finite, render.pixel_count());
     return;
   }
-  const testkit::MeanTestResult result =
-      furnace_mean_test(render.pixel_means, furnace_value(kCorrect, kFurnaces[index]), kLevel);
-  if (result.passed) return;
-  add_furnace_failure(index, result);
-  for (const Mistake& mistake : mistakes())
-    if (fits(mistake)) add_hint({mistake.hint, {}});
-  hint_stage08();
+  const double exact = furnace_value(kCorrect, kFurnaces[index]);
+  const testkit::MeanTestResult result = furnace_mean_test(render.pixel_means, exact, kLevel);
+  const FurnaceSpreadResult spread = furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel);
+  if (result.passed && spread.passed) return;
+  if (!result.passed) add_furnace_failure(index, result);
+  if (!spread.passed) add_furnace_spread_failure(index, spread, exact, kLevel);
+  hint_mistakes(kFurnaceFunctions);
 }
 
 GRADED_TEST(kStage, Stage09Path, FurnaceWithoutRoulette, 8) { expect_furnace(0); }
@@ -168,15 +187,13 @@ void expect_cornell(int scene_index) {
       expect_cornell_matches_reference(kStage, scene_index, false, test_seed(kStudentSeed), kLevel);
   if (!test || test->failures == 0) return;
   // The furnaces name the mistake when they can.
-  for (const Mistake& mistake : mistakes())
-    if (fits(mistake)) add_hint({mistake.hint, {}});
+  if (hint_mistakes(kCornellFunctions)) return;
   if (scene_index == 1) {
     // Only the specular box: emission after mirrors and glass.
     bool furnaces_right = true;
-    for (int i = 0; i < 3 && furnaces_right; ++i) furnaces_right = fits(kCorrect, i);
+    for (int i = 0; i < 3 && furnaces_right; ++i) furnaces_right = furnace_right(i);
     if (furnaces_right) add_hint({MessageId::path_specular_wrong, {}});
   }
-  hint_stage08();
 }
 
 GRADED_TEST(kStage, Stage09Path, CornellBoxImageMatchesReference, 10) { expect_cornell(0); }

@@ -15,11 +15,13 @@
 //   z-tested region by region against stage 09's converged reference (path_support.h), as in
 //   stage 09: an ordinary path tracer without MIS passes these and loses the scripted tests.
 //
-// False failures: the 2 furnace t-tests and the 2 x 64 x 3 region z-tests share
+// False failures: the 2 furnace t-tests, their 2 spread tests (path_support.h) and the 2 x 64 x 3
+// region z-tests share
 // kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected: mis_test_level()); the
 // exact tests have tolerances that a correct implementation never exceeds.
 // autograder-false-failures --stage 09b_mis measures it.
 #include "09b_mis_calls.h"
+#include "earlier_stages.h"
 #include "grader_geometry.h"
 #include "grading.h"
 #include "path_support.h"
@@ -399,10 +401,13 @@ void expect_furnace(int index) {
     add_not_finite(render.not_finite, render.pixel_count());
     return;
   }
-  const testkit::MeanTestResult result = furnace_mean_test(render.pixel_means, furnace_exact(kFurnaces[index]), kLevel);
-  if (result.passed) return;
-  add_furnace_failure(index, result);
-  hint_biased();
+  const double exact = furnace_exact(kFurnaces[index]);
+  const testkit::MeanTestResult result = furnace_mean_test(render.pixel_means, exact, kLevel);
+  const FurnaceSpreadResult spread = furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel);
+  if (result.passed && spread.passed) return;
+  if (!result.passed) add_furnace_failure(index, result);
+  if (!spread.passed) add_furnace_spread_failure(index, spread, exact, kLevel);
+  if (!hint_failing_earlier_functions(kStage, kFurnaceFunctions)) hint_biased();
 }
 
 GRADED_TEST(kStage, Stage09bMis, FurnaceWithoutRoulette, 2) { expect_furnace(0); }
@@ -412,7 +417,7 @@ void expect_cornell(int scene_index) {
   const std::optional<RegionTest> test =
       expect_cornell_matches_reference(kStage, scene_index, true, test_seed(210 + static_cast<std::uint64_t>(scene_index)),
                                        kLevel, true);
-  if (test && test->failures > 0) hint_biased();
+  if (test && test->failures > 0 && !hint_failing_earlier_functions(kStage, kCornellFunctions)) hint_biased();
 }
 
 GRADED_TEST(kStage, Stage09bMis, CornellBoxImageMatchesReference, 3) { expect_cornell(0); }

@@ -60,6 +60,48 @@ void add_furnace_failure(int index, const testkit::MeanTestResult& result) {
                 {"level", gtest_text(result.significance_level)}}});
 }
 
+double furnace_variance_bound(const Furnace& furnace) {
+  const double a = furnace.albedo;
+  const double m = (4.0 / 3.0) * a * a / std::min(furnace.roulette, a);
+  // E[(1 + 2 a S)^2] with S = sum_k T_k: 1 + 4 a E[S] + 4 a^2 E[S^2].
+  double sum = 0, sum_squared = 0;
+  for (int j = 0; j <= furnace.max_depth; ++j) {
+    sum += std::pow(a, j);
+    for (int k = 0; k <= furnace.max_depth; ++k)
+      sum_squared += std::pow(m, std::min(j, k)) * std::pow(a, std::abs(k - j));
+  }
+  const PathRenderRequest request = furnace_request(0, 0);
+  return (1.0 + 4.0 * a * sum + 4.0 * a * a * sum_squared) / request.samples_per_pixel;
+}
+
+FurnaceSpreadResult furnace_spread_test(const std::vector<double>& pixel_means, const Furnace& furnace, double expected,
+                                        double level) {
+  FurnaceSpreadResult result;
+  result.limit = furnace_variance_bound(furnace) / level;
+  if (pixel_means.empty()) return result;
+  for (const double v : pixel_means) {
+    result.mean_square += (v - expected) * (v - expected);
+    result.largest = std::max(result.largest, v);
+  }
+  result.mean_square /= static_cast<double>(pixel_means.size());
+  result.passed = result.mean_square <= result.limit;
+  return result;
+}
+
+void add_furnace_spread_failure(int index, const FurnaceSpreadResult& result, double expected, double level) {
+  const Furnace& f = kFurnaces[index];
+  add_failure({MessageId::path_failure_furnace_spread,
+               {{"albedo", gtest_text(f.albedo)},
+                {"roulette", gtest_text(f.roulette)},
+                {"depth", std::to_string(f.max_depth)},
+                {"expected", gtest_text(expected)},
+                {"spread", gtest_text(result.mean_square)},
+                {"largest", gtest_text(result.largest)},
+                {"bound", gtest_text(furnace_variance_bound(f))},
+                {"limit", gtest_text(result.limit)},
+                {"level", gtest_text(level)}}});
+}
+
 void add_not_finite(std::size_t count, std::size_t total) {
   add_failure({MessageId::path_failure_not_finite, {{"count", std::to_string(count)}, {"total", std::to_string(total)}}});
   add_hint({MessageId::path_not_finite, {{"count", std::to_string(count)}, {"total", std::to_string(total)}}});

@@ -71,14 +71,54 @@ constexpr double kFurnaceTolerance = 1e-3;
 testkit::MeanTestResult furnace_mean_test(const std::vector<double>& pixel_means, double expected, double level);
 // Adds the failure of furnace `index`'s test (`result`, against furnace_exact).
 void add_furnace_failure(int index, const testkit::MeanTestResult& result);
+
+// The t-test alone cannot reject a wrong estimator whose weights grow along the path (1 / pi
+// missing with roulette: a bounce weight of pi a / p = 3.14 each time a path goes on): its mean is
+// huge but so is its spread, and a few pixels of millions make the standard error as large as the
+// mean. A correct path tracer's spread is bounded, so a second test of each furnace rejects
+// pixels that spread far more than any correct estimator's can.
+//   The bound: a correct path's value is at most 1 (the emission the camera sees) + 2 a T_k at each
+// vertex k (its direct light a T_k, and with MIS as much again from the BSDF sample), where the
+// throughput T_k is a product of independent bounce weights W of mean a and second moment at most
+// m = (4/3) a^2 / min(p, a): the uniform hemisphere's weight 2 a cos(theta) (second moment
+// 4 a^2 / 3; cosine sampling's is a^2) after a roulette of probability p (the furnace's, or about a
+// for a roulette by the throughput). So a pixel mean of `spp` paths has a variance of at most
+// E[(1 + 2 a sum_k T_k)^2] / spp, computed exactly from E[T_j T_k] = m^min(j,k) a^|k-j|.
+double furnace_variance_bound(const Furnace& furnace);
+//   The test: the pixels' mean squared deviation from `expected` (the exact answer) has the
+// expectation Var(pixel) <= bound, so by Markov's inequality it exceeds bound / `level` with a
+// chance of at most `level`, whatever the distribution of the pixels (heavy tails included). A
+// wrong estimator is caught by its mean alone: the mean square is at least (mean - expected)^2.
+struct FurnaceSpreadResult {
+  bool passed = true;
+  double mean_square = 0;  // of the pixels' deviations from `expected`
+  double largest = 0;      // the largest pixel
+  double limit = 0;        // bound / level: the test fails above it
+};
+FurnaceSpreadResult furnace_spread_test(const std::vector<double>& pixel_means, const Furnace& furnace, double expected,
+                                        double level);
+// Adds the failure of furnace `index`'s spread test.
+void add_furnace_spread_failure(int index, const FurnaceSpreadResult& result, double expected, double level);
 // Adds the failure and the hint for `count` of `total` pixels not finite.
 void add_not_finite(std::size_t count, std::size_t total);
 
-// The stage's statistical tests: 3 furnace t-tests and the region z-tests of both boxes.
-constexpr int kPathStatisticalTests = 3 + 2 * kRegionTestsPerScene;
+// The functions of stages 07 and 08 that a path tracer runs through the framework
+// (earlier_stages.h): in the furnaces (a sphere light) and in the Cornell boxes (a quad light: two
+// triangles), for the diffuse BSDF, its samples and the light's samples.
+inline const std::vector<std::string> kFurnaceFunctions = {"lambertian_f", "area_pdf_to_solid_angle",
+                                                           "sample_cosine_hemisphere", "cosine_hemisphere_pdf",
+                                                           "sample_uniform_sphere", "uniform_sphere_pdf"};
+inline const std::vector<std::string> kCornellFunctions = {"lambertian_f", "area_pdf_to_solid_angle",
+                                                           "sample_cosine_hemisphere", "cosine_hemisphere_pdf",
+                                                           "sample_uniform_triangle", "uniform_triangle_pdf"};
+
+// The stage's statistical tests: 3 furnace t-tests, their 3 spread tests and the region z-tests
+// of both boxes.
+constexpr int kPathStatisticalTests = 3 + 3 + 2 * kRegionTestsPerScene;
 double path_test_level();  // each test's level: the stage's 1 in 1,000, Sidak-corrected
-// Stage 09b's: 2 furnace t-tests (kFurnaces[0] and [1]) and the region z-tests of both boxes.
-constexpr int kMisStatisticalTests = 2 + 2 * kRegionTestsPerScene;
+// Stage 09b's: 2 furnace t-tests (kFurnaces[0] and [1]), their 2 spread tests and the region
+// z-tests of both boxes.
+constexpr int kMisStatisticalTests = 2 + 2 + 2 * kRegionTestsPerScene;
 double mis_test_level();
 
 // The region z-tests of a Cornell render: per 4x4 region and channel, z = (yours - reference) /

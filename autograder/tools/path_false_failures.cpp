@@ -1,7 +1,7 @@
 // Measures how often stage 09's statistical tests fail the reference solution by bad luck: the
-// furnace t-tests and the Cornell region z-tests of autograder/suites/09_path_test.cpp, with
-// the same settings and the same reference data, rendered with N seeds other than the graded
-// one. The design rate is 1 in 1,000 for the whole stage; also prints how many single region
+// furnace t-tests, their spread tests and the Cornell region z-tests of
+// autograder/suites/09_path_test.cpp, with the same settings and the same reference data,
+// rendered with N seeds other than the graded one. The design rate is 1 in 1,000 for the whole stage; also prints how many single region
 // tests pass |z| = 3 and 4, and how many furnace t-statistics pass |t| = 3 and 4, against the
 // normal distribution's share, to show the tails.
 //   autograder-path-false-failures --seeds 200
@@ -49,13 +49,17 @@ int main(int argc, char** argv) {
   // almost no noise, so there they show float rounding instead).
   testkit::RunningMoments furnace_t[3], furnace_deviation[3];
   long long furnace_beyond_3[3] = {0, 0, 0}, furnace_beyond_4[3] = {0, 0, 0};
+  // The spread tests: each furnace's largest mean squared deviation as a share of its limit.
+  double furnace_spread_share[3] = {0, 0, 0};
   for (int seed = 1; seed <= seeds; ++seed) {
     bool failed = false;
     for (int f = 0; f < 3; ++f) {
       const FurnaceRender render = render_furnace(f, 1000003ull * seed + f, false);
       const double exact = furnace_exact(kFurnaces[f]);
       const testkit::MeanTestResult test = furnace_mean_test(render.pixel_means, exact, level);
-      if (render.not_finite || !test.passed) {
+      const FurnaceSpreadResult spread = furnace_spread_test(render.pixel_means, kFurnaces[f], exact, level);
+      furnace_spread_share[f] = std::max(furnace_spread_share[f], spread.mean_square / spread.limit);
+      if (render.not_finite || !test.passed || !spread.passed) {
         ++furnace_failures;
         failed = true;
       }
@@ -86,13 +90,13 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "\n");
   const double normal_3 = 2.0 * (1.0 - testkit::normal_cdf(3.0)), normal_4 = 2.0 * (1.0 - testkit::normal_cdf(4.0));
   if (furnaces_only) {
-    std::printf("09_path furnaces of the reference over %d seeds: %lld of %d t-tests failed (level %.3g each)\n", seeds,
+    std::printf("09_path furnaces of the reference over %d seeds: %lld of %d failed their t-test or spread test (level %.3g each)\n", seeds,
                 furnace_failures, 3 * seeds, level);
   } else {
     std::printf("09_path false failures of the reference over %d seeds: %lld gradings failed (design: at most %.4g "
                 "per grading, %.3g expected)\n",
                 seeds, stage_failures, testkit::kGraderFalseFailureRate, testkit::kGraderFalseFailureRate * seeds);
-    std::printf("  furnace t-tests failed: %lld of %d; region z-tests failed: %lld of %lld (level %.3g each)\n",
+    std::printf("  furnace t-tests or spread tests failed: %lld of %d; region z-tests failed: %lld of %lld (level %.3g each)\n",
                 furnace_failures, 3 * seeds, region_failures, region_tests, level);
     std::printf("  region |z| > 3: %lld of %lld (normal: %.1f); |z| > 4: %lld (normal: %.2f)\n", beyond_3, region_tests,
                 normal_3 * static_cast<double>(region_tests), beyond_4, normal_4 * static_cast<double>(region_tests));
@@ -104,6 +108,7 @@ int main(int argc, char** argv) {
                 f, kFurnaces[f].albedo, kFurnaces[f].roulette, kFurnaces[f].max_depth, furnace_deviation[f].mean(),
                 furnace_t[f].mean(), std::sqrt(furnace_t[f].variance()), furnace_beyond_3[f], furnace_t[f].count(),
                 normal_3 * count, furnace_beyond_4[f], normal_4 * count);
+    std::printf("    spread test: the largest mean squared deviation was %.3g of its limit\n", furnace_spread_share[f]);
   }
   return 0;
 }

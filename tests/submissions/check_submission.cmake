@@ -10,7 +10,8 @@ cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
 # Every run also checks: a results.json (and an index.html) planted before grading does not survive, the score table
 # shows one total and it is results.json's, a time-out is paid once, no stage process is left.
 # ONLY_LOSES (optional regex: the only tests of EXPECT_STAGE that may lose points), FORBID (optional
-# regex the output must not match).
+# regex the output must not match), LOSES (optional regex: the "stage: Test" names that must lose
+# points; at least one test matches).
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
@@ -140,6 +141,22 @@ foreach(i RANGE ${last})
   endif()
 endforeach()
 
+if(LOSES)
+  set(lost_count 0)
+  foreach(i RANGE ${last})
+    string(JSON name GET "${results}" tests ${i} name)
+    if(name MATCHES "${LOSES}")
+      math(EXPR lost_count "${lost_count} + 1")
+      string(JSON max_score GET "${results}" tests ${i} max_score)
+      if(score_of_${name} EQUAL max_score)
+        list(APPEND problems "${name} kept its ${max_score} points, but the mistake must lose them")
+      endif()
+    endif()
+  endforeach()
+  if(lost_count EQUAL 0)
+    list(APPEND problems "no test matches LOSES '${LOSES}'")
+  endif()
+endif()
 foreach(stage IN LISTS stages)
   set(earned ${earned_${stage}})
   set(max ${max_${stage}})

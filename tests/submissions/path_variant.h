@@ -24,6 +24,7 @@ struct PathVariant {
   bool emission_at_camera_hit = true;     // false: the light black when seen directly
   bool cosine = true;                     // false: the cosine missing from the bounce weight
   bool pdf_from_bsdf_pdf = false;         // true: divides by bsdf_pdf (0 for mirrors and glass)
+  bool one_surface_short = false;         // true: a loop depth < max_depth (the last surface left out)
   // Correct variants.
   bool uniform_hemisphere = false;        // diffuse bounces sampled uniformly (pdf 1 / (2 pi))
   bool throughput_roulette = false;       // roulette by the throughput, p = min(1, max channel)
@@ -36,6 +37,7 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
   Ray ray = camera_ray;
   bool previous_specular = true;  // the camera counts as specular: its hit's emission is seen
   for (int depth = 0;; ++depth) {
+    if (v.one_surface_short && depth >= context.max_depth) return radiance;
     const std::optional<SurfaceHit> hit = context.geometry.intersect(ray);
     if (!hit) return radiance + throughput * scene.background;
     const Material& material = scene.materials[hit->material];
