@@ -26,7 +26,32 @@
 #include <optional>
 #include <string_view>
 
-int raylab_autograder_main(int argc, char** argv, const char* description, const char* description_zh) {
+namespace {
+
+// The stage files (under `stage_folder`, e.g. <kit>/assignments) changed after `server` (the stage
+// server, which links them) was built: a build that failed, or none since the edit, leaves the
+// old stage server, which grades the old code. Files that cannot be read are left out.
+std::vector<std::string> stage_files_newer_than(const std::filesystem::path& server,
+                                                const std::filesystem::path& stage_folder) {
+  std::vector<std::string> newer;
+  std::error_code error;
+  const auto built = std::filesystem::last_write_time(server, error);
+  if (error) return newer;
+  for (const raylab::StageDescription& stage : raylab::stage_table())
+    for (std::string_view file : stage.files) {
+      const std::filesystem::path path = stage_folder / std::string(file);
+      const auto written = std::filesystem::last_write_time(path, error);
+      if (error || written <= built) continue;
+      const std::string shown = (stage_folder.filename() / std::string(file)).generic_string();
+      if (std::find(newer.begin(), newer.end(), shown) == newer.end()) newer.push_back(shown);
+    }
+  return newer;
+}
+
+}  // namespace
+
+int raylab_autograder_main(int argc, char** argv, const char* description, const char* description_zh,
+                           const char* stage_folder) {
   using namespace raylab::grading;
   // --help and the options' descriptions in the run's language: --lang, read before the
   // options are parsed, else the environment. (CLI11's own words in an error stay English.)
@@ -140,6 +165,14 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   try {
     if (options.server_path.empty())
       options.server_path = default_stage_server_path();
+    if (stage_folder) {
+      const std::vector<std::string> newer = stage_files_newer_than(options.server_path, stage_folder);
+      if (!newer.empty()) {
+        std::string files;
+        for (const std::string& file : newer) files += (files.empty() ? "" : ", ") + file;
+        std::cerr << render({MessageId::cli_stage_code_newer, {{"files", files}}}) << "\n";
+      }
+    }
     return run_supervisor(options);
   } catch (const std::exception& e) {
     std::cerr << render({MessageId::cli_could_not_run, {{"error", e.what()}}}) << "\n";
