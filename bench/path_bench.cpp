@@ -39,7 +39,10 @@
 //                      (at 1 spp it shoots through each pixel's centre, as the renderer does)
 //   raylab-reference-auto  the same with --roulette auto: roulette by the path's throughput from
 //                      the third surface on (RenderContext::continue_probability) instead of 0.8
-//                      from the first; not an estimator of the peer's, the renderer's fastest
+//                      from the first; not an estimator of the peer's
+//   raylab-reference-by-noise  the same with --spp-by-noise: the samples per pixel are the average,
+//                      2 in every pixel and the rest where its neighbours' were noisiest (render.h,
+//                      allot_samples_by_noise); the renderer's fastest to a given error
 // The peer row: GAMES101 assignment 7 as a student completed it, 784x784 at 16 spp, one thread, on
 // this machine: 31.8 s (1,436 s as shipped, a new random_device and mt19937 per number). Its error is
 // taken as the games101 strategy's at 16 spp (with jittered pixel positions: the peer shoots every
@@ -88,7 +91,9 @@ constexpr float kRoulette = 0.8f;
 constexpr double kPeerSeconds = 31.8;  // GAMES101 assignment 7, 784x784, 16 spp, one thread
 constexpr int kPeerWidth = 784, kPeerSamples = 16;
 
-enum class Strategy { BsdfUniform, BsdfCosine, Games101, LightCosine, LightCosineSobol, Mis, Renderer, RendererAuto };
+enum class Strategy {
+  BsdfUniform, BsdfCosine, Games101, LightCosine, LightCosineSobol, Mis, Renderer, RendererAuto, RendererByNoise
+};
 
 struct StrategyInfo {
   Strategy strategy;
@@ -104,6 +109,7 @@ constexpr StrategyInfo kStrategies[] = {
     {Strategy::Mis, "mis", true, false, true, true},
     {Strategy::Renderer, "raylab-reference", true, false, true, false},
     {Strategy::RendererAuto, "raylab-reference-auto", true, false, true, false},
+    {Strategy::RendererByNoise, "raylab-reference-by-noise", true, false, true, false},
 };
 
 // The mis strategy weighs with stage 09b's power_heuristic (the reference's, linked here) and the
@@ -198,10 +204,12 @@ Timed render_strategy(const Scene& scene, const RenderContext& context, const St
   const Camera& camera = scene.camera;
   Timed result{Image(camera.width, camera.height), 0.0};
   const std::clock_t start = std::clock();
-  if (strategy.strategy == Strategy::Renderer || strategy.strategy == Strategy::RendererAuto) {
+  if (strategy.strategy == Strategy::Renderer || strategy.strategy == Strategy::RendererAuto ||
+      strategy.strategy == Strategy::RendererByNoise) {
     RenderSettings settings = renderer;
     settings.samples_per_pixel = samples_per_pixel;
-    if (strategy.strategy == Strategy::RendererAuto) settings.roulette = RussianRoulette{1.0f, true};
+    if (strategy.strategy != Strategy::Renderer) settings.roulette = RussianRoulette{1.0f, true};
+    settings.samples_by_noise = strategy.strategy == Strategy::RendererByNoise;
     result.image = render(scene, settings);
     result.seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     return result;
@@ -348,7 +356,7 @@ int main(int argc, char** argv) {
       const std::size_t n = values.size();
       return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
     };
-    std::printf("\n%-21s %5s %11s %12s %9s   (CPU seconds: the median of %d)\n", "strategy", "spp", "CPU seconds",
+    std::printf("\n%-25s %5s %11s %12s %9s   (CPU seconds: the median of %d)\n", "strategy", "spp", "CPU seconds",
                 "paths/s", "RMSE", repetitions);
     std::vector<std::vector<Point>> curves(kStrategyCount);
     // Paths per second over a repetition's renders of the strategy, each repetition's, and their median.
@@ -363,7 +371,7 @@ int main(int argc, char** argv) {
         curves[i].push_back({spp, time, errors[i][k]});
         paths += pixels * spp;
         for (std::size_t r = 0; r < seconds_each.size(); ++r) seconds_each[r] += seconds[i][k][r];
-        std::printf("%-21s %5d %11.3f %12.0f %9.5f\n", kStrategies[i].name, spp, time, pixels * spp / time,
+        std::printf("%-25s %5d %11.3f %12.0f %9.5f\n", kStrategies[i].name, spp, time, pixels * spp / time,
                     errors[i][k]);
         csv << kStrategies[i].name << ',' << spp << ',' << time << ',' << pixels * spp / time << ',' << errors[i][k]
             << '\n';
@@ -384,7 +392,7 @@ int main(int argc, char** argv) {
                   width, width);
       std::printf("Time to reach it at %dx%d on one thread (peer, measured on this machine: %.1f s):\n", kPeerWidth,
                   kPeerWidth, kPeerSeconds);
-      std::printf("%-21s %12s %14s %10s %14s %17s\n", "strategy", "paths/s", "spp needed", "seconds", "peer / this",
+      std::printf("%-25s %12s %14s %10s %14s %17s\n", "strategy", "paths/s", "spp needed", "seconds", "peer / this",
                   "lowest - highest");
       for (std::size_t i = 0; i < curves.size(); ++i) {
         const double spp = samples_to_reach(curves[i], peer_rmse);
@@ -394,7 +402,7 @@ int main(int argc, char** argv) {
         };
         const auto [lowest, highest] =
             std::minmax_element(paths_per_second_each[i].begin(), paths_per_second_each[i].end());
-        std::printf("%-21s %12.0f %14.2f %10.2f %13.1fx %8.1fx - %4.1fx\n", kStrategies[i].name, paths_per_second[i],
+        std::printf("%-25s %12.0f %14.2f %10.2f %13.1fx %8.1fx - %4.1fx\n", kStrategies[i].name, paths_per_second[i],
                     spp, peer_pixels * spp / paths_per_second[i], against_peer(paths_per_second[i]),
                     against_peer(*lowest), against_peer(*highest));
       }
@@ -411,10 +419,10 @@ int main(int argc, char** argv) {
     const auto within = [](const std::vector<Point>& curve, double rmse) {
       return curve.size() > 1 && rmse <= curve.front().rmse && rmse >= curve.back().rmse;
     };
-    std::printf("\nSeconds to each RMSE (as measured at %dx%d) at %dx%d on one thread:\n%-21s", width, width,
+    std::printf("\nSeconds to each RMSE (as measured at %dx%d) at %dx%d on one thread:\n%-25s", width, width,
                 kPeerWidth, kPeerWidth, "strategy");
     for (const double level : levels) std::printf(" %9.3f", level);
-    std::printf("\n%-21s", "peer (GAMES101)");
+    std::printf("\n%-25s", "peer (GAMES101)");
     for (const double level : levels) {
       if (within(games101, level))
         std::printf(" %9.2f", peer_pixels * samples_to_reach(games101, level) / peer_paths_per_second);
@@ -422,7 +430,7 @@ int main(int argc, char** argv) {
         std::printf(" %9s", "-");
     }
     for (std::size_t i = 0; i < curves.size(); ++i) {
-      std::printf("\n%-21s", kStrategies[i].name);
+      std::printf("\n%-25s", kStrategies[i].name);
       for (const double level : levels) {
         if (within(curves[i], level))
           std::printf(" %9.2f", peer_pixels * samples_to_reach(curves[i], level) / paths_per_second[i]);

@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -269,6 +270,134 @@ TEST(Render, RouletteByThroughputKeepsTheFurnaceAtTwo) {
   ASSERT_GT(result.standard_error, 1e-4) << "no noise: the roulette stopped no path";
   EXPECT_TRUE(result.passed) << result.describe();
   EXPECT_LT(result.standard_error, 0.02) << "the mean should be known to a few hundredths";
+}
+
+// allot_samples_by_noise (render.h): where --spp-by-noise puts the samples after the pilot.
+TEST(SamplesByNoise, ShareTheWholeBudgetByTheNoiseAroundEachPixelNotItsOwn) {
+  constexpr int kWidth = 24, kHeight = 16;
+  const auto total = [](const std::vector<std::uint32_t>& shares) {
+    std::uint64_t sum = 0;
+    for (const std::uint32_t share : shares) sum += share;
+    return sum;
+  };
+  // Nothing noisy: every pixel the average (the rest shared equally).
+  std::vector<float> noise(kWidth * kHeight, 0.0f);
+  for (const int average : {2, 3, 7}) {
+    const std::vector<std::uint32_t> shares = allot_samples_by_noise(noise, kWidth, kHeight, average, 2);
+    for (const std::uint32_t share : shares) ASSERT_EQ(share, static_cast<std::uint32_t>(average));
+  }
+  // The left half noisy, the right half quiet: the left half takes more, every pixel at least
+  // the pilot, and the total is the budget to the sample.
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth / 2; ++x) noise[y * kWidth + x] = 0.25f;
+  std::vector<std::uint32_t> shares = allot_samples_by_noise(noise, kWidth, kHeight, 5, 2);
+  EXPECT_EQ(total(shares), 5u * kWidth * kHeight);
+  for (const std::uint32_t share : shares) EXPECT_GE(share, 2u);
+  EXPECT_GT(shares[4 * kWidth + 2], 5u) << "deep in the noisy half";
+  EXPECT_EQ(shares[4 * kWidth + kWidth - 2], 2u) << "deep in the quiet half: the pilot alone";
+  // A pixel's own noise does not raise its count (its neighbours' does): one noisy pixel in a
+  // quiet image keeps the pilot, while the pixels around it take the rest.
+  std::fill(noise.begin(), noise.end(), 0.0f);
+  noise[8 * kWidth + 12] = 1.0f;
+  shares = allot_samples_by_noise(noise, kWidth, kHeight, 4, 2);
+  EXPECT_EQ(shares[8 * kWidth + 12], 2u) << "the noisy pixel itself";
+  EXPECT_GT(shares[8 * kWidth + 13], 4u) << "its neighbour";
+  EXPECT_GT(shares[5 * kWidth + 9], 4u) << "3 rows and columns away";
+  EXPECT_EQ(shares[4 * kWidth + 12], 2u) << "4 rows away: out of reach";
+  EXPECT_EQ(total(shares), 4u * kWidth * kHeight);
+  // One noisy patch in a large quiet image: its pixels take at most 16 times the average, and
+  // the rest of the budget goes to every pixel alike (at most 1 more each, with rounding).
+  std::vector<float> large(200 * 200, 0.0f);
+  large[100 * 200 + 100] = 1.0f;
+  shares = allot_samples_by_noise(large, 200, 200, 3, 2);
+  EXPECT_EQ(*std::max_element(shares.begin(), shares.end()), 16u * 3u + 1u);
+  EXPECT_LE(shares[0], 3u);
+  EXPECT_EQ(total(shares), 3u * 200 * 200);
+  // Noise that is not a finite positive number counts as none.
+  std::fill(noise.begin(), noise.end(), std::numeric_limits<float>::quiet_NaN());
+  noise[0] = std::numeric_limits<float>::infinity();
+  noise[1] = -1.0f;
+  for (const std::uint32_t share : allot_samples_by_noise(noise, kWidth, kHeight, 4, 2)) ASSERT_EQ(share, 4u);
+  EXPECT_THROW((void)allot_samples_by_noise(noise, kWidth + 1, kHeight, 4, 2), std::invalid_argument);
+  EXPECT_THROW((void)allot_samples_by_noise(noise, kWidth, kHeight, 1, 2), std::invalid_argument);
+  EXPECT_THROW((void)allot_samples_by_noise(noise, kWidth, kHeight, 4, 0), std::invalid_argument);
+}
+
+TEST(SamplesByNoise, SpendTheBudgetWhereThePictureIsNoisyTheSameAtAnyThreadCount) {
+  Scene scene = load_scene(source_path("scenes/cornell.json"));
+  scene.camera.width = scene.camera.height = 32;
+  RenderSettings settings;
+  settings.integrator = IntegratorKind::Path;
+  settings.max_depth = scene.max_depth;
+  settings.roulette = RussianRoulette{1.0f, true};
+  settings.samples_per_pixel = 6;
+  settings.samples_by_noise = true;
+  settings.track_variance = true;
+  settings.threads = 2;
+  const RenderOutput two = render_with_variance(scene, settings);
+  settings.threads = 1;
+  const RenderOutput one = render_with_variance(scene, settings);
+  EXPECT_EQ(one.mean.pixels(), two.mean.pixels()) << "by noise: 1 and 2 threads differ";
+  EXPECT_EQ(one.variance_of_mean.pixels(), two.variance_of_mean.pixels());
+  EXPECT_EQ(one.sample_rate.pixels(), two.sample_rate.pixels()) << "by noise: 1 and 2 threads took other samples";
+  // Every pixel at least the pilot, whole samples, 6 per pixel on average exactly, and spread:
+  // some pixels keep the pilot, a tenth or more take above the average.
+  double samples = 0.0;
+  int pilot_only = 0, above_average = 0;
+  for (std::size_t i = 0; i < one.sample_rate.pixels().size(); ++i) {
+    const float count = one.sample_rate.pixels()[i].x * 6.0f;
+    ASSERT_EQ(count, std::round(count));
+    EXPECT_GE(count, static_cast<float>(kPilotSamples));
+    samples += count;
+    pilot_only += count == kPilotSamples;
+    above_average += count > 6.0f;
+  }
+  EXPECT_EQ(samples, 6.0 * 32 * 32);
+  EXPECT_GT(pilot_only, 0);
+  EXPECT_GT(above_average, 32 * 32 / 10);
+
+  // At most 2 samples on average: nothing left to share, every pixel takes them all.
+  settings.samples_per_pixel = 2;
+  const RenderOutput pilot_only_render = render_with_variance(scene, settings);
+  for (const glm::vec3& rate : pilot_only_render.sample_rate.pixels()) ASSERT_EQ(rate.x, 1.0f);
+  settings.adaptive_tolerance = 0.05f;
+  EXPECT_THROW((void)render(scene, settings), std::invalid_argument) << "with adaptive sampling";
+}
+
+// --spp-by-noise keeps each pixel's mean an unbiased estimate: a pixel's count comes from the
+// pilot samples of the pixels around it, not its own. The furnace made dimmer (emission 0.25:
+// every pixel 0.25 / (1 - 0.5) = 0.5, less 0.25 x 0.5^32 / 0.5 for paths cut at 30 bounces), so
+// that its samples, 0.5 on average and spread by the roulette, are not all clamped away: the
+// pixels' counts then vary from 2 to several times the average by chance. (Shares by each pixel's
+// own pilot noise instead fail it: mean 0.4826, t = -35. A pixel whose first samples happened to
+// be far apart takes more samples, which pull its mean towards the middle.)
+TEST(SamplesByNoise, KeepTheFurnacesMean) {
+  Scene scene = load_scene(source_path("scenes/furnace.json"));
+  scene.camera.width = scene.camera.height = 32;
+  for (Material& material : scene.materials) material.emission *= 0.25f;
+  RenderSettings settings;
+  settings.integrator = IntegratorKind::Path;
+  settings.samples_per_pixel = 4;
+  settings.samples_by_noise = true;
+  settings.max_depth = scene.max_depth;
+  settings.roulette = RussianRoulette{1.0f, true};
+  settings.seed = 7;
+  const RenderOutput output = render_with_variance(scene, settings);
+  float fewest = 1e9f, most = 0.0f;
+  for (const glm::vec3& rate : output.sample_rate.pixels()) {
+    fewest = std::min(fewest, rate.x * 4.0f);
+    most = std::max(most, rate.x * 4.0f);
+  }
+  EXPECT_EQ(fewest, 2.0f);
+  EXPECT_GE(most, 6.0f) << "the counts should vary";
+  // The t-test of the 1,024 pixel means (independent, of the same expectation; a correct
+  // renderer fails it with probability 1e-5, and the seed is fixed).
+  std::vector<double> pixel_means;
+  for (const glm::vec3& pixel : output.mean.pixels()) pixel_means.push_back(pixel.x);
+  const double expected = 0.25 * (1.0 - std::pow(0.5, 32)) / 0.5;
+  const testkit::MeanTestResult result = testkit::mean_test(pixel_means, expected, 1e-5);
+  EXPECT_TRUE(result.passed) << result.describe();
+  EXPECT_LT(result.standard_error, 0.01);
 }
 
 TEST(Render, EmptySceneIsAllBackground) {

@@ -45,6 +45,7 @@ struct RenderOptions {
   std::string variance_path;  // empty: no variance image
   float adaptive = 0.0f;      // --adaptive: 0 (off) or the tolerance
   int adaptive_batch = 32;    // --adaptive-batch
+  bool samples_by_noise = false;  // --spp-by-noise
   std::string sample_rate_path;  // empty: no sample-rate image
   bool quiet = false;
   bool watertight = false;
@@ -57,8 +58,11 @@ int run_render(const RenderOptions& options) {
   if (!options.variance_path.empty()) check_image_extension(options.variance_path);
   if (!options.sample_rate_path.empty()) {
     check_image_extension(options.sample_rate_path);
-    if (options.adaptive == 0.0f) throw UsageError("--sample-rate: only with --adaptive (without it every pixel gets --spp samples)");
+    if (options.adaptive == 0.0f && !options.samples_by_noise)
+      throw UsageError("--sample-rate: only with --adaptive or --spp-by-noise (without them every pixel gets --spp samples)");
   }
+  if (options.adaptive != 0.0f && options.samples_by_noise)
+    throw UsageError("--adaptive and --spp-by-noise: choose one (each decides how many samples a pixel gets)");
   if (!options.integrator.empty() && !integrator_from_name(options.integrator))
     throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct, path, mis)");
   const std::optional<RussianRoulette> roulette = RussianRoulette::from_text(options.roulette);
@@ -83,6 +87,7 @@ int run_render(const RenderOptions& options) {
   settings.track_variance = !options.variance_path.empty();
   settings.adaptive_tolerance = options.adaptive;
   settings.adaptive_batch = options.adaptive_batch;
+  settings.samples_by_noise = options.samples_by_noise;
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.roulette = *roulette;
   settings.threads = options.threads;
@@ -110,6 +115,7 @@ int run_render(const RenderOptions& options) {
                   settings.samples_per_pixel);
     samples = text;
   }
+  if (options.samples_by_noise) samples += " on average, by noise";
   if (!options.quiet)
     std::fprintf(stderr, "rendered %s: %dx%d at %s in %.3f s on %d threads (%.2f Mrays/s) -> %s\n",
                  options.scene_path.c_str(), image.width(), image.height(), samples.c_str(), stats.seconds,
@@ -158,8 +164,12 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
   render_command->add_option("--adaptive-batch", options.adaptive_batch,
                              "With --adaptive: check a pixel after every this many samples (default 32)")
       ->check(CLI::Range(2, kMaxSamplesPerPixel));
+  render_command->add_flag("--spp-by-noise", options.samples_by_noise,
+                           "--spp is the average: every pixel takes 2 samples, then the rest go where the picture is "
+                           "noisiest (the same expected image, less error for the time)");
   render_command->add_option("--sample-rate", options.sample_rate_path,
-                             "With --adaptive: also write each pixel's samples as a fraction of --spp (white: all of them)");
+                             "With --adaptive or --spp-by-noise: also write each pixel's samples as a fraction of --spp "
+                             "(white: --spp of them)");
   render_command->add_flag("--watertight", options.watertight,
                            "Use the watertight triangle test (stage 03b) instead of stage 03's");
   render_command->add_flag("-q,--quiet", options.quiet, "No progress and no summary line");

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace raylab {
 
@@ -27,6 +28,10 @@ struct RenderSettings {
   // tolerance (PixelConvergence in film.h), asked after every adaptive_batch samples.
   float adaptive_tolerance = 0.0f;
   int adaptive_batch = 32;
+  // --spp-by-noise: samples_per_pixel is the average over the image, not every pixel's count.
+  // Every pixel first takes kPilotSamples; the rest go where the picture is noisiest
+  // (allot_samples_by_noise below). Not together with adaptive_tolerance.
+  bool samples_by_noise = false;
   std::uint64_t seed = 0;       // changes every random number (an independent render)
   bool track_variance = false;  // also give each pixel's variance of the mean (render_with_variance)
   int max_depth = 5;
@@ -57,9 +62,32 @@ constexpr int kMaxSamplesPerPixel = 1 << 20;
 struct RenderOutput {
   Image mean;              // each pixel's mean over its samples: the picture
   Image variance_of_mean;  // per pixel and channel, s^2 / n (film.h); 0 x 0 unless track_variance
-  Image sample_rate;       // with adaptive_tolerance: each pixel's samples / samples_per_pixel (in
-                           // all three channels); 0 x 0 otherwise
+  Image sample_rate;       // with adaptive_tolerance or samples_by_noise: each pixel's samples /
+                           // samples_per_pixel (in all three channels); 0 x 0 otherwise
 };
+
+// --spp-by-noise: the samples every pixel takes first, from which the noise is measured.
+constexpr int kPilotSamples = 2;
+// ... and how far around a pixel it is measured: the (2 r + 1)^2 pixels within r = 3 rows and
+// columns of it, less the pixel itself.
+constexpr int kNoiseRadius = 3;
+
+// Where --spp-by-noise puts its samples, from `noise`: per pixel (row by row, width x height)
+// the variance of its pilot samples as a picture shows them (each channel clamped to [0, 1],
+// the channels' variances added). Returns each pixel's count of samples: at least `pilot`,
+// average_samples x width x height of them in all (exactly), and the rest shared in proportion
+// to each pixel's local standard deviation, the square root of the mean noise of the pixels
+// around it (kNoiseRadius), itself left out, and at most 16 times the average (what that limit
+// leaves over goes to every pixel alike; so does the rest when nothing is noisy). The share that
+// makes the image's summed squared error least is each pixel's standard deviation's. Leaving
+// the pixel out keeps its count from following its own samples (a pixel that gets more samples
+// because its first ones were far apart would be pulled towards its mean: a bias); they reach
+// it only through the image-wide scale of the shares, by about (2 x 3 + 1)^2 parts in the
+// number of pixels (docs/09_path.md, section 8).
+// Requires average_samples >= pilot >= 1 and noise.size() == width x height (else throws
+// std::invalid_argument).
+std::vector<std::uint32_t> allot_samples_by_noise(const std::vector<float>& noise, int width, int height,
+                                                  int average_samples, int pilot);
 
 // Renders scene.camera's view: each pixel's mean, and its variance of the mean when
 // settings.track_variance. Exceptions from stage functions (NotImplemented, ...) stop the
