@@ -3,7 +3,7 @@
 //   build/bin/raylab-bench-kernels [--output DIR] [--rays N] [--no-plot]
 //
 // For each kernel (ray-sphere: textbook quadratic, stable form = stage 02's reference;
-// ray-triangle: Moller-Trumbore = stage 03's reference, Cramer's rule, watertight = stage 03b's
+// ray-triangle: Moller-Trumbore = stage 03's reference, Cramer's rule, watertight = bonus stage 06_robustness's
 // reference; ray-box: plain slab test, Ize-conservative slab test = stage 04's reference):
 //   ns/test      the fastest of 15 timed passes over 4096 ordinary inputs (what a renderer
 //                sees), 64 times each, the kernels of a group taking turns, on one thread (a
@@ -122,7 +122,7 @@ void triangle_rows(int rays, std::vector<Row>& rows) {
     adversarial.insert(adversarial.end(), cases.begin(), cases.end());
   }
   const std::vector<ClosedMesh> meshes = leak_test_meshes();
-  const char* notes[] = {"stage 03 reference", "Sarrus determinants", "stage 03b reference"};
+  const char* notes[] = {"stage 03 reference", "Sarrus determinants", "stage 06 reference"};
   std::vector<TriangleKernel> pointers;
   for (const NamedTriangleKernel& k : triangle_kernels()) pointers.push_back(k.kernel);
   const std::vector<double> times =

@@ -280,6 +280,36 @@ TEST(Messages, RenderFillsPlaceholdersInEitherLanguage) {
   EXPECT_EQ(render(verbatim("a {b} c"), Language::Chinese), "a {b} c");
 }
 
+// A number in a failure text reads short without changing the value the student's code computed:
+// GoogleTest's 17 significant digits and the framework's 9 for a float become the shortest text of
+// the same float, a double the grader computed gets 6 digits; names, integers and short numbers
+// are left alone.
+TEST(Messages, NumbersAreShownShort) {
+  // GoogleTest's EXPECT_LE and EXPECT_NEAR write doubles with 17 digits, floats promoted to double too.
+  EXPECT_EQ(short_numbers("Expected: (a) <= (b), actual: 0.30000000000000004 vs 0.01"),
+            "Expected: (a) <= (b), actual: 0.3 vs 0.01");
+  EXPECT_EQ(short_numbers("x evaluates to 0.30000001192092896, y to -1.0000001192092896"),
+            "x evaluates to 0.3, y to -1.0000001");
+  // The framework's vec3 (max_digits10 = 9 per float).
+  EXPECT_EQ(short_numbers("returned (0.800000012, -0.707106769, 1)"), "returned (0.8, -0.70710677, 1)");
+  // The grader's doubles: 6 digits; a double that is a float's value (2 - 2^-21) keeps what tells it from 2.
+  EXPECT_EQ(short_numbers("p = 1.2345678901234567e-05, p = 1.0000000000000001e-50, z = -3.1415926535897931"),
+            "p = 1.23457e-05, p = 1e-50, z = -3.14159");
+  EXPECT_EQ(short_numbers("the exact answer is 1.9999995231628418"), "the exact answer is 1.9999995");
+  // A float that needs its 8 or 9 digits keeps them: nothing the student's code computed is lost.
+  EXPECT_EQ(short_numbers("t = 1.0000001 and 0.123456791"), "t = 1.0000001 and 0.12345679");
+  for (const float value : {1.0000001f, 0.1f, 3.14159274f, 1e-7f, 123456.789f, -2.5e30f}) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", static_cast<double>(value));
+    EXPECT_EQ(std::strtof(short_numbers(text).c_str(), nullptr), value) << text << " -> " << short_numbers(text);
+  }
+  // Short numbers, integers, std::to_string's six decimals and digits inside names stay.
+  for (const char* same : {"t = 4.000000, t_max = 1.41421", "20000 samples, seed 4294967295", "Stage09Path, 09_path, 4x4",
+                           "GoogleTest 1.12.1", "grading-output/09_path-cornell.png", "chi-square 12.34 (p = 0.001)",
+                           "0.5, -0.25, 1e-05", "NaN and infinity"})
+    EXPECT_EQ(short_numbers(same), same);
+}
+
 TEST(Messages, LanguageFromItsNameAndTheEnvironment) {
   EXPECT_EQ(parse_language("zh"), Language::Chinese);
   EXPECT_EQ(parse_language("zh_CN.UTF-8"), Language::Chinese);

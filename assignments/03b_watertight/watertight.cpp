@@ -1,4 +1,4 @@
-// Stage 03b_watertight (bonus): a ray-triangle test without leaks.   Handout: docs/03b_watertight.md
+// Bonus stage 06_robustness (folder 03b_watertight): a ray-triangle test without leaks.   Handout: docs/03b_watertight.md
 //
 // WHY
 //   Moller-Trumbore (stage 03) decides "inside" from b1, b2 and b1 + b2, each rounded on its

@@ -12,17 +12,47 @@ constexpr int kShownOutputLines = 40;
 
 std::string text_of(MessageId id, std::vector<MessageArg> args = {}) { return render(Message(id, std::move(args))); }
 
+bool is_blocked(const TestResult& t) { return t.status == Status::NotAttempted && !t.blocked_by.empty(); }
+
+// Of a stage's tests blocked by an earlier stage's stub, one blocked by the earliest such stage
+// (the one to write first), or nullptr.
+const TestResult* earliest_blocked(const StageResult& stage) {
+  const TestResult* earliest = nullptr;
+  auto order = [](const std::string& id) {
+    const StageInfo* blocking = find_stage(std::string_view(id));
+    return blocking ? blocking->number : 0;
+  };
+  for (const TestResult& t : stage.tests)
+    if (is_blocked(t) && (!earliest || order(t.blocked_by) < order(earliest->blocked_by))) earliest = &t;
+  return earliest;
+}
+
 std::string status_text(const StageResult& stage) {
   if (stage.not_attempted) return text_of(MessageId::console_stage_not_attempted);
-  int failed = 0, not_attempted = 0;
+  int passed = 0, failed = 0, not_attempted = 0, blocked = 0;
   for (const TestResult& t : stage.tests) {
+    passed += t.status == Status::Passed;
     failed += t.status != Status::Passed && t.status != Status::NotAttempted;
-    not_attempted += t.status == Status::NotAttempted;
+    blocked += is_blocked(t);
+    not_attempted += t.status == Status::NotAttempted && !is_blocked(t);
   }
-  std::string text = failed == 0 ? text_of(MessageId::console_passed)
-                                 : text_of(MessageId::console_tests_failed,
-                                           {{"failed", std::to_string(failed)}, {"count", std::to_string(stage.tests.size())}});
-  if (not_attempted > 0) text += text_of(MessageId::console_tests_not_attempted, {{"count", std::to_string(not_attempted)}});
+  const TestResult* first_blocked = earliest_blocked(stage);
+  const std::string count = std::to_string(stage.tests.size());
+  std::string text;
+  if (first_blocked && blocked == static_cast<int>(stage.tests.size())) {
+    // Every test runs the earlier stage's stub: what to write first, and nothing else.
+    text = text_of(MessageId::console_stage_blocked,
+                   {{"stage", first_blocked->blocked_by}, {"function", first_blocked->blocked_function}});
+  } else {
+    text = failed > 0                            ? text_of(MessageId::console_tests_failed, {{"failed", std::to_string(failed)}, {"count", count}})
+           : not_attempted > 0 || blocked > 0 ? text_of(MessageId::console_tests_passed, {{"passed", std::to_string(passed)}, {"count", count}})
+                                                : text_of(MessageId::console_passed);
+    if (not_attempted > 0) text += text_of(MessageId::console_tests_not_attempted, {{"count", std::to_string(not_attempted)}});
+    if (first_blocked)
+      text += text_of(MessageId::console_tests_blocked, {{"count", std::to_string(blocked)},
+                                                         {"stage", first_blocked->blocked_by},
+                                                         {"function", first_blocked->blocked_function}});
+  }
   if (stage.problem) text += text_of(MessageId::console_problem, {{"problem", *stage.problem}});
   return text;
 }
@@ -140,11 +170,18 @@ void print_results(const std::vector<StageResult>& results, const Message& descr
       std::printf("    %s\n", text_of(MessageId::console_output_cut, {{"bytes", std::to_string(stage.output.size())}}).c_str());
   }
   std::printf("\n");
-  for (const StageResult& stage : results)
-    if (stage.not_attempted && !stage.tests.empty() && !stage.tests.front().messages.empty()) {
-      std::printf("%s\n", text_of(MessageId::console_next, {{"what", stage.tests.front().messages.front()}}).c_str());
-      break;
-    }
+  if (const Message* next = next_step(results)) std::printf("%s\n", text_of(MessageId::console_next, {{"what", *next}}).c_str());
+}
+
+const Message* next_step(const std::vector<StageResult>& results) {
+  for (const StageResult& stage : results) {
+    if (stage.not_attempted && !stage.tests.empty() && !stage.tests.front().messages.empty())
+      return &stage.tests.front().messages.front();
+    if (stage.not_attempted) continue;
+    const TestResult* blocked = earliest_blocked(stage);
+    if (blocked && !blocked->messages.empty()) return &blocked->messages.front();
+  }
+  return nullptr;
 }
 
 }  // namespace raylab::grading

@@ -89,8 +89,8 @@ std::set<int>& incomplete_dependencies() {
 // every stage: the stream's and std::to_string's "nan", "-nan", "inf", "-inf" (whole words)
 // become "NaN" and "infinity" / "-infinity" (in Chinese: "NaN" and "无穷大" / "负无穷大", the
 // terms of docs/glossary.md).
+bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 std::string name_non_finite(const std::string& text, Language language = Language::English) {
-  auto is_word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   std::string out;
   out.reserve(text.size());
   for (std::size_t i = 0; i < text.size();) {
@@ -111,18 +111,23 @@ std::string name_non_finite(const std::string& text, Language language = Languag
   }
   return out;
 }
-Message name_non_finite(Message message) {
+// A text as the student reads it: its numbers short (short_numbers), and every value that is not
+// a number named (name_non_finite).
+std::string readable(const std::string& text, Language language = Language::English) {
+  return name_non_finite(short_numbers(text), language);
+}
+Message readable(Message message) {
   for (MessageArg& arg : message.args) {
-    const std::string chinese = name_non_finite(arg.chinese_text.value_or(arg.text), Language::Chinese);
-    if (arg.chinese_text || chinese != name_non_finite(arg.text)) arg.chinese_text = chinese;
-    arg.text = name_non_finite(arg.text);
-    for (Message& part : arg.parts) part = name_non_finite(part);
+    const std::string chinese = readable(arg.chinese_text.value_or(arg.text), Language::Chinese);
+    if (arg.chinese_text || chinese != readable(arg.text)) arg.chinese_text = chinese;
+    arg.text = readable(arg.text);
+    for (Message& part : arg.parts) part = readable(part);
   }
   return message;
 }
-std::vector<Message> name_non_finite(const std::vector<Message>& messages) {
+std::vector<Message> readable(const std::vector<Message>& messages) {
   std::vector<Message> out;
-  for (const Message& message : messages) out.push_back(name_non_finite(message));
+  for (const Message& message : messages) out.push_back(readable(message));
   return out;
 }
 
@@ -146,6 +151,12 @@ class Recorder : public ::testing::EmptyTestEventListener {
     current() = CurrentTest{};
     messages_.clear();
     not_implemented_ = false;
+    blocked_by_.clear();
+    blocked_function_.clear();
+    stage_id_.clear();
+    for (const TestInfo& test : tests())
+      if (test.suite == info.test_suite_name() && test.name == info.name())
+        if (const StageInfo* stage = find_stage(test.stage)) stage_id_ = stage->id;
     on_start_(full_name(info));
   }
 
@@ -160,7 +171,7 @@ class Recorder : public ::testing::EmptyTestEventListener {
       while (!english.empty() && english.back() == '\n') english.pop_back();  // as written_message
       if (message.size() >= english.size() && message.compare(message.size() - english.size(), english.size(), english) == 0) {
         MessageArg prefix = MessageArg::bilingual("prefix", message.substr(0, message.size() - english.size()), "");
-        messages_.push_back(name_non_finite(Message(MessageId::failure, {prefix, {"failure", failures.front()}})));
+        messages_.push_back(readable(Message(MessageId::failure, {prefix, {"failure", failures.front()}})));
         failures.erase(failures.begin());
         return;
       }
@@ -172,21 +183,39 @@ class Recorder : public ::testing::EmptyTestEventListener {
         message.compare(message.size() - in_body.size(), in_body.size(), in_body) == 0) {
       const std::string what = message.substr(thrown.size(), message.size() - thrown.size() - in_body.size());
       MessageArg described("what", cut(what));
-      for (const Message& worded : current().thrown)  // the judge's own exception: in the run's language
-        if (render(worded, Language::English) == what) described = {"what", worded};
-      messages_.push_back(name_non_finite(Message(MessageId::failure_exception, {described})));
+      for (const Message& worded : current().thrown) {  // the judge's own exception: in the run's language
+        if (render(worded, Language::English) != what) continue;
+        described = {"what", worded};
+        if (worded.id == MessageId::stage_not_implemented) {
+          // A stub: of this test's stage, the sentence that says what to write; of an earlier stage
+          // that the test runs (stage 07's warps under stage 08's estimator), the test is blocked
+          // by it until it is written.
+          const std::string stub_stage = argument_text(worded, "stage");
+          if (stub_stage == stage_id_ || stage_id_.empty()) {
+            messages_.push_back(readable(worded));
+          } else {
+            blocked_by_ = stub_stage;
+            blocked_function_ = argument_text(worded, "function");
+            Message blocked(MessageId::stage_blocked, worded.args);
+            blocked.args.push_back({"current", stage_id_});
+            messages_.push_back(readable(blocked));
+          }
+          return;
+        }
+      }
+      messages_.push_back(readable(Message(MessageId::failure_exception, {described})));
       return;
     }
     if (message == "Unknown C++ exception thrown in the test body.") {
       messages_.push_back(MessageId::failure_unknown_exception);
       return;
     }
-    messages_.push_back(verbatim(name_non_finite(cut(message))));
+    messages_.push_back(verbatim(readable(cut(message))));
   }
 
   void OnTestEnd(const ::testing::TestInfo& info) override {
-    on_end_(TestRecord{full_name(info), info.result()->Passed(), not_implemented_, messages_, name_non_finite(current().hints),
-                       name_non_finite(current().notes), current().images});
+    on_end_(TestRecord{full_name(info), info.result()->Passed(), not_implemented_, messages_, readable(current().hints),
+                       readable(current().notes), current().images, blocked_by_, blocked_function_});
   }
 
  private:
@@ -197,10 +226,18 @@ class Recorder : public ::testing::EmptyTestEventListener {
   static std::string full_name(const ::testing::TestInfo& info) {
     return std::string(info.test_suite_name()) + "." + info.name();
   }
+  // The text of a message's argument `name` ("" if it has none).
+  static std::string argument_text(const Message& message, const std::string& name) {
+    for (const MessageArg& arg : message.args)
+      if (arg.name == name) return arg.text;
+    return "";
+  }
   std::function<void(const std::string&)> on_start_;
   std::function<void(const TestRecord&)> on_end_;
   std::vector<Message> messages_;
   bool not_implemented_ = false;
+  std::string stage_id_;                        // the stage of the test running
+  std::string blocked_by_, blocked_function_;  // an earlier stage's stub that the test ran into
 };
 
 }  // namespace

@@ -114,6 +114,10 @@ struct TestRecord {
   std::vector<Message> hints;
   std::vector<Message> notes;
   std::vector<ImageComparison> images;
+  // The stub was an earlier stage's ("07_sampling"), which the test runs (stage 08's estimator
+  // samples lights with stage 07's warps), and the function it ran into: the test is blocked by
+  // that stage, not failed by its own ("" when the stub, if any, is the test's own stage's).
+  std::string blocked_by, blocked_function;
 };
 // The judge: calls on_test_start before each test and on_test_end after it.
 void install_recorder(std::function<void(const std::string&)> on_test_start,

@@ -1,7 +1,10 @@
 #include "messages.h"
 
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 namespace raylab::grading {
 
@@ -84,6 +87,87 @@ std::string render(const Message& message, Language language) {
 std::string render(const Message& message) { return render(message, language()); }
 
 Message verbatim(std::string text) { return {MessageId::verbatim, {{"text", std::move(text)}}}; }
+
+namespace {
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// The significant digits of a number's text: "0.30000000000000004" 17, "0.500000" 1, "100" 3.
+std::size_t significant_digits(std::string_view number) {
+  const std::string_view mantissa = number.substr(0, number.find_first_of("eE"));
+  std::string digits;
+  for (const char c : mantissa)
+    if (is_digit(c)) digits += c;
+  const std::size_t first = digits.find_first_not_of('0');
+  if (first == std::string::npos) return 1;
+  std::size_t last = digits.size();
+  if (mantissa.find('.') != std::string_view::npos)  // a fraction's trailing zeros say nothing
+    while (last > first + 1 && digits[last - 1] == '0') --last;
+  return last - first;
+}
+
+// One number of 8 or more significant digits: a float's (9 digits at most, or exactly a float's
+// value) as the shortest text that reads back as the same float ("%g" with 1 to 9 digits); a
+// double's (more than 9 digits, not a float's value: a statistic the grader computed) with 6
+// ("%.6g"); as it is when that is no shorter.
+std::string short_number(const std::string& number) {
+  const std::size_t digits = significant_digits(number);
+  if (digits < 8) return number;
+  const double value = std::strtod(number.c_str(), nullptr);
+  if (!std::isfinite(value)) return number;
+  char text[48];
+  const bool in_float_range = value == 0.0 || (std::fabs(value) <= static_cast<double>(std::numeric_limits<float>::max()) &&
+                                                std::fabs(value) >= static_cast<double>(std::numeric_limits<float>::min()));
+  const bool a_float = in_float_range && (digits <= 9 || static_cast<double>(static_cast<float>(value)) == value);
+  if (!a_float) {
+    std::snprintf(text, sizeof text, "%.6g", value);
+  } else {
+    const float single = static_cast<float>(value);
+    for (int precision = 1; precision <= 9; ++precision) {
+      std::snprintf(text, sizeof text, "%.*g", precision, static_cast<double>(single));
+      if (std::strtof(text, nullptr) == single) break;
+    }
+  }
+  return significant_digits(text) < digits ? std::string(text) : number;
+}
+
+}  // namespace
+
+std::string short_numbers(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    // A number starts at a digit that does not continue a name or another number (09 in
+    // Stage09Path, 2 in 1.12.2).
+    const bool starts = is_digit(text[i]) && (i == 0 || !(is_name_char(text[i - 1]) || text[i - 1] == '.'));
+    if (!starts) {
+      out += text[i++];
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && is_digit(text[end])) ++end;
+    bool decimal = false;  // with a fraction or an exponent: an integer is left as it is
+    if (end + 1 < text.size() && text[end] == '.' && is_digit(text[end + 1])) {
+      decimal = true;
+      for (++end; end < text.size() && is_digit(text[end]);) ++end;
+    }
+    if (end < text.size() && (text[end] == 'e' || text[end] == 'E')) {
+      std::size_t digit = end + 1;
+      if (digit < text.size() && (text[digit] == '+' || text[digit] == '-')) ++digit;
+      if (digit < text.size() && is_digit(text[digit])) {
+        decimal = true;
+        for (end = digit; end < text.size() && is_digit(text[end]);) ++end;
+      }
+    }
+    // ... and ends where no name or further number goes on (4x4, 1.12.2, 2e3x).
+    const bool ends = end == text.size() ||
+                      !(is_name_char(text[end]) || (text[end] == '.' && end + 1 < text.size() && is_digit(text[end + 1])));
+    const std::string number = text.substr(i, end - i);
+    out += decimal && ends ? short_number(number) : number;
+    i = end;
+  }
+  return out;
+}
 
 std::optional<Language> parse_language(std::string_view name) {
   auto starts = [&](std::string_view prefix) {

@@ -88,6 +88,18 @@ std::string stream_text(Number value) {
   return out.str();
 }
 
+// A text with its numbers short: GoogleTest writes a number with 17 significant digits
+// (0.30000001192092896 for 0.3f, 0.30000000000000004 for 0.1 + 0.2), the framework's operator<<
+// a float with 9 (0.800000012). A float's value (9 digits at most, or 17 that are exactly a
+// float's) becomes the shortest text that reads back as the same float (0.3, 0.8, 1.0000001): the
+// precision of every value a stage function returns, so nothing the student's code computed is
+// lost; any other number of more than 9 digits (a double the grader computed: a mean, a z-score,
+// 0.1 + 0.2) gets 6 significant digits, as a stream writes it by default (0.3, -119.906).
+// Integers, numbers of fewer than 8 digits and digits inside a name (Stage09Path, 09_path, 4x4,
+// 1.12.2) stay as they are. The judge applies it to every failure, hint and note a test records
+// (grading.cpp), so a number reads the same wherever it was formatted.
+std::string short_numbers(const std::string& text);
+
 // A hint or note given as text fails to compile with this message: each is a catalogue entry.
 template <typename Text, typename = std::enable_if_t<std::is_convertible_v<Text, std::string_view>>>
 void add_hint(const Text&) {

@@ -395,14 +395,9 @@ std::string report_html(const std::vector<StageResult>& results, const Message& 
   }
   html += "</tbody>\n<tfoot><tr><th>" + escape_html(text_of(MessageId::console_total, language)) + "</th>" +
           points_cell(earned, max) + "<td></td></tr></tfoot>\n</table>\n";
-  for (const StageResult& stage : results)
-    if (stage.not_attempted && !stage.tests.empty() && !stage.tests.front().messages.empty()) {
-      html += "<p class=\"next\">" +
-              with_handout_links(text_of({MessageId::console_next, {{"what", stage.tests.front().messages.front()}}}, language),
-                                 kit_href) +
-              "</p>\n";
-      break;
-    }
+  if (const Message* next = next_step(results))
+    html += "<p class=\"next\">" +
+            with_handout_links(text_of({MessageId::console_next, {{"what", *next}}}, language), kit_href) + "</p>\n";
 
   for (const StageResult& stage : results) html += stage_html(stage, language, kit_href);
   html += "<footer>" + escape_html(text_of(MessageId::report_footer, language)) + "</footer>\n</main>\n";

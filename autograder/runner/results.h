@@ -19,6 +19,7 @@ struct TestResult {
   std::vector<Message> notes;
   double seconds = 0;  // wall clock from the test's start to its end, in the judge
   std::vector<ImageComparison> images;  // for the HTML report
+  std::string blocked_by, blocked_function;  // NotAttempted: an earlier stage's stub it ran into (TestRecord)
   int earned() const { return status == Status::Passed ? info.points : 0; }
 };
 
@@ -34,6 +35,11 @@ struct StageResult {
 
 // The stage's status as the score table shows it ("passed", "2 of 5 tests failed; ...").
 std::string stage_status(const StageResult& stage);
+
+// What to do next, for the line "next: ..." under the score table: the first stage (in the table's
+// order) that is not attempted, its stub's sentence; or that has tests blocked by an earlier
+// stage's stub, the blocked sentence. nullptr when there is none.
+const Message* next_step(const std::vector<StageResult>& results);
 
 // A test's messages, hints and notes, one per line, in `language`.
 std::string test_output(const TestResult& test, Language language);

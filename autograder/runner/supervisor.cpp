@@ -37,7 +37,7 @@ StageResult grade_stage(const StageInfo& stage) {
   StageResult result;
   result.stage = &stage;
   for (const TestInfo& test : tests())
-    if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {MessageId::test_not_run}, {}, {}, 0.0, {}});
+    if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {MessageId::test_not_run}, {}, {}, 0.0, {}, {}, {}});
 
   StageSession& session = StageSession::instance();
   session.begin_stage();
@@ -89,6 +89,8 @@ StageResult grade_stage(const StageInfo& stage) {
                            t.hints = record.hints;
                            t.notes = record.notes;
                            t.images = record.images;
+                           t.blocked_by = record.blocked_by;
+                           t.blocked_function = record.blocked_function;
                          }
                        });
     }

@@ -63,11 +63,14 @@ void fail_value(const MessageArg& call, const std::string& got, const std::strin
 
 // ---- Exact functions ---------------------------------------------------------------------
 
+// Each check's exact answer (expected_...), for its comparison and its failure message alike.
+glm::dvec3 expected_intensity(const glm::vec3& power) { return glm::dvec3(power) / (4.0 * kPiD); }
+
 GRADED_TEST(kStage, Stage08DirectLight, PointLightIntensityFromPower, 3) {
   const glm::vec3 powers[] = {glm::vec3(4.0f * kPi), glm::vec3(100.0f, 50.0f, 10.0f), glm::vec3(1.0f, 0.0f, 2.5f)};
   for (const glm::vec3& power : powers) {
     const glm::vec3 got = point_light_intensity(power);
-    const glm::dvec3 expected = glm::dvec3(power) / (4.0 * kPiD);
+    const glm::dvec3 expected = expected_intensity(power);
     if (close(got, expected)) continue;
     fail_value({"call", "point_light_intensity(" + text(power) + ")"}, text(got), text(glm::vec3(expected)));
     if (hint_if_not_finite("point_light_intensity", {got.x, got.y, got.z}, {MessageId::direct_advice_division, {}})) return;
@@ -79,27 +82,37 @@ GRADED_TEST(kStage, Stage08DirectLight, PointLightIntensityFromPower, 3) {
   }
 }
 
+struct IrradianceCase {
+  glm::vec3 intensity, light, point, normal;
+};
+// The irradiance in double, with the distance and the cosine its hints compare against.
+struct ExpectedIrradiance {
+  double distance, cosine;
+  glm::dvec3 irradiance;
+};
+ExpectedIrradiance expected_irradiance(const IrradianceCase& c) {
+  const glm::dvec3 to_light = glm::dvec3(c.light) - glm::dvec3(c.point);
+  const double d = glm::length(to_light);
+  const double cosine = glm::dot(glm::dvec3(c.normal), to_light) / d;
+  return {d, cosine, cosine > 0 ? glm::dvec3(c.intensity) * (cosine / (d * d)) : glm::dvec3(0.0)};
+}
+
 GRADED_TEST(kStage, Stage08DirectLight, PointLightIrradiance, 5) {
-  struct Case {
-    glm::vec3 intensity, light, point, normal;
-  };
-  const Case cases[] = {
+  const IrradianceCase cases[] = {
       {glm::vec3(10.0f), glm::vec3(0, 0, 2), glm::vec3(0.0f), glm::vec3(0, 0, 1)},                  // overhead
       {glm::vec3(3.0f, 2.0f, 1.0f), glm::vec3(3, 0, 4), glm::vec3(0.0f), glm::vec3(0, 0, 1)},        // cos 0.8, d 5
       {glm::vec3(7.0f), glm::vec3(1, 2, 3), glm::vec3(0.5f, -1, 0.25f), glm::normalize(glm::vec3(1, 1, 2))},
       {glm::vec3(5.0f), glm::vec3(0, 0, -2), glm::vec3(0.0f), glm::vec3(0, 0, 1)},                 // behind
   };
-  for (const Case& c : cases) {
+  for (const IrradianceCase& c : cases) {
     const glm::vec3 got = point_light_irradiance(c.intensity, c.light, c.point, c.normal);
-    const glm::dvec3 to_light = glm::dvec3(c.light) - glm::dvec3(c.point);
-    const double d = glm::length(to_light);
-    const double cosine = glm::dot(glm::dvec3(c.normal), to_light) / d;
-    const glm::dvec3 expected = cosine > 0 ? glm::dvec3(c.intensity) * (cosine / (d * d)) : glm::dvec3(0.0);
-    if (close(got, expected, 2e-5)) continue;
+    const ExpectedIrradiance expected = expected_irradiance(c);
+    const double d = expected.distance, cosine = expected.cosine;
+    if (close(got, expected.irradiance, 2e-5)) continue;
     const Message call{MessageId::direct_call_irradiance,
                        {{"intensity", text(c.intensity)}, {"light", text(c.light)}, {"point", text(c.point)},
                         {"normal", text(c.normal)}}};
-    fail_value({"call", call}, text(got), text(glm::vec3(expected)));
+    fail_value({"call", call}, text(got), text(glm::vec3(expected.irradiance)));
     if (hint_if_not_finite("point_light_irradiance", {got.x, got.y, got.z}, {MessageId::direct_advice_division, {}})) return;
     const glm::dvec3 intensity(c.intensity);
     if (cosine <= 0) add_hint({MessageId::direct_irradiance_behind, {}});
@@ -110,14 +123,14 @@ GRADED_TEST(kStage, Stage08DirectLight, PointLightIrradiance, 5) {
 }
 
 const glm::vec3 kAlbedos[] = {glm::vec3(1.0f), glm::vec3(0.725f, 0.71f, 0.68f), glm::vec3(0.0f, 0.5f, 0.25f)};
-bool lambertian_f_right(const glm::vec3& albedo, const glm::vec3& got) { return close(got, glm::dvec3(albedo) / kPiD); }
+glm::dvec3 expected_lambertian_f(const glm::vec3& albedo) { return glm::dvec3(albedo) / kPiD; }
+bool lambertian_f_right(const glm::vec3& albedo, const glm::vec3& got) { return close(got, expected_lambertian_f(albedo)); }
 
 GRADED_TEST(kStage, Stage08DirectLight, LambertianF, 4) {
   for (const glm::vec3& albedo : kAlbedos) {
     const glm::vec3 got = lambertian_f(albedo);
-    const glm::dvec3 expected = glm::dvec3(albedo) / kPiD;
     if (lambertian_f_right(albedo, got)) continue;
-    fail_value({"call", "lambertian_f(" + text(albedo) + ")"}, text(got), text(glm::vec3(expected)));
+    fail_value({"call", "lambertian_f(" + text(albedo) + ")"}, text(got), text(glm::vec3(expected_lambertian_f(albedo))));
     if (hint_if_not_finite("lambertian_f", {got.x, got.y, got.z}, {MessageId::direct_advice_division, {}})) return;
     if (close(got, glm::dvec3(albedo), 1e-4)) add_hint({MessageId::direct_lambertian_no_pi, {}});
     else if (close(got, glm::dvec3(albedo) / (2.0 * kPiD), 1e-4)) add_hint({MessageId::direct_lambertian_two_pi, {}});
@@ -130,20 +143,20 @@ struct AreaPdfCase {
 };
 const AreaPdfCase kAreaPdfCases[] = {
     {0.5f, 2.0f, 1.0f}, {0.01f, 3.0f, 0.6f}, {2.0f, 0.5f, 0.25f}, {1.0f / 13650.0f, 400.0f, 0.8f}};
-bool area_pdf_right(const AreaPdfCase& c, float got) {
+double expected_area_pdf(const AreaPdfCase& c) {
   const double pdf = c.pdf_area, d = c.distance, cosine = c.cos_at_light;
-  return close(got, pdf * d * d / cosine, 2e-5);
+  return pdf * d * d / cosine;
 }
+bool area_pdf_right(const AreaPdfCase& c, float got) { return close(got, expected_area_pdf(c), 2e-5); }
 
 GRADED_TEST(kStage, Stage08DirectLight, AreaPdfToSolidAngle, 5) {
   for (const AreaPdfCase& c : kAreaPdfCases) {
     const float got = area_pdf_to_solid_angle(c.pdf_area, c.distance, c.cos_at_light);
-    const double pdf = c.pdf_area, d = c.distance, cosine = c.cos_at_light;
-    const double expected = pdf * d * d / cosine;
     if (area_pdf_right(c, got)) continue;
     const std::string call = "area_pdf_to_solid_angle(pdf_area " + text(c.pdf_area) + ", distance " + text(c.distance) +
                              ", cos_at_light " + text(c.cos_at_light) + ")";
-    fail_value({"call", call}, text(got), gtest_text(static_cast<float>(expected)));
+    fail_value({"call", call}, text(got), gtest_text(static_cast<float>(expected_area_pdf(c))));
+    const double pdf = c.pdf_area, d = c.distance, cosine = c.cos_at_light;
     if (hint_if_not_finite("area_pdf_to_solid_angle", {got}, {MessageId::direct_advice_division, {}})) return;
     if (close(got, pdf, 1e-4)) add_hint({MessageId::direct_pdf_not_converted, {}});
     else if (close(got, pdf * d * d, 1e-4)) add_hint({MessageId::direct_pdf_no_cosine, {}});
@@ -174,6 +187,31 @@ void add_quad_light(DirectLightScene& scene, float x0, float x1, float z0, float
   scene.triangles.push_back({a, c, d, radiance});
 }
 
+// The stage's own functions that estimate_direct_light runs through the framework: bsdf_f calls
+// lambertian_f, and sample_li, for an area light, area_pdf_to_solid_angle.
+struct Helper {
+  const char* function;  // as direct_light_function_passes names it
+  const char* test;      // its own test
+  const char* caller;    // the framework's function that calls it
+};
+const Helper kLambertianFHelper{"lambertian_f", "LambertianF", "bsdf_f"};
+const Helper kAreaPdfHelper{"area_pdf_to_solid_angle", "AreaPdfToSolidAngle", "sample_li"};
+
+// Inside a failing estimator test: for each of `helpers` that fails its own test, the hint
+// direct_helper_fails ("your area_pdf_to_solid_angle fails its own test ...: fix it first"), as
+// earlier_stages.h names a failing function of an earlier stage; true when any does, so that the
+// caller adds no hint about the estimator itself.
+bool hint_failing_helpers(const std::vector<Helper>& helpers) {
+  bool any = false;
+  for (const Helper& helper : helpers) {
+    if (direct_light_function_passes(helper.function)) continue;
+    add_hint({MessageId::direct_helper_fails,
+              {{"function", helper.function}, {"test", helper.test}, {"caller", helper.caller}}});
+    any = true;
+  }
+  return any;
+}
+
 struct Expectation {
   Message what;  // the case, in words (direct_case_...)
   DirectLightQuery query;
@@ -181,9 +219,10 @@ struct Expectation {
 };
 
 // Runs the queries, t-tests each channel's mean; names the first failure and the mistakes that fit,
-// unless one of `earlier` (stage 07's functions that sample the scene's lights) fails its own tests.
+// unless one of `earlier` (stage 07's functions that sample the scene's lights) or of `helpers`
+// (this stage's that the estimator runs) fails its own tests: then it names those instead.
 void expect_means(const DirectLightScene& scene, const std::vector<Expectation>& expectations, int light_count,
-                  const std::vector<std::string>& earlier) {
+                  const std::vector<std::string>& earlier, const std::vector<Helper>& helpers) {
   std::vector<DirectLightQuery> queries;
   for (const Expectation& e : expectations) queries.push_back(e.query);
   const std::vector<glm::vec3> samples = direct_light_samples(scene, queries, test_seed(8));
@@ -213,7 +252,8 @@ void expect_means(const DirectLightScene& scene, const std::vector<Expectation>&
                     {"expected", gtest_text(result.expected_mean)},
                     {"p_value", gtest_text(result.p_value)},
                     {"level", gtest_text(result.significance_level)}}});
-      if (hint_failing_earlier_functions(kStage, earlier)) continue;
+      const bool earlier_fails = hint_failing_earlier_functions(kStage, earlier);
+      if (hint_failing_helpers(helpers) || earlier_fails) continue;
       const double ratio = result.mean / result.expected_mean;
       // Which simple factor explains the mean? (Judged against the noise: within 4 standard errors.)
       auto fits = [&](double factor) {
@@ -253,7 +293,8 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorUnderQuadLight, 5) {
   add(MessageId::direct_case_floor_under_light, glm::vec3(278, 0, 280), glm::vec3(0, 1, 0), glm::vec3(0.725f, 0.71f, 0.68f));
   add(MessageId::direct_case_floor_near_wall, glm::vec3(40, 0, 500), glm::vec3(0, 1, 0), glm::vec3(0.5f));
   add(MessageId::direct_case_tilted_surface, glm::vec3(300, 200, 100), glm::vec3(0.3f, 1.0f, 0.5f), glm::vec3(0.63f, 0.065f, 0.05f));
-  expect_means(scene, expectations, 2, {"sample_uniform_triangle", "uniform_triangle_pdf"});
+  expect_means(scene, expectations, 2, {"sample_uniform_triangle", "uniform_triangle_pdf"},
+               {kLambertianFHelper, kAreaPdfHelper});
 }
 
 GRADED_TEST(kStage, Stage08DirectLight, EstimatorSeveralLights, 4) {
@@ -282,7 +323,8 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorSeveralLights, 4) {
   add(MessageId::direct_case_tilted_point_three_lights, glm::vec3(0.5f, 0.2f, 0.3f), glm::vec3(0.2f, 1.0f, -0.1f),
       glm::vec3(0.3f, 0.6f, 0.9f));
   expect_means(scene, expectations, 3,
-               {"sample_uniform_triangle", "uniform_triangle_pdf", "sample_uniform_sphere", "uniform_sphere_pdf"});
+               {"sample_uniform_triangle", "uniform_triangle_pdf", "sample_uniform_sphere", "uniform_sphere_pdf"},
+               {kLambertianFHelper, kAreaPdfHelper});
 }
 
 GRADED_TEST(kStage, Stage08DirectLight, ShadowRaysAndBackFaces, 3) {
@@ -324,6 +366,7 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorPointLightExact, 1) {
     if (!close(s, expected, 1e-4)) {
       fail_value({"call", Message(MessageId::direct_call_one_point_light)}, text(s),
                  text(glm::vec3(expected)));
+      hint_failing_helpers({kLambertianFHelper});  // (a point light's sample has no area pdf)
       return;
     }
 }

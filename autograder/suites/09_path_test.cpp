@@ -7,8 +7,8 @@
 //   furnace_model). A t-test of the pixel means against it (forgiving 0.1%: kFurnaceTolerance),
 //   at three (albedo, roulette probability, max depth). When a test fails, models of the common
 //   mistakes (roulette not divided by p, emission counted twice, the light black when seen
-//   directly, the cosine or 1 / pi missing) are fitted to all three furnaces: a model that fits
-//   all of them is named.
+//   directly, the cosine or 1 / pi missing, no direct light at all: a shadow ray that hits the
+//   light itself) are fitted to all three furnaces: a model that fits all of them is named.
 //   Cornell boxes (scenes/cornell.json, scenes/cornell_specular.json), kCornellSize pixels
 //   square at kStudentSamples spp, against a converged reference (autograder/reference/
 //   09_path_cases.json): per region of 4x4 pixels and channel a z-test of the mean, with the
@@ -105,6 +105,9 @@ const std::vector<Mistake>& mistakes() {
       {MessageId::path_emission_twice, {[](const Furnace& f) { return f.albedo; }, 1.0, 1.0, 1.0}},
       {MessageId::path_light_black, {[](const Furnace& f) { return f.albedo; }, 1.0, 0.0, 0.0}},
       {MessageId::path_one_surface_short, {[](const Furnace& f) { return f.albedo; }, 1.0, 1.0, 0.0, -1}},
+      // No direct light at any vertex (a shadow ray that hits the light itself is always blocked):
+      // every pixel is the emission the camera sees, exactly 1.
+      {MessageId::path_no_direct_light, {[](const Furnace& f) { return f.albedo; }, 0.0, 1.0, 0.0}},
       {MessageId::path_missing_cosine, {[](const Furnace& f) { return 2.0 * f.albedo; }}, true},
       {MessageId::path_missing_inverse_pi, {[](const Furnace& f) { return kPiD * f.albedo; }, kPiD}, true, true},
   };

@@ -38,8 +38,10 @@ void throw_if_every_function_is_a_stub(const char* stage_id, std::initializer_li
 bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice);
 bool hint_if_not_finite(const Message& what, std::initializer_list<float> results, const Message& advice);
 
-// A value as GoogleTest's message stream writes it (floats with all their digits): the format of a
-// value in a failure text, as when it was streamed into ADD_FAILURE() itself.
+// A value as GoogleTest's message stream writes it (17 significant digits): the format of a value in
+// a failure text, as when it was streamed into ADD_FAILURE() itself. The student reads it short:
+// the judge shows every number of a failure, hint or note as the shortest text of the same float
+// (messages.h: short_numbers), 0.3 and not 0.30000001192092896.
 template <typename Value>
 std::string gtest_text(const Value& value) {
   return (::testing::Message() << value).GetString();

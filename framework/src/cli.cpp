@@ -171,7 +171,7 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
                              "With --adaptive or --spp-by-noise: also write each pixel's samples as a fraction of --spp "
                              "(white: --spp of them)");
   render_command->add_flag("--watertight", options.watertight,
-                           "Use the watertight triangle test (stage 03b) instead of stage 03's");
+                           "Use the watertight triangle test (bonus stage 06_robustness) instead of stage 03's");
   render_command->add_flag("-q,--quiet", options.quiet, "No progress and no summary line");
 
   try {

@@ -3,6 +3,8 @@
 // path_radiance_mis with it, so that a submission file says only what it changes.
 #pragma once
 
+#include "direct_variant.h"
+
 #include "raylab/bsdf.h"
 #include "raylab/lights.h"
 #include "raylab/shading.h"
@@ -58,25 +60,16 @@ inline float light_density(const RenderContext& context, const MisVariant& v, co
   return sum;
 }
 
+// The one-sample direct light of stage 08 (direct_variant.h), MIS-weighted.
 inline glm::vec3 light_sample(const RenderContext& context, const MisVariant& v, const SurfaceHit& hit, const Bsdf& bsdf,
                               const glm::vec3& wo, Sampler& sampler, bool bsdf_sample_follows) {
-  if (context.lights.empty()) return glm::vec3(0.0f);
-  float choice = 0.0f;
-  const Light& light = context.lights[context.lights.choose(sampler.get_1d(), &choice)];
-  const std::optional<LightSample> s = sample_li(light, hit.point, sampler.get_2d());
+  const std::optional<DirectSample> s = unblocked_light_sample(context, DirectVariant{}, hit, bsdf, wo, sampler);
   if (!s) return glm::vec3(0.0f);
-  const glm::vec3 f = bsdf_f(bsdf, hit.geometric_normal, wo, s->direction);
-  if (f == glm::vec3(0.0f)) return glm::vec3(0.0f);
-  Ray shadow;
-  shadow.origin = offset_ray_origin(hit, s->direction);
-  shadow.direction = s->point - shadow.origin;
-  shadow.t_max = 1.0f - 1e-4f;
-  if (context.geometry.occluded(shadow)) return glm::vec3(0.0f);
-  const float pdf = s->pdf * choice;
+  const float pdf = s->light.pdf * s->choice;
   float weight = 1.0f;
-  if ((!s->is_delta || v.delta_weighted) && (bsdf_sample_follows || v.last_vertex_weighted))
-    weight = heuristic(v, pdf, bsdf_pdf(bsdf, hit.geometric_normal, wo, s->direction));
-  return weight * f * s->radiance * (std::fabs(glm::dot(hit.geometric_normal, s->direction)) / pdf);
+  if ((!s->light.is_delta || v.delta_weighted) && (bsdf_sample_follows || v.last_vertex_weighted))
+    weight = heuristic(v, pdf, bsdf_pdf(bsdf, hit.geometric_normal, wo, s->light.direction));
+  return light_contribution(hit, *s, pdf, weight);
 }
 
 inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& camera_ray, Sampler& sampler,

@@ -3,6 +3,8 @@
 // submission file says only what it changes.
 #pragma once
 
+#include "direct_variant.h"
+
 #include "raylab/bsdf.h"
 #include "raylab/lights.h"
 #include "raylab/sampling.h"
@@ -25,10 +27,21 @@ struct PathVariant {
   bool cosine = true;                     // false: the cosine missing from the bounce weight
   bool pdf_from_bsdf_pdf = false;         // true: divides by bsdf_pdf (0 for mirrors and glass)
   bool one_surface_short = false;         // true: a loop depth < max_depth (the last surface left out)
+  bool shadow_ray_hits_light = false;     // true: its own direct light, whose shadow ray runs to infinity
+                                          // (a unit direction, t_max infinite) and so hits the light itself
   // Correct variants.
   bool uniform_hemisphere = false;        // diffuse bounces sampled uniformly (pdf 1 / (2 pi))
   bool throughput_roulette = false;       // roulette by the throughput, p = min(1, max channel)
 };
+
+// The direct light as stage 08's estimate_direct_light computes it, written in the path tracer
+// itself as GAMES101's castRay does (direct_variant.h's estimator), with the shadow ray of `v`.
+inline glm::vec3 direct_light_variant(const RenderContext& context, const SurfaceHit& hit, const Bsdf& bsdf,
+                                      const glm::vec3& wo, Sampler& sampler, const PathVariant& v) {
+  DirectVariant direct;
+  direct.shadow_ray_stops = !v.shadow_ray_hits_light;
+  return estimate_direct_light_variant(context, direct, hit, bsdf, wo, sampler);
+}
 
 inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& camera_ray, Sampler& sampler,
                                        const PathVariant& v) {
@@ -51,7 +64,8 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
     const Bsdf bsdf = bsdf_of(material, diffuse_color_at(material, *hit));
     const glm::vec3& normal = hit->geometric_normal;
     if (!bsdf.is_specular())
-      radiance += throughput * estimate_direct_light(context, *hit, bsdf, wo, sampler);
+      radiance += throughput * (v.shadow_ray_hits_light ? direct_light_variant(context, *hit, bsdf, wo, sampler, v)
+                                                        : estimate_direct_light(context, *hit, bsdf, wo, sampler));
     if (depth >= context.max_depth) return radiance;
     float p = context.continue_probability(depth, throughput);
     if (v.throughput_roulette) p = std::min(1.0f, std::max({throughput.x, throughput.y, throughput.z, 0.05f}));

@@ -55,7 +55,7 @@ enum class Acceleration {
 // Which ray-triangle test every triangle query uses.
 enum class TriangleTest {
   MollerTrumbore,  // stage 03_triangle, intersect_ray_triangle (the default)
-  Watertight,      // stage 03b_watertight: no ray slips through a closed mesh's shared edges
+  Watertight,      // bonus stage 06_robustness: no ray slips through a closed mesh's shared edges
 };
 
 // The functions that trace a render's rays. Each left nullptr is the stage's own: stage 01's

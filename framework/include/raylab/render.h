@@ -40,7 +40,7 @@ struct RenderSettings {
   bool show_progress = false;  // progress, ETA and rays/s on stderr
   // What to leave out (shading.h); the same image either way. Changed only to measure.
   Skips skips;
-  TriangleTest triangle_test = TriangleTest::MollerTrumbore;  // --watertight: stage 03b's test
+  TriangleTest triangle_test = TriangleTest::MollerTrumbore;  // --watertight: bonus stage 06_robustness's test
   // Who computes camera rays and primitive tests (geometry.h); by default the stages' own.
   TracingFunctions tracing;
   // Called once by the calling thread as soon as the render's worker threads exist, to start

@@ -1,0 +1,169 @@
+// Grader self-test submissions of stage 08_direct_light share this file: each one sets the flags
+// of one common mistake (or of a correct variant) and gets the stage's five functions with it, the
+// reference's (solutions/08_direct_light) wherever no flag changes them, so that a submission file
+// says only what it changes:
+//   #define DIRECT_VARIANT(v) v.divide_by_choice = false
+//   #include "direct_variant.h"
+// Without DIRECT_VARIANT it defines no stage function, only the one-sample estimator's pieces
+// (raylab::submission), which mis_variant.h samples its lights with.
+#pragma once
+
+#ifdef DIRECT_VARIANT
+// The reference's functions under other names, for the flags that keep them.
+#define point_light_intensity reference_point_light_intensity
+#define point_light_irradiance reference_point_light_irradiance
+#define lambertian_f reference_lambertian_f
+#define area_pdf_to_solid_angle reference_area_pdf_to_solid_angle
+#define estimate_direct_light reference_estimate_direct_light
+#include "../../solutions/08_direct_light/direct_light.cpp"
+#undef point_light_intensity
+#undef point_light_irradiance
+#undef lambertian_f
+#undef area_pdf_to_solid_angle
+#undef estimate_direct_light
+#endif
+
+#include "raylab/bsdf.h"
+#include "raylab/lights.h"
+#include "raylab/math.h"
+#include "raylab/shading.h"
+#include "raylab/stages/08_direct_light.h"
+
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace raylab::submission {
+
+struct DirectVariant {
+  // Mistakes.
+  bool intensity_over_pi = false;  // point_light_intensity: power / pi, not / (4 pi)
+  bool irradiance_cosine = true;   // false: point_light_irradiance I / d^2, the cosine missing
+  bool lambertian_pi = true;       // false: lambertian_f = albedo, 1 / pi missing
+  bool pdf_converted = true;       // false: area_pdf_to_solid_angle returns the area pdf as it is
+  bool divide_by_choice = true;    // false: the light's sample not divided by the probability of choosing it
+  bool shadow_ray = true;          // false: no shadow ray, light passes through everything
+  bool shadow_ray_stops = true;    // false: the shadow ray a unit direction, t_max left at infinity
+  // Correct variants.
+  bool lights_by_power = false;    // the light chosen with probability proportional to its power
+};
+
+// The light that u in [0, 1) chooses and the probability of choosing it: uniformly (LightSet's
+// choose), or by power (nullopt when no light has any). Requires !lights.empty().
+inline std::optional<std::size_t> choose_light(const LightSet& lights, const DirectVariant& v, float u,
+                                               float* probability) {
+  if (!v.lights_by_power) return lights.choose(u, probability);
+  auto power_of = [](const Light& light) {
+    const glm::vec3 power = light_power(light);
+    return power.x + power.y + power.z;
+  };
+  float total = 0.0f;
+  for (const Light& light : lights.lights()) total += power_of(light);
+  if (!(total > 0.0f)) return std::nullopt;
+  const float scaled = u * total;
+  std::size_t chosen = lights.size() - 1;
+  float running = 0.0f;
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    running += power_of(lights[i]);
+    if (scaled < running) {
+      chosen = i;
+      break;
+    }
+  }
+  *probability = power_of(lights[chosen]) / total;
+  return chosen;
+}
+
+// One light sample from the hit that reaches it: the light chosen with probability `choice`, a
+// point on it, the BSDF towards it. nullopt when it gives no light (none to choose, the light
+// behind the surface, an occluder between them).
+struct DirectSample {
+  LightSample light;
+  float choice = 0.0f;
+  glm::vec3 f{0.0f};
+};
+
+inline std::optional<DirectSample> unblocked_light_sample(const RenderContext& context, const DirectVariant& v,
+                                                          const SurfaceHit& hit, const Bsdf& bsdf,
+                                                          const glm::vec3& wo, Sampler& sampler) {
+  if (context.lights.empty()) return std::nullopt;
+  DirectSample sample;
+  const std::optional<std::size_t> chosen = choose_light(context.lights, v, sampler.get_1d(), &sample.choice);
+  if (!chosen) return std::nullopt;
+  const std::optional<LightSample> light = sample_li(context.lights[*chosen], hit.point, sampler.get_2d());
+  if (!light) return std::nullopt;
+  sample.light = *light;
+  sample.f = bsdf_f(bsdf, hit.geometric_normal, wo, light->direction);
+  if (sample.f == glm::vec3(0.0f)) return std::nullopt;
+  if (!v.shadow_ray) return sample;
+  Ray shadow;
+  shadow.origin = offset_ray_origin(hit, light->direction);
+  if (v.shadow_ray_stops) {
+    shadow.direction = light->point - shadow.origin;  // to just short of the light's point
+    shadow.t_max = 1.0f - 1e-4f;
+  } else {
+    shadow.direction = light->direction;  // the mistake: on past the light's point, into the light
+  }
+  if (context.geometry.occluded(shadow)) return std::nullopt;
+  return sample;
+}
+
+// The sample's light, weight f L |cos| / pdf, with `pdf` the density of the sample's direction.
+inline glm::vec3 light_contribution(const SurfaceHit& hit, const DirectSample& sample, float pdf, float weight = 1.0f) {
+  return weight * sample.f * sample.light.radiance *
+         (std::fabs(glm::dot(hit.geometric_normal, sample.light.direction)) / pdf);
+}
+
+inline glm::vec3 estimate_direct_light_variant(const RenderContext& context, const DirectVariant& v,
+                                               const SurfaceHit& hit, const Bsdf& bsdf, const glm::vec3& wo,
+                                               Sampler& sampler) {
+  const std::optional<DirectSample> sample = unblocked_light_sample(context, v, hit, bsdf, wo, sampler);
+  if (!sample) return glm::vec3(0.0f);
+  return light_contribution(hit, *sample, v.divide_by_choice ? sample->light.pdf * sample->choice : sample->light.pdf);
+}
+
+}  // namespace raylab::submission
+
+#ifdef DIRECT_VARIANT
+// The submission's five functions.
+namespace raylab {
+namespace submission {
+inline constexpr DirectVariant kDirectVariant = [] {
+  DirectVariant flags;
+  DIRECT_VARIANT(flags);
+  return flags;
+}();
+}  // namespace submission
+
+glm::vec3 point_light_intensity(const glm::vec3& power) {
+  if (submission::kDirectVariant.intensity_over_pi) return power / kPi;
+  return reference_point_light_intensity(power);
+}
+
+glm::vec3 point_light_irradiance(const glm::vec3& intensity, const glm::vec3& light_position, const glm::vec3& point,
+                                 const glm::vec3& normal) {
+  if (submission::kDirectVariant.irradiance_cosine)
+    return reference_point_light_irradiance(intensity, light_position, point, normal);
+  const glm::vec3 to_light = light_position - point;
+  if (glm::dot(normal, to_light) <= 0.0f) return glm::vec3(0.0f);
+  return intensity / glm::dot(to_light, to_light);
+}
+
+glm::vec3 lambertian_f(const glm::vec3& albedo) {
+  return submission::kDirectVariant.lambertian_pi ? reference_lambertian_f(albedo) : albedo;
+}
+
+float area_pdf_to_solid_angle(float pdf_area, float distance, float cos_at_light) {
+  if (submission::kDirectVariant.pdf_converted)
+    return reference_area_pdf_to_solid_angle(pdf_area, distance, cos_at_light);
+  return pdf_area;
+}
+
+// With no flag of its own set, the reference's steps one for one (the same numbers drawn).
+glm::vec3 estimate_direct_light(const RenderContext& context, const SurfaceHit& hit, const Bsdf& bsdf,
+                                const glm::vec3& wo, Sampler& sampler) {
+  return submission::estimate_direct_light_variant(context, submission::kDirectVariant, hit, bsdf, wo, sampler);
+}
+}  // namespace raylab
+#endif
