@@ -2,9 +2,10 @@
 // asked for, the variance of that mean per pixel (how far the image may be from its
 // expectation: the grader's tests through the noise, and adaptive sampling, read it).
 //
-// The renderer keeps one film per tile (render.cpp): each pixel is written by one thread, in
-// sample order, so the result is the same at any thread count, and the memory beyond the
-// image is one tile's. Sums are kept in double: a mean of many
+// The renderer keeps one film per tile (render.cpp; with --spp-by-noise one for the whole image,
+// kept between its two passes): each pixel is written by one thread, in sample order, so the
+// result is the same at any thread count, and the memory beyond the image is one tile's (the
+// whole image's again with --spp-by-noise). Sums are kept in double: a mean of many
 // float samples loses nothing, and a mean of one sample is that sample exactly.
 #pragma once
 

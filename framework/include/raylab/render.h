@@ -1,10 +1,12 @@
 // The renderer: tiles over all cores; each pixel's value depends only on (scene, settings,
-// pixel), so any thread count gives bit-identical images.
+// pixel) (with samples_by_noise also on the pilot samples of the pixels around it, all taken
+// in a first pass), so any thread count gives bit-identical images.
 //
 // Per pixel, samples_per_pixel samples: the sampler (sampler.h) gives the point in the pixel
 // (its centre at 1 sample, stratified points otherwise), stage 01 turns it into a camera ray,
-// the integrator (integrator.h) gives the radiance along it, and a film per tile (film.h)
-// keeps the mean and, on request, the variance of the mean.
+// the integrator (integrator.h) gives the radiance along it, and a film per tile (film.h; one
+// for the whole image with samples_by_noise) keeps the mean and, on request, the variance of
+// the mean.
 #pragma once
 
 #include "raylab/film.h"
