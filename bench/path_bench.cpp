@@ -42,7 +42,8 @@
 //                      from the first; not an estimator of the peer's
 //   raylab-reference-by-noise  the same with --spp-by-noise: the samples per pixel are the average,
 //                      2 in every pixel and the rest where its neighbours' were noisiest (render.h,
-//                      allot_samples_by_noise); the renderer's fastest to a given error
+//                      allot_samples_by_noise); fewer samples for an error, each costing more:
+//                      even with auto at the peer's error, a few percent sooner below it
 // The peer row: GAMES101 assignment 7 as a student completed it, 784x784 at 16 spp, one thread, on
 // this machine: 31.8 s (1,436 s as shipped, a new random_device and mt19937 per number). Its error is
 // taken as the games101 strategy's at 16 spp (with jittered pixel positions: the peer shoots every

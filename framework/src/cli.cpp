@@ -166,7 +166,7 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
       ->check(CLI::Range(2, kMaxSamplesPerPixel));
   render_command->add_flag("--spp-by-noise", options.samples_by_noise,
                            "--spp is the average: every pixel takes 2 samples, then the rest go where the picture is "
-                           "noisiest (the same expected image, less error for the time)");
+                           "noisiest (the same expected image with fewer samples, each costing more)");
   render_command->add_option("--sample-rate", options.sample_rate_path,
                              "With --adaptive or --spp-by-noise: also write each pixel's samples as a fraction of --spp "
                              "(white: --spp of them)");
