@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <utility>
 #include <vector>
@@ -177,6 +178,74 @@ TEST(Sampler, ConstantGivesItsNumbersAtEveryDimensionInAnyOrder) {
   EXPECT_EQ(sampler.dimension(), 11);
   EXPECT_THROW(Sampler::constant(1.0f, glm::vec2(0.5f)), std::invalid_argument);
   EXPECT_THROW(Sampler::constant(0.5f, glm::vec2(-0.1f, 0.5f)), std::invalid_argument);
+}
+
+// A dimension's numbers as sampler.h defines them, one at a time: the pixel's key from the pixel
+// and the seed, the dimension's key, then owen_sobol::dimension_numbers.
+glm::vec2 numbers_one_at_a_time(int x, int y, int index, int dimension, std::uint64_t seed) {
+  const std::uint64_t pixel = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32u) |
+                              static_cast<std::uint32_t>(x);
+  const std::uint64_t pixel_key = mix_bits(pixel ^ mix_bits(seed + 0x9e3779b97f4a7c15ULL));
+  glm::vec2 numbers;
+  owen_sobol::dimension_numbers(owen_sobol::dimension_key(pixel_key, static_cast<std::uint32_t>(dimension)),
+                                owen_sobol::reverse_bits(static_cast<std::uint32_t>(index)), numbers.x, numbers.y);
+  return numbers;
+}
+
+TEST(Sampler, EightDimensionsAtOnceGiveTheNumbersOfOneAtATime) {
+  // The sampler computes eight dimensions together (with AVX2 where the CPU has it): the same
+  // numbers, bit for bit, as one at a time, at every key, sample index and dimension, also where
+  // the dimension's number wraps around 2^32.
+  Pcg32 random(7, 11);
+  const bool avx2 = [] {
+    float first[owen_sobol::kBlockDimensions], second[owen_sobol::kBlockDimensions];
+    return owen_sobol::fill_dimension_block_avx2(0, 0, 0, first, second);
+  }();
+  if (!avx2) std::printf("(no AVX2 here: only the one-by-one way is checked)\n");
+  for (int trial = 0; trial < 20000; ++trial) {
+    const std::uint64_t pixel_key = (static_cast<std::uint64_t>(random.next_uint32()) << 32u) | random.next_uint32();
+    const std::uint32_t reversed_index = trial < 100 ? owen_sobol::reverse_bits(static_cast<std::uint32_t>(trial))
+                                                     : random.next_uint32();
+    const std::uint32_t first_dimension =
+        trial % 3 == 0 ? random.next_uint32() % 64 : (trial % 3 == 1 ? 0xfffffffcu : random.next_uint32());
+    float first[owen_sobol::kBlockDimensions], second[owen_sobol::kBlockDimensions];
+    float wide_first[owen_sobol::kBlockDimensions], wide_second[owen_sobol::kBlockDimensions];
+    owen_sobol::fill_dimension_block_one_by_one(pixel_key, reversed_index, first_dimension, first, second);
+    owen_sobol::fill_dimension_block(pixel_key, reversed_index, first_dimension, wide_first, wide_second);
+    for (int i = 0; i < owen_sobol::kBlockDimensions; ++i) {
+      float expected_first = 0.0f, expected_second = 0.0f;
+      owen_sobol::dimension_numbers(owen_sobol::dimension_key(pixel_key, first_dimension + static_cast<std::uint32_t>(i)),
+                                    reversed_index, expected_first, expected_second);
+      ASSERT_EQ(first[i], expected_first) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
+      ASSERT_EQ(second[i], expected_second) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
+      ASSERT_EQ(wide_first[i], expected_first) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
+      ASSERT_EQ(wide_second[i], expected_second) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
+    }
+  }
+  // Through the sampler: 1D and 2D draws in a mixed order across the blocks' edges, a pixel sample
+  // started again in the middle of a block, and the skipped dimension of a 1-spp pixel centre.
+  for (const int samples : {1, 16}) {
+    Sampler sampler(samples, 5);
+    for (int index = 0; index < samples; ++index)
+      for (const int x : {0, 3, 1000}) {
+        sampler.start_pixel_sample(x, 9, index);
+        int dimension = 0;
+        const glm::vec2 pixel = sampler.get_pixel_2d();
+        if (samples > 1) {
+          EXPECT_EQ(pixel, numbers_one_at_a_time(x, 9, index, dimension, 5));
+        }
+        for (dimension = 1; dimension < 30; ++dimension) {
+          const glm::vec2 expected = numbers_one_at_a_time(x, 9, index, dimension, 5);
+          if (dimension % 3 == 0) {
+            ASSERT_EQ(sampler.get_2d(), expected) << "dimension " << dimension;
+          } else {
+            ASSERT_EQ(sampler.get_1d(), expected.x) << "dimension " << dimension;
+          }
+        }
+        sampler.start_pixel_sample(x, 10, index);  // another pixel, its block not drawn out
+        ASSERT_EQ(sampler.get_1d(), numbers_one_at_a_time(x, 10, index, 0, 5).x);
+      }
+  }
 }
 
 TEST(Film, MeanAndVarianceOfTheMeanPerPixel) {

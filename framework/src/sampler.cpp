@@ -3,6 +3,14 @@
 #include <stdexcept>
 #include <string>
 
+// GCC or Clang on x86; not MinGW's GCC, which cannot align a 32-byte vector on the stack of a
+// Win64 function (GCC bug 54412), as solutions/05c_wide_bvh/wide8.h.
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__)) && \
+    !(defined(_WIN32) && !defined(__clang__))
+#include <immintrin.h>
+#define RAYLAB_SAMPLER_AVX2 1
+#endif
+
 namespace raylab {
 
 Sampler::Sampler(int samples_per_pixel, std::uint64_t seed) : samples_per_pixel_(samples_per_pixel), seed_(seed) {
@@ -21,4 +29,154 @@ Sampler Sampler::constant(float u1, glm::vec2 u2) {
   return sampler;
 }
 
+void Sampler::fill_block() {
+  if (!pixel_key_ready_) {
+    pixel_key_ = mix_bits(pixel_ ^ mix_bits(seed_ + 0x9e3779b97f4a7c15ULL));
+    reversed_sample_index_ = owen_sobol::reverse_bits(sample_index_);
+    pixel_key_ready_ = true;
+  }
+  owen_sobol::fill_dimension_block(pixel_key_, reversed_sample_index_, static_cast<std::uint32_t>(dimension_),
+                                   block_first_, block_second_);
+  block_start_ = dimension_;
+  block_end_ = dimension_ + owen_sobol::kBlockDimensions;
+}
+
+namespace owen_sobol {
+
+void fill_dimension_block_one_by_one(std::uint64_t pixel_key, std::uint32_t reversed_sample_index,
+                                     std::uint32_t first_dimension, float first[kBlockDimensions],
+                                     float second[kBlockDimensions]) {
+  for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(kBlockDimensions); ++i)
+    dimension_numbers(dimension_key(pixel_key, first_dimension + i), reversed_sample_index, first[i], second[i]);
+}
+
+#if RAYLAB_SAMPLER_AVX2
+namespace {
+
+// The low 64 bits of a * b in each 64-bit lane (AVX2 multiplies 32 by 32 bits): lo*lo + (hi*lo + lo*hi) << 32.
+__attribute__((target("avx2"))) inline __m256i multiply_64(__m256i a, std::uint64_t b) {
+  const __m256i b_low = _mm256_set1_epi64x(static_cast<long long>(b & 0xffffffffu));
+  const __m256i b_high = _mm256_set1_epi64x(static_cast<long long>(b >> 32u));
+  const __m256i cross = _mm256_add_epi64(_mm256_mul_epu32(_mm256_srli_epi64(a, 32), b_low), _mm256_mul_epu32(a, b_high));
+  return _mm256_add_epi64(_mm256_mul_epu32(a, b_low), _mm256_slli_epi64(cross, 32));
+}
+
+// mix_bits (raylab/random.h) in four 64-bit lanes.
+__attribute__((target("avx2"))) inline __m256i mix_bits_4(__m256i value) {
+  value = multiply_64(_mm256_xor_si256(value, _mm256_srli_epi64(value, 30)), 0xbf58476d1ce4e5b9ULL);
+  value = multiply_64(_mm256_xor_si256(value, _mm256_srli_epi64(value, 27)), 0x94d049bb133111ebULL);
+  return _mm256_xor_si256(value, _mm256_srli_epi64(value, 31));
+}
+
+// The low (or high) 32 bits of the 64-bit lanes of a (lanes 0-3) and b (lanes 4-7), in eight lanes.
+__attribute__((target("avx2"))) inline __m256i halves_8(__m256i a, __m256i b, bool high) {
+  const __m256 mixed = high ? _mm256_shuffle_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), _MM_SHUFFLE(3, 1, 3, 1))
+                            : _mm256_shuffle_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), _MM_SHUFFLE(2, 0, 2, 0));
+  // (a0 a1 b0 b1 | a2 a3 b2 b3) -> (a0 a1 a2 a3 | b0 b1 b2 b3)
+  return _mm256_permute4x64_epi64(_mm256_castps_si256(mixed), _MM_SHUFFLE(3, 1, 2, 0));
+}
+
+// laine_karras_permutation in eight lanes.
+__attribute__((target("avx2"))) inline __m256i laine_karras_8(__m256i x, __m256i seed) {
+  x = _mm256_xor_si256(x, _mm256_mullo_epi32(x, _mm256_set1_epi32(0x3d20adea)));
+  x = _mm256_add_epi32(x, seed);
+  x = _mm256_mullo_epi32(x, _mm256_or_si256(_mm256_srli_epi32(seed, 16), _mm256_set1_epi32(1)));
+  x = _mm256_xor_si256(x, _mm256_mullo_epi32(x, _mm256_set1_epi32(0x05526c56)));
+  x = _mm256_xor_si256(x, _mm256_mullo_epi32(x, _mm256_set1_epi32(0x53a22864)));
+  return x;
+}
+
+// reverse_bits in eight lanes: the bytes swapped, then each byte's bits by two table lookups of
+// its nibbles.
+__attribute__((target("avx2"))) inline __m256i reverse_bits_8(__m256i x) {
+  const __m256i swap_bytes = _mm256_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12,  //
+                                              3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12);
+  // A nibble n's four bits in the opposite order, in the high nibble of a byte (for the byte's low
+  // nibble) or the low one (for its high nibble).
+  alignas(16) static const std::uint8_t kReversedHigh[16] = {0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0,
+                                                              0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0};
+  alignas(16) static const std::uint8_t kReversedLow[16] = {0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe,
+                                                             0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf};
+  const __m256i reversed_high = _mm256_broadcastsi128_si256(_mm_load_si128(reinterpret_cast<const __m128i*>(kReversedHigh)));
+  const __m256i reversed_low = _mm256_broadcastsi128_si256(_mm_load_si128(reinterpret_cast<const __m128i*>(kReversedLow)));
+  const __m256i nibble = _mm256_set1_epi8(0x0f);
+  x = _mm256_shuffle_epi8(x, swap_bytes);
+  const __m256i low = _mm256_and_si256(x, nibble);
+  const __m256i high = _mm256_and_si256(_mm256_srli_epi16(x, 4), nibble);
+  return _mm256_or_si256(_mm256_shuffle_epi8(reversed_high, low), _mm256_shuffle_epi8(reversed_low, high));
+}
+
+// to_unit_float in eight lanes, stored.
+__attribute__((target("avx2"))) inline void store_unit_floats_8(float* out, __m256i fraction) {
+  const __m256 value = _mm256_cvtepi32_ps(_mm256_srli_epi32(fraction, 8));  // below 2^24: exact
+  _mm256_storeu_ps(out, _mm256_mul_ps(value, _mm256_set1_ps(0x1p-24f)));
+}
+
+}  // namespace
+
+__attribute__((target("avx2"))) static void fill_block_avx2(std::uint64_t pixel_key,
+                                                            std::uint32_t reversed_sample_index,
+                                                            std::uint32_t first_dimension, float first[],
+                                                            float second[]) {
+  // The keys (dimension_key), dimensions 0-3 and 4-7 of the block.
+  constexpr std::uint64_t kGolden = 0x9e3779b97f4a7c15ULL;
+  const auto lane = [&](std::uint32_t k) {  // (the dimension's number wraps at 2^32, as dimension_key's)
+    return static_cast<long long>(pixel_key + static_cast<std::uint64_t>(first_dimension + k) * kGolden);
+  };
+  const __m256i key_a = mix_bits_4(_mm256_setr_epi64x(lane(0), lane(1), lane(2), lane(3)));
+  const __m256i key_b = mix_bits_4(_mm256_setr_epi64x(lane(4), lane(5), lane(6), lane(7)));
+  // DimensionSeeds: shuffle the key's low half, first its high half, second the high half of key * constant.
+  constexpr std::uint64_t kSecond = 0xd1342543de82ef95ULL;
+  const __m256i shuffle = halves_8(key_a, key_b, false);
+  const __m256i first_seed = halves_8(key_a, key_b, true);
+  const __m256i second_seed = halves_8(multiply_64(key_a, kSecond), multiply_64(key_b, kSecond), true);
+  // owen_scramble_reversed of the reversed sample index: the shuffled index.
+  const __m256i index = reverse_bits_8(
+      laine_karras_8(_mm256_set1_epi32(static_cast<int>(reversed_sample_index)), shuffle));
+  store_unit_floats_8(first, reverse_bits_8(laine_karras_8(index, first_seed)));
+  // kSobolSecondDimension.of(index): its four tables, one per byte, gathered.
+  const int* const table = reinterpret_cast<const int*>(&kSobolSecondDimension.reversed[0][0]);
+  const __m256i byte = _mm256_set1_epi32(0xff);
+  __m256i sobol = _mm256_i32gather_epi32(table, _mm256_and_si256(index, byte), 4);
+  sobol = _mm256_xor_si256(
+      sobol, _mm256_i32gather_epi32(table + 256, _mm256_and_si256(_mm256_srli_epi32(index, 8), byte), 4));
+  sobol = _mm256_xor_si256(
+      sobol, _mm256_i32gather_epi32(table + 512, _mm256_and_si256(_mm256_srli_epi32(index, 16), byte), 4));
+  sobol = _mm256_xor_si256(sobol, _mm256_i32gather_epi32(table + 768, _mm256_srli_epi32(index, 24), 4));
+  store_unit_floats_8(second, reverse_bits_8(laine_karras_8(sobol, second_seed)));
+}
+#endif
+
+bool fill_dimension_block_avx2(std::uint64_t pixel_key, std::uint32_t reversed_sample_index,
+                               std::uint32_t first_dimension, float first[kBlockDimensions],
+                               float second[kBlockDimensions]) {
+#if RAYLAB_SAMPLER_AVX2
+  if (!__builtin_cpu_supports("avx2")) return false;  // (GCC's and Clang's check include the OS saving AVX state)
+  fill_block_avx2(pixel_key, reversed_sample_index, first_dimension, first, second);
+  return true;
+#else
+  (void)pixel_key, (void)reversed_sample_index, (void)first_dimension, (void)first, (void)second;
+  return false;
+#endif
+}
+
+namespace {
+using FillBlock = void (*)(std::uint64_t, std::uint32_t, std::uint32_t, float[], float[]);
+// The way this CPU takes, chosen once.
+FillBlock chosen_fill_block() {
+#if RAYLAB_SAMPLER_AVX2
+  __builtin_cpu_init();  // (in case a sampler draws before the constructors have run)
+  if (__builtin_cpu_supports("avx2")) return &fill_block_avx2;
+#endif
+  return &fill_dimension_block_one_by_one;
+}
+}  // namespace
+
+void fill_dimension_block(std::uint64_t pixel_key, std::uint32_t reversed_sample_index, std::uint32_t first_dimension,
+                          float first[kBlockDimensions], float second[kBlockDimensions]) {
+  static const FillBlock fill_block = chosen_fill_block();
+  fill_block(pixel_key, reversed_sample_index, first_dimension, first, second);
+}
+
+}  // namespace owen_sobol
 }  // namespace raylab

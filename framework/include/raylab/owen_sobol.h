@@ -3,6 +3,8 @@
 // a large share of a path's work; docs/07_sampling.md, section 9, explains them.
 #pragma once
 
+#include "raylab/random.h"
+
 #include <cstdint>
 
 namespace raylab::owen_sobol {
@@ -85,5 +87,38 @@ struct DimensionSeeds {
         first(static_cast<std::uint32_t>(key >> 32u)),
         second(static_cast<std::uint32_t>((key * 0xd1342543de82ef95ULL) >> 32u)) {}
 };
+
+// The numbers of one dimension of one pixel sample, from the dimension's key (dimension_key) and
+// the sample index with its bits reversed: `first`, its 1D number and a 2D point's x (the shuffled
+// index's van der Corput value, scrambled), and `second`, the 2D point's y (Sobol's second
+// dimension at the same index, scrambled on its own).
+inline void dimension_numbers(std::uint64_t key, std::uint32_t reversed_sample_index, float& first, float& second) {
+  const DimensionSeeds seeds(key);
+  const std::uint32_t index = owen_scramble_reversed(reversed_sample_index, seeds.shuffle);
+  first = to_unit_float(owen_scramble_reversed(index, seeds.first));
+  second = to_unit_float(owen_scramble_reversed(kSobolSecondDimension.of(index), seeds.second));
+}
+
+// The key of dimension `dimension` of a pixel sample whose pixel (with the seed) hashed to pixel_key.
+constexpr std::uint64_t dimension_key(std::uint64_t pixel_key, std::uint32_t dimension) {
+  return mix_bits(pixel_key + static_cast<std::uint64_t>(dimension) * 0x9e3779b97f4a7c15ULL);
+}
+
+// How many dimensions the sampler computes at once.
+constexpr int kBlockDimensions = 8;
+
+// dimension_numbers of the dimensions first_dimension, first_dimension + 1, ..., + 7 into
+// first[0 .. 7] and second[0 .. 7]: in the eight lanes of AVX2 where the CPU has it (chosen once,
+// sampler.cpp), else one after another. The same numbers, bit for bit, either way.
+void fill_dimension_block(std::uint64_t pixel_key, std::uint32_t reversed_sample_index, std::uint32_t first_dimension,
+                          float first[kBlockDimensions], float second[kBlockDimensions]);
+// Its two ways, for the tests: one dimension after another, and AVX2 (returns false, and writes
+// nothing, where this compiler or CPU has no AVX2).
+void fill_dimension_block_one_by_one(std::uint64_t pixel_key, std::uint32_t reversed_sample_index,
+                                     std::uint32_t first_dimension, float first[kBlockDimensions],
+                                     float second[kBlockDimensions]);
+bool fill_dimension_block_avx2(std::uint64_t pixel_key, std::uint32_t reversed_sample_index,
+                               std::uint32_t first_dimension, float first[kBlockDimensions],
+                               float second[kBlockDimensions]);
 
 }  // namespace raylab::owen_sobol

@@ -19,6 +19,8 @@
 // one sample per pixel is special, the pixel's centre), so a pixel that stops early, as
 // adaptive sampling does, keeps samples as well spread as a render of that count. Within its
 // cell a value is uniformly random. All values are in [0, 1). docs/07_sampling.md, section 9.
+// The numbers of eight dimensions are computed at once, when a draw needs one not held (see
+// fill_block below); a draw is then a comparison and a read.
 #pragma once
 
 #include "raylab/math.h"
@@ -49,6 +51,7 @@ class Sampler {
     pixel_key_ready_ = false;  // hashed at the first number drawn: a Whitted render draws none
     sample_index_ = static_cast<std::uint32_t>(sample_index);
     dimension_ = 0;
+    block_end_ = 0;  // the numbers held are another sample's
   }
 
   float get_1d();
@@ -68,7 +71,12 @@ class Sampler {
   int dimension() const { return dimension_; }
 
  private:
-  std::uint64_t dimension_key();
+  // The numbers of the next kBlockDimensions dimensions, from dimension_ on, computed together
+  // (owen_sobol::fill_dimension_block: eight dimensions in the lanes of AVX2 where the CPU has
+  // it, the same numbers either way). A draw then reads them: hashing each dimension on its own
+  // was a fifth of a path's instructions (docs/performance.md, "The sampler's numbers eight
+  // dimensions at a time").
+  void fill_block();
 
   int samples_per_pixel_ = 1;
   std::uint64_t seed_ = 0;
@@ -78,43 +86,36 @@ class Sampler {
   std::uint32_t sample_index_ = 0;
   std::uint32_t reversed_sample_index_ = 0;  // its bits reversed, with pixel_key_
   int dimension_ = 0;
+  int block_start_ = 0, block_end_ = 0;  // the dimensions [block_start_, block_end_) held below
+  float block_first_[owen_sobol::kBlockDimensions] = {};   // each one's 1D number (and 2D x)
+  float block_second_[owen_sobol::kBlockDimensions] = {};  // each one's 2D y
   bool constant_ = false;  // Sampler::constant: the numbers below at every dimension
   float constant_1d_ = 0.0f;
   glm::vec2 constant_2d_{0.0f};
 };
 
-// The draws, inline: they are a large share of a path's work.
-inline std::uint64_t Sampler::dimension_key() {
-  if (!pixel_key_ready_) {
-    pixel_key_ = mix_bits(pixel_ ^ mix_bits(seed_ + 0x9e3779b97f4a7c15ULL));
-    reversed_sample_index_ = owen_sobol::reverse_bits(sample_index_);
-    pixel_key_ready_ = true;
-  }
-  return mix_bits(pixel_key_ + static_cast<std::uint64_t>(dimension_++) * 0x9e3779b97f4a7c15ULL);
-}
-
+// The draws, inline: a comparison and a read, the block filled every kBlockDimensions draws.
 inline float Sampler::get_1d() {
-  if (constant_) {
-    ++dimension_;
-    return constant_1d_;
+  if (dimension_ >= block_end_) {
+    if (constant_) {
+      ++dimension_;
+      return constant_1d_;
+    }
+    fill_block();
   }
-  const owen_sobol::DimensionSeeds seeds(dimension_key());
-  // The sample index shuffled, then its van der Corput value (the index reversed), scrambled.
-  const std::uint32_t index = owen_sobol::owen_scramble_reversed(reversed_sample_index_, seeds.shuffle);
-  return owen_sobol::to_unit_float(owen_sobol::owen_scramble_reversed(index, seeds.first));
+  return block_first_[dimension_++ - block_start_];
 }
 
 inline glm::vec2 Sampler::get_2d() {
-  if (constant_) {
-    ++dimension_;
-    return constant_2d_;
+  if (dimension_ >= block_end_) {
+    if (constant_) {
+      ++dimension_;
+      return constant_2d_;
+    }
+    fill_block();
   }
-  // Sobol's first two dimensions at the shuffled index, each scrambled on its own.
-  const owen_sobol::DimensionSeeds seeds(dimension_key());
-  const std::uint32_t index = owen_sobol::owen_scramble_reversed(reversed_sample_index_, seeds.shuffle);
-  const std::uint32_t second_reversed = owen_sobol::kSobolSecondDimension.of(index);
-  return {owen_sobol::to_unit_float(owen_sobol::owen_scramble_reversed(index, seeds.first)),
-          owen_sobol::to_unit_float(owen_sobol::owen_scramble_reversed(second_reversed, seeds.second))};
+  const int at = dimension_++ - block_start_;
+  return {block_first_[at], block_second_[at]};
 }
 
 }  // namespace raylab
