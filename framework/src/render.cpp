@@ -151,6 +151,12 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   const bool by_noise = settings.samples_by_noise && samples_per_pixel > kPilotSamples;
   const bool one_plain_sample = samples_per_pixel == 1 && !settings.track_variance && !adaptive;
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
+  // One pixel sample: the sampler started at it, its camera ray, and the radiance along it.
+  const auto trace_sample = [&](int x, int y, int sample, Sampler& sampler, ShadingStats& tile_stats) {
+    sampler.start_pixel_sample(x, y, sample);
+    const Ray ray = camera_ray(camera, x, y, sampler.get_pixel_2d());
+    return integrator.li(context, ray, sampler, tile_stats);
+  };
 
   // The passes over the image (by noise: the pilot samples, then the rest), made by the same worker
   // threads: a worker takes a pass's tiles from its shared counter and writes only its tiles'
@@ -176,16 +182,12 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                         for (int y = tile.y0; y < tile.y1; ++y)
                           for (int x = tile.x0; x < tile.x1; ++x) {
                             if (one_plain_sample) {  // the mean of one sample is that sample: no film needed
-                              sampler.start_pixel_sample(x, y, 0);
-                              const Ray ray = camera_ray(camera, x, y, sampler.get_pixel_2d());
-                              output.mean.at(x, y) = integrator.li(context, ray, sampler, tile_stats);
+                              output.mean.at(x, y) = trace_sample(x, y, 0, sampler, tile_stats);
                               continue;
                             }
                             PixelConvergence convergence;  // adaptive sampling: a pixel's samples depend on it alone
                             for (int sample = 0; sample < samples_per_pixel; ++sample) {
-                              sampler.start_pixel_sample(x, y, sample);
-                              const Ray ray = camera_ray(camera, x, y, sampler.get_pixel_2d());
-                              const glm::vec3 value = integrator.li(context, ray, sampler, tile_stats);
+                              const glm::vec3 value = trace_sample(x, y, sample, sampler, tile_stats);
                               film->add_sample(x - tile.x0, y - tile.y0, value);
                               if (!adaptive) continue;
                               convergence.add(value);
@@ -212,9 +214,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                           for (int x = tile.x0; x < tile.x1; ++x) {
                             glm::dvec3 sum(0.0), sum_of_squares(0.0);
                             for (int sample = 0; sample < kPilotSamples; ++sample) {
-                              sampler.start_pixel_sample(x, y, sample);
-                              const Ray ray = camera_ray(camera, x, y, sampler.get_pixel_2d());
-                              const glm::vec3 value = integrator.li(context, ray, sampler, tile_stats);
+                              const glm::vec3 value = trace_sample(x, y, sample, sampler, tile_stats);
                               image_film->add_sample(x, y, value);
                               glm::dvec3 shown;
                               for (int c = 0; c < 3; ++c) shown[c] = value[c] > 0.0f ? std::min(value[c], 1.0f) : 0.0f;
@@ -238,9 +238,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                             const std::uint32_t share =
                                 shares[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)];
                             for (std::uint32_t sample = kPilotSamples; sample < share; ++sample) {
-                              sampler.start_pixel_sample(x, y, static_cast<int>(sample));
-                              const Ray ray = camera_ray(camera, x, y, sampler.get_pixel_2d());
-                              image_film->add_sample(x, y, integrator.li(context, ray, sampler, tile_stats));
+                              image_film->add_sample(x, y, trace_sample(x, y, static_cast<int>(sample), sampler, tile_stats));
                             }
                             output.mean.at(x, y) = image_film->mean_at(x, y);
                             if (settings.track_variance)
