@@ -210,8 +210,11 @@ TEST(Sampler, EightDimensionsAtOnceGiveTheNumbersOfOneAtATime) {
         trial % 3 == 0 ? random.next_uint32() % 64 : (trial % 3 == 1 ? 0xfffffffcu : random.next_uint32());
     float first[owen_sobol::kBlockDimensions], second[owen_sobol::kBlockDimensions];
     float wide_first[owen_sobol::kBlockDimensions], wide_second[owen_sobol::kBlockDimensions];
+    float avx2_first[owen_sobol::kBlockDimensions], avx2_second[owen_sobol::kBlockDimensions];
     owen_sobol::fill_dimension_block_one_by_one(pixel_key, reversed_index, first_dimension, first, second);
     owen_sobol::fill_dimension_block(pixel_key, reversed_index, first_dimension, wide_first, wide_second);
+    ASSERT_EQ(owen_sobol::fill_dimension_block_avx2(pixel_key, reversed_index, first_dimension, avx2_first, avx2_second),
+              avx2);
     for (int i = 0; i < owen_sobol::kBlockDimensions; ++i) {
       float expected_first = 0.0f, expected_second = 0.0f;
       owen_sobol::dimension_numbers(owen_sobol::dimension_key(pixel_key, first_dimension + static_cast<std::uint32_t>(i)),
@@ -220,6 +223,10 @@ TEST(Sampler, EightDimensionsAtOnceGiveTheNumbersOfOneAtATime) {
       ASSERT_EQ(second[i], expected_second) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
       ASSERT_EQ(wide_first[i], expected_first) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
       ASSERT_EQ(wide_second[i], expected_second) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
+      if (avx2) {
+        ASSERT_EQ(avx2_first[i], expected_first) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
+        ASSERT_EQ(avx2_second[i], expected_second) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
+      }
     }
   }
   // Through the sampler: 1D and 2D draws in a mixed order across the blocks' edges, a pixel sample
@@ -245,6 +252,37 @@ TEST(Sampler, EightDimensionsAtOnceGiveTheNumbersOfOneAtATime) {
         sampler.start_pixel_sample(x, 10, index);  // another pixel, its block not drawn out
         ASSERT_EQ(sampler.get_1d(), numbers_one_at_a_time(x, 10, index, 0, 5).x);
       }
+  }
+}
+
+TEST(Sampler, NumbersAreThoseTheImagesWereMadeWith) {
+  // Every rendered image depends on the sampler's numbers: these, drawn by the sampler of
+  // 295cc84 (one dimension hashed per draw), must not change when the way they are computed does.
+  struct Pinned {
+    int samples, x, y, index;
+    std::uint64_t seed;
+    glm::vec2 pixel;
+    float first_1d;
+    glm::vec2 first_2d, dimension_12;
+  };
+  const Pinned pinned[] = {
+      {16, 0, 0, 0, 0, {0x1.32ec1p-2f, 0x1.12a74p-6f}, 0x1.ddbf56p-1f, {0x1.2dcba8p-2f, 0x1.389d38p-3f},
+       {0x1.f1171ep-1f, 0x1.73d8fep-1f}},
+      {16, 5, 7, 3, 0, {0x1.07d88p-7f, 0x1.882544p-1f}, 0x1.9281e4p-2f, {0x1.f2a87cp-1f, 0x1.5cc948p-2f},
+       {0x1.89abcep-1f, 0x1.86f882p-1f}},
+      {64, 1000, 9, 63, 5, {0x1.7f4c54p-2f, 0x1.cbf89p-3f}, 0x1.fc6478p-2f, {0x1.8aeaa4p-1f, 0x1.3cd14p-6f},
+       {0x1.ab3c5ap-1f, 0x1.4baae8p-3f}},
+      {4, 3, 2, 1, 2, {0x1.0d2c96p-1f, 0x1.73f7p-3f}, 0x1.d866cp-4f, {0x1.d87296p-1f, 0x1.63b9a8p-3f},
+       {0x1.6d5312p-1f, 0x1.49fefp-3f}},
+  };
+  for (const Pinned& p : pinned) {
+    Sampler sampler(p.samples, p.seed);
+    sampler.start_pixel_sample(p.x, p.y, p.index);
+    EXPECT_EQ(sampler.get_pixel_2d(), p.pixel);
+    EXPECT_EQ(sampler.get_1d(), p.first_1d);
+    EXPECT_EQ(sampler.get_2d(), p.first_2d);
+    for (int i = 0; i < 9; ++i) (void)sampler.get_1d();
+    EXPECT_EQ(sampler.get_2d(), p.dimension_12);
   }
 }
 

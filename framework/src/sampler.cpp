@@ -135,14 +135,14 @@ __attribute__((target("avx2"))) static void fill_block_avx2(std::uint64_t pixel_
       laine_karras_8(_mm256_set1_epi32(static_cast<int>(reversed_sample_index)), shuffle));
   store_unit_floats_8(first, reverse_bits_8(laine_karras_8(index, first_seed)));
   // kSobolSecondDimension.of(index): its four tables, one per byte, gathered.
-  const int* const table = reinterpret_cast<const int*>(&kSobolSecondDimension.reversed[0][0]);
-  const __m256i byte = _mm256_set1_epi32(0xff);
-  __m256i sobol = _mm256_i32gather_epi32(table, _mm256_and_si256(index, byte), 4);
+  const auto table = [](int byte) { return reinterpret_cast<const int*>(kSobolSecondDimension.reversed[byte]); };
+  const __m256i low_byte = _mm256_set1_epi32(0xff);
+  __m256i sobol = _mm256_i32gather_epi32(table(0), _mm256_and_si256(index, low_byte), 4);
   sobol = _mm256_xor_si256(
-      sobol, _mm256_i32gather_epi32(table + 256, _mm256_and_si256(_mm256_srli_epi32(index, 8), byte), 4));
+      sobol, _mm256_i32gather_epi32(table(1), _mm256_and_si256(_mm256_srli_epi32(index, 8), low_byte), 4));
   sobol = _mm256_xor_si256(
-      sobol, _mm256_i32gather_epi32(table + 512, _mm256_and_si256(_mm256_srli_epi32(index, 16), byte), 4));
-  sobol = _mm256_xor_si256(sobol, _mm256_i32gather_epi32(table + 768, _mm256_srli_epi32(index, 24), 4));
+      sobol, _mm256_i32gather_epi32(table(2), _mm256_and_si256(_mm256_srli_epi32(index, 16), low_byte), 4));
+  sobol = _mm256_xor_si256(sobol, _mm256_i32gather_epi32(table(3), _mm256_srli_epi32(index, 24), 4));
   store_unit_floats_8(second, reverse_bits_8(laine_karras_8(sobol, second_seed)));
 }
 #endif

@@ -1,6 +1,7 @@
 // The arithmetic of the sampler's points (sampler.h): Owen-scrambled Sobol' numbers by Burley's
-// hash ("Practical Hash-based Owen Scrambling", JCGT 2020). Inline, as the sampler's draws are
-// a large share of a path's work; docs/07_sampling.md, section 9, explains them.
+// hash ("Practical Hash-based Owen Scrambling", JCGT 2020): dimension_numbers below defines a
+// dimension's numbers, and fill_dimension_block computes eight dimensions' at once for the sampler
+// (sampler.cpp); docs/07_sampling.md, section 9, explains them.
 #pragma once
 
 #include "raylab/random.h"

@@ -94,7 +94,7 @@ class Sampler {
   glm::vec2 constant_2d_{0.0f};
 };
 
-// The draws, inline: a comparison and a read, the block filled every kBlockDimensions draws.
+// The draws, inline: a comparison and a read; a block filled every kBlockDimensions dimensions.
 inline float Sampler::get_1d() {
   if (dimension_ >= block_end_) {
     if (constant_) {
