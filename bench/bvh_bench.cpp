@@ -515,7 +515,7 @@ void print_trees(const Fixture& f) {
                   tree.name.c_str(), f.mesh.triangle_count(), tree.wide->nodes.size());
       continue;
     }
-#if RAYLAB_REFERENCE_WIDE8  // (tree.wide8 is never set without it)
+#if RAYLAB_AVX2_COMPILES  // (tree.wide8 is never set without it)
     if (tree.wide8) {
       std::printf("  %-12s %-15s %9zu triangles  %9zu nodes of 8 children at most\n", f.mesh.name.c_str(),
                   tree.name.c_str(), f.mesh.triangle_count(),

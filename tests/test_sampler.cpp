@@ -180,12 +180,11 @@ TEST(Sampler, ConstantGivesItsNumbersAtEveryDimensionInAnyOrder) {
   EXPECT_THROW(Sampler::constant(0.5f, glm::vec2(-0.1f, 0.5f)), std::invalid_argument);
 }
 
-// A dimension's numbers as sampler.h defines them, one at a time: the pixel's key from the pixel
-// and the seed, the dimension's key, then owen_sobol::dimension_numbers.
+// A dimension's numbers as owen_sobol.h defines them, one at a time: the pixel's key, the
+// dimension's key, then dimension_numbers.
 glm::vec2 numbers_one_at_a_time(int x, int y, int index, int dimension, std::uint64_t seed) {
-  const std::uint64_t pixel = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32u) |
-                              static_cast<std::uint32_t>(x);
-  const std::uint64_t pixel_key = mix_bits(pixel ^ mix_bits(seed + 0x9e3779b97f4a7c15ULL));
+  const std::uint64_t pixel_key =
+      owen_sobol::pixel_key(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), seed);
   glm::vec2 numbers;
   owen_sobol::dimension_numbers(owen_sobol::dimension_key(pixel_key, static_cast<std::uint32_t>(dimension)),
                                 owen_sobol::reverse_bits(static_cast<std::uint32_t>(index)), numbers.x, numbers.y);

@@ -1,15 +1,9 @@
 #include "raylab/sampler.h"
 
+#include "raylab/avx2.h"
+
 #include <stdexcept>
 #include <string>
-
-// GCC or Clang on x86; not MinGW's GCC, which cannot align a 32-byte vector on the stack of a
-// Win64 function (GCC bug 54412), as solutions/05c_wide_bvh/wide8.h.
-#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__)) && \
-    !(defined(_WIN32) && !defined(__clang__))
-#include <immintrin.h>
-#define RAYLAB_SAMPLER_AVX2 1
-#endif
 
 namespace raylab {
 
@@ -31,7 +25,7 @@ Sampler Sampler::constant(float u1, glm::vec2 u2) {
 
 void Sampler::fill_block() {
   if (!pixel_key_ready_) {
-    pixel_key_ = mix_bits(pixel_ ^ mix_bits(seed_ + 0x9e3779b97f4a7c15ULL));
+    pixel_key_ = owen_sobol::pixel_key(pixel_x_, pixel_y_, seed_);
     reversed_sample_index_ = owen_sobol::reverse_bits(sample_index_);
     pixel_key_ready_ = true;
   }
@@ -50,7 +44,7 @@ void fill_dimension_block_one_by_one(std::uint64_t pixel_key, std::uint32_t reve
     dimension_numbers(dimension_key(pixel_key, first_dimension + i), reversed_sample_index, first[i], second[i]);
 }
 
-#if RAYLAB_SAMPLER_AVX2
+#if RAYLAB_AVX2_COMPILES
 namespace {
 
 // The low 64 bits of a * b in each 64-bit lane (AVX2 multiplies 32 by 32 bits): lo*lo + (hi*lo + lo*hi) << 32.
@@ -119,9 +113,8 @@ __attribute__((target("avx2"))) static void fill_block_avx2(std::uint64_t pixel_
                                                             std::uint32_t first_dimension, float first[],
                                                             float second[]) {
   // The keys (dimension_key), dimensions 0-3 and 4-7 of the block.
-  constexpr std::uint64_t kGolden = 0x9e3779b97f4a7c15ULL;
-  const auto lane = [&](std::uint32_t k) {  // (the dimension's number wraps at 2^32, as dimension_key's)
-    return static_cast<long long>(pixel_key + static_cast<std::uint64_t>(first_dimension + k) * kGolden);
+  const auto lane = [&](std::uint32_t k) {
+    return static_cast<long long>(dimension_key_unmixed(pixel_key, first_dimension + k));
   };
   const __m256i key_a = mix_bits_4(_mm256_setr_epi64x(lane(0), lane(1), lane(2), lane(3)));
   const __m256i key_b = mix_bits_4(_mm256_setr_epi64x(lane(4), lane(5), lane(6), lane(7)));
@@ -150,8 +143,8 @@ __attribute__((target("avx2"))) static void fill_block_avx2(std::uint64_t pixel_
 bool fill_dimension_block_avx2(std::uint64_t pixel_key, std::uint32_t reversed_sample_index,
                                std::uint32_t first_dimension, float first[kBlockDimensions],
                                float second[kBlockDimensions]) {
-#if RAYLAB_SAMPLER_AVX2
-  if (!__builtin_cpu_supports("avx2")) return false;  // (GCC's and Clang's check include the OS saving AVX state)
+#if RAYLAB_AVX2_COMPILES
+  if (!avx2_runs_here()) return false;
   fill_block_avx2(pixel_key, reversed_sample_index, first_dimension, first, second);
   return true;
 #else
@@ -164,9 +157,8 @@ namespace {
 using FillBlock = void (*)(std::uint64_t, std::uint32_t, std::uint32_t, float[], float[]);
 // The way this CPU takes, chosen once.
 FillBlock chosen_fill_block() {
-#if RAYLAB_SAMPLER_AVX2
-  __builtin_cpu_init();  // (in case a sampler draws before the constructors have run)
-  if (__builtin_cpu_supports("avx2")) return &fill_block_avx2;
+#if RAYLAB_AVX2_COMPILES
+  if (avx2_runs_here()) return &fill_block_avx2;
 #endif
   return &fill_dimension_block_one_by_one;
 }

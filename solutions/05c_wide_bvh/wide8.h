@@ -14,6 +14,7 @@
 
 #include "../05_bvh/leaf_test.h"
 
+#include "raylab/avx2.h"
 #include "raylab/geometry.h"
 #include "raylab/math.h"
 #include "raylab/stages/04_box.h"
@@ -26,26 +27,13 @@
 #include <optional>
 #include <vector>
 
-// GCC or Clang on x86; not MinGW's GCC, which cannot align a 32-byte vector on the stack of a
-// Win64 function (GCC bug 54412) and could crash on the spilled __m256 values.
-#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__)) && \
-    !(defined(_WIN32) && !defined(__clang__))
-#include <immintrin.h>
-#define RAYLAB_REFERENCE_WIDE8 1
-#endif
 
 namespace raylab::reference {
 
 // Whether the 8-wide tree is traced on this machine (else the 4-wide one is).
-inline bool eight_wide_tree_runs_here() {
-#if RAYLAB_REFERENCE_WIDE8
-  return __builtin_cpu_supports("avx2");  // (GCC's and Clang's check include the OS saving AVX state)
-#else
-  return false;
-#endif
-}
+inline bool eight_wide_tree_runs_here() { return avx2_runs_here(); }
 
-#if RAYLAB_REFERENCE_WIDE8
+#if RAYLAB_AVX2_COMPILES
 constexpr int kBvh8Width = 8;
 
 // As Bvh4Node (raylab/stages/05c_wide_bvh.h), eight slots: 256 bytes, four cache lines.
@@ -393,7 +381,7 @@ __attribute__((target("avx2"), flatten)) inline bool any_triangle_bvh8(const voi
 // What raylab-reference and bench/ hand the renderer: the 8-wide tree, or nullptr where this
 // compiler or CPU family has none (then the 4-wide tree is traced).
 inline const ReferenceTreeFunctions* reference_tree_functions() {
-#if RAYLAB_REFERENCE_WIDE8
+#if RAYLAB_AVX2_COMPILES
   static const ReferenceTreeFunctions functions{&build_bvh8_if_supported, &intersect_bvh8, &closest_triangle_bvh8,
                                                 &any_triangle_bvh8};
   return &functions;

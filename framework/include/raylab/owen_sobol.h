@@ -100,9 +100,18 @@ inline void dimension_numbers(std::uint64_t key, std::uint32_t reversed_sample_i
   second = to_unit_float(owen_scramble_reversed(kSobolSecondDimension.of(index), seeds.second));
 }
 
-// The key of dimension `dimension` of a pixel sample whose pixel (with the seed) hashed to pixel_key.
+// The key of a pixel's samples: its coordinates and the render's seed, hashed.
+constexpr std::uint64_t pixel_key(std::uint32_t pixel_x, std::uint32_t pixel_y, std::uint64_t seed) {
+  return mix_bits(((static_cast<std::uint64_t>(pixel_y) << 32u) | pixel_x) ^ mix_bits(seed + 0x9e3779b97f4a7c15ULL));
+}
+
+// The key of dimension `dimension` of a pixel sample whose pixel has the key pixel_key:
+// dimension_key_unmixed hashed (the dimension's number wraps at 2^32).
+constexpr std::uint64_t dimension_key_unmixed(std::uint64_t pixel_key, std::uint32_t dimension) {
+  return pixel_key + static_cast<std::uint64_t>(dimension) * 0x9e3779b97f4a7c15ULL;
+}
 constexpr std::uint64_t dimension_key(std::uint64_t pixel_key, std::uint32_t dimension) {
-  return mix_bits(pixel_key + static_cast<std::uint64_t>(dimension) * 0x9e3779b97f4a7c15ULL);
+  return mix_bits(dimension_key_unmixed(pixel_key, dimension));
 }
 
 // How many dimensions the sampler computes at once.

@@ -46,8 +46,8 @@ class Sampler {
   // Starts sample `sample_index` (0 .. samples_per_pixel - 1) of pixel (pixel_x, pixel_y), at
   // dimension 0.
   void start_pixel_sample(int pixel_x, int pixel_y, int sample_index) {
-    pixel_ = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(pixel_y)) << 32u) |
-             static_cast<std::uint32_t>(pixel_x);
+    pixel_x_ = static_cast<std::uint32_t>(pixel_x);
+    pixel_y_ = static_cast<std::uint32_t>(pixel_y);
     pixel_key_ready_ = false;  // hashed at the first number drawn: a Whitted render draws none
     sample_index_ = static_cast<std::uint32_t>(sample_index);
     dimension_ = 0;
@@ -80,8 +80,8 @@ class Sampler {
 
   int samples_per_pixel_ = 1;
   std::uint64_t seed_ = 0;
-  std::uint64_t pixel_ = 0;      // (pixel_y, pixel_x) in one number
-  std::uint64_t pixel_key_ = 0;  // its hash with the seed, once a number is drawn
+  std::uint32_t pixel_x_ = 0, pixel_y_ = 0;
+  std::uint64_t pixel_key_ = 0;  // owen_sobol::pixel_key, once a number is drawn
   bool pixel_key_ready_ = false;
   std::uint32_t sample_index_ = 0;
   std::uint32_t reversed_sample_index_ = 0;  // its bits reversed, with pixel_key_
