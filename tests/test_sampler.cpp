@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -192,13 +193,13 @@ glm::vec2 numbers_one_at_a_time(int x, int y, int index, int dimension, std::uin
 }
 
 TEST(Sampler, EightDimensionsAtOnceGiveTheNumbersOfOneAtATime) {
-  // The sampler computes eight dimensions together (with AVX2 where the CPU has it): the same
-  // numbers, bit for bit, as one at a time, at every key, sample index and dimension, also where
-  // the dimension's number wraps around 2^32.
+  // The sampler computes eight dimensions' seeds and numbers together (with AVX2 where the CPU has
+  // it): the same, bit for bit, as one at a time, at every key, sample index and dimension, also
+  // where the dimension's number wraps around 2^32.
   Pcg32 random(7, 11);
   const bool avx2 = [] {
-    float first[owen_sobol::kBlockDimensions], second[owen_sobol::kBlockDimensions];
-    return owen_sobol::fill_dimension_block_avx2(0, 0, 0, first, second);
+    owen_sobol::BlockSeeds seeds;
+    return owen_sobol::block_seeds_avx2(0, 0, seeds);
   }();
   if (!avx2) std::printf("(no AVX2 here: only the one-by-one way is checked)\n");
   for (int trial = 0; trial < 20000; ++trial) {
@@ -207,51 +208,73 @@ TEST(Sampler, EightDimensionsAtOnceGiveTheNumbersOfOneAtATime) {
                                                      : random.next_uint32();
     const std::uint32_t first_dimension =
         trial % 3 == 0 ? random.next_uint32() % 64 : (trial % 3 == 1 ? 0xfffffffcu : random.next_uint32());
+    owen_sobol::BlockSeeds seeds, wide_seeds, avx2_seeds;
+    owen_sobol::block_seeds_one_by_one(pixel_key, first_dimension, seeds);
+    owen_sobol::block_seeds(pixel_key, first_dimension, wide_seeds);
+    ASSERT_EQ(owen_sobol::block_seeds_avx2(pixel_key, first_dimension, avx2_seeds), avx2);
     float first[owen_sobol::kBlockDimensions], second[owen_sobol::kBlockDimensions];
     float wide_first[owen_sobol::kBlockDimensions], wide_second[owen_sobol::kBlockDimensions];
     float avx2_first[owen_sobol::kBlockDimensions], avx2_second[owen_sobol::kBlockDimensions];
-    owen_sobol::fill_dimension_block_one_by_one(pixel_key, reversed_index, first_dimension, first, second);
-    owen_sobol::fill_dimension_block(pixel_key, reversed_index, first_dimension, wide_first, wide_second);
-    ASSERT_EQ(owen_sobol::fill_dimension_block_avx2(pixel_key, reversed_index, first_dimension, avx2_first, avx2_second),
-              avx2);
+    owen_sobol::fill_dimension_block_one_by_one(seeds, reversed_index, first, second);
+    owen_sobol::fill_dimension_block(seeds, reversed_index, wide_first, wide_second);
+    ASSERT_EQ(owen_sobol::fill_dimension_block_avx2(seeds, reversed_index, avx2_first, avx2_second), avx2);
     for (int i = 0; i < owen_sobol::kBlockDimensions; ++i) {
+      const std::uint64_t key = owen_sobol::dimension_key(pixel_key, first_dimension + static_cast<std::uint32_t>(i));
+      const owen_sobol::DimensionSeeds expected_seeds(key);
+      const std::string where = "trial " + std::to_string(trial) + ", dimension " + std::to_string(first_dimension) +
+                                " + " + std::to_string(i);
+      for (const owen_sobol::BlockSeeds* way : {&seeds, &wide_seeds, avx2 ? &avx2_seeds : &seeds}) {
+        ASSERT_EQ(way->shuffle[i], expected_seeds.shuffle) << where;
+        ASSERT_EQ(way->first[i], expected_seeds.first) << where;
+        ASSERT_EQ(way->second[i], expected_seeds.second) << where;
+      }
       float expected_first = 0.0f, expected_second = 0.0f;
-      owen_sobol::dimension_numbers(owen_sobol::dimension_key(pixel_key, first_dimension + static_cast<std::uint32_t>(i)),
-                                    reversed_index, expected_first, expected_second);
-      ASSERT_EQ(first[i], expected_first) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
-      ASSERT_EQ(second[i], expected_second) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
-      ASSERT_EQ(wide_first[i], expected_first) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
-      ASSERT_EQ(wide_second[i], expected_second) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
+      owen_sobol::dimension_numbers(key, reversed_index, expected_first, expected_second);
+      ASSERT_EQ(first[i], expected_first) << where;
+      ASSERT_EQ(second[i], expected_second) << where;
+      ASSERT_EQ(wide_first[i], expected_first) << where;
+      ASSERT_EQ(wide_second[i], expected_second) << where;
       if (avx2) {
-        ASSERT_EQ(avx2_first[i], expected_first) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
-        ASSERT_EQ(avx2_second[i], expected_second) << "trial " << trial << ", dimension " << first_dimension << " + " << i;
+        ASSERT_EQ(avx2_first[i], expected_first) << where;
+        ASSERT_EQ(avx2_second[i], expected_second) << where;
       }
     }
   }
-  // Through the sampler: 1D and 2D draws in a mixed order across the blocks' edges, a pixel sample
-  // started again in the middle of a block, and the skipped dimension of a 1-spp pixel centre.
+  // Through the sampler, which keeps a pixel's seeds for its next samples: 1D and 2D draws in a
+  // mixed order across the blocks' edges and past the seeds it keeps (dimension 64 on), a pixel
+  // sample started again in the middle of a block, the skipped dimension of a 1-spp pixel centre,
+  // samples of one pixel in turn and of pixels in turn, and a pixel come back to.
+  const auto check_draws = [](Sampler& sampler, int x, int y, int index, int samples, int dimensions) {
+    sampler.start_pixel_sample(x, y, index);
+    const glm::vec2 pixel = sampler.get_pixel_2d();
+    if (samples > 1) {
+      EXPECT_EQ(pixel, numbers_one_at_a_time(x, y, index, 0, 5));
+    }
+    for (int dimension = 1; dimension < dimensions; ++dimension) {
+      const glm::vec2 expected = numbers_one_at_a_time(x, y, index, dimension, 5);
+      if (dimension % 3 == 0) {
+        ASSERT_EQ(sampler.get_2d(), expected) << "pixel " << x << ", " << y << " sample " << index << " dimension "
+                                              << dimension;
+      } else {
+        ASSERT_EQ(sampler.get_1d(), expected.x) << "pixel " << x << ", " << y << " sample " << index
+                                                << " dimension " << dimension;
+      }
+    }
+  };
   for (const int samples : {1, 16}) {
     Sampler sampler(samples, 5);
-    for (int index = 0; index < samples; ++index)
+    for (int index = 0; index < samples; ++index)  // pixels in turn
       for (const int x : {0, 3, 1000}) {
-        sampler.start_pixel_sample(x, 9, index);
-        int dimension = 0;
-        const glm::vec2 pixel = sampler.get_pixel_2d();
-        if (samples > 1) {
-          EXPECT_EQ(pixel, numbers_one_at_a_time(x, 9, index, dimension, 5));
-        }
-        for (dimension = 1; dimension < 30; ++dimension) {
-          const glm::vec2 expected = numbers_one_at_a_time(x, 9, index, dimension, 5);
-          if (dimension % 3 == 0) {
-            ASSERT_EQ(sampler.get_2d(), expected) << "dimension " << dimension;
-          } else {
-            ASSERT_EQ(sampler.get_1d(), expected.x) << "dimension " << dimension;
-          }
-        }
+        check_draws(sampler, x, 9, index, samples, 30);
         sampler.start_pixel_sample(x, 10, index);  // another pixel, its block not drawn out
         ASSERT_EQ(sampler.get_1d(), numbers_one_at_a_time(x, 10, index, 0, 5).x);
       }
+    for (const int x : {3, 4, 3})  // a pixel's samples in turn, as a render takes them
+      for (int index = 0; index < samples; ++index) check_draws(sampler, x, 9, index, samples, 3 + 7 * index);
   }
+  Sampler sampler(16, 5);
+  for (int index = 0; index < 16; ++index) check_draws(sampler, 7, 2, index, 16, index % 2 ? 80 : 20);
+  for (int index = 15; index >= 0; --index) check_draws(sampler, 7, 2, index, 16, 100);
 }
 
 TEST(Sampler, NumbersAreThoseTheImagesWereMadeWith) {

@@ -26,22 +26,48 @@ Sampler Sampler::constant(float u1, glm::vec2 u2) {
 void Sampler::fill_block() {
   if (!pixel_key_ready_) {
     pixel_key_ = owen_sobol::pixel_key(pixel_x_, pixel_y_, seed_);
-    reversed_sample_index_ = owen_sobol::reverse_bits(sample_index_);
     pixel_key_ready_ = true;
+    seeds_held_ = 0;
   }
-  owen_sobol::fill_dimension_block(pixel_key_, reversed_sample_index_, static_cast<std::uint32_t>(dimension_),
-                                   block_first_, block_second_);
-  block_start_ = dimension_;
-  block_end_ = dimension_ + owen_sobol::kBlockDimensions;
+  if (!sample_index_ready_) {
+    reversed_sample_index_ = owen_sobol::reverse_bits(sample_index_);
+    sample_index_ready_ = true;
+  }
+  // The block holding dimension_: blocks start at multiples of eight, so that a pixel's samples
+  // share their seeds.
+  const auto block = static_cast<std::uint32_t>(dimension_) / owen_sobol::kBlockDimensions;
+  const std::uint32_t first_dimension = block * owen_sobol::kBlockDimensions;
+  owen_sobol::BlockSeeds* seeds = &extra_seeds_;
+  if (block < kSeedBlocksHeld) {
+    seeds = &seeds_[block];
+    if (!(seeds_held_ & (1u << block))) {
+      owen_sobol::block_seeds(pixel_key_, first_dimension, *seeds);
+      seeds_held_ |= 1u << block;
+    }
+  } else {
+    owen_sobol::block_seeds(pixel_key_, first_dimension, *seeds);
+  }
+  owen_sobol::fill_dimension_block(*seeds, reversed_sample_index_, block_first_, block_second_);
+  block_start_ = static_cast<int>(first_dimension);
+  block_end_ = block_start_ + owen_sobol::kBlockDimensions;
 }
 
 namespace owen_sobol {
 
-void fill_dimension_block_one_by_one(std::uint64_t pixel_key, std::uint32_t reversed_sample_index,
-                                     std::uint32_t first_dimension, float first[kBlockDimensions],
-                                     float second[kBlockDimensions]) {
-  for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(kBlockDimensions); ++i)
-    dimension_numbers(dimension_key(pixel_key, first_dimension + i), reversed_sample_index, first[i], second[i]);
+void block_seeds_one_by_one(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSeeds& seeds) {
+  for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(kBlockDimensions); ++i) {
+    const DimensionSeeds dimension(dimension_key(pixel_key, first_dimension + i));
+    seeds.shuffle[i] = dimension.shuffle;
+    seeds.first[i] = dimension.first;
+    seeds.second[i] = dimension.second;
+  }
+}
+
+void fill_dimension_block_one_by_one(const BlockSeeds& seeds, std::uint32_t reversed_sample_index,
+                                     float first[kBlockDimensions], float second[kBlockDimensions]) {
+  for (int i = 0; i < kBlockDimensions; ++i)
+    dimension_numbers(DimensionSeeds(seeds.shuffle[i], seeds.first[i], seeds.second[i]), reversed_sample_index,
+                      first[i], second[i]);
 }
 
 #if RAYLAB_AVX2_COMPILES
@@ -100,6 +126,11 @@ __attribute__((target("avx2"))) inline __m256i reverse_bits_8(__m256i x) {
   return _mm256_or_si256(_mm256_shuffle_epi8(reversed_high, low), _mm256_shuffle_epi8(reversed_low, high));
 }
 
+// A block's column of seeds, in eight lanes.
+__attribute__((target("avx2"))) inline __m256i load(const std::uint32_t column[kBlockDimensions]) {
+  return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(column));
+}
+
 // to_unit_float in eight lanes, stored.
 __attribute__((target("avx2"))) inline void store_unit_floats_8(float* out, __m256i fraction) {
   const __m256 value = _mm256_cvtepi32_ps(_mm256_srli_epi32(fraction, 8));  // below 2^24: exact
@@ -108,10 +139,8 @@ __attribute__((target("avx2"))) inline void store_unit_floats_8(float* out, __m2
 
 }  // namespace
 
-__attribute__((target("avx2"))) static void fill_block_avx2(std::uint64_t pixel_key,
-                                                            std::uint32_t reversed_sample_index,
-                                                            std::uint32_t first_dimension, float first[],
-                                                            float second[]) {
+__attribute__((target("avx2"))) static void block_seeds_avx2_lanes(std::uint64_t pixel_key,
+                                                                   std::uint32_t first_dimension, BlockSeeds& seeds) {
   // The keys (dimension_key), dimensions 0-3 and 4-7 of the block.
   const auto lane = [&](std::uint32_t k) {
     return static_cast<long long>(dimension_key_unmixed(pixel_key, first_dimension + k));
@@ -120,13 +149,19 @@ __attribute__((target("avx2"))) static void fill_block_avx2(std::uint64_t pixel_
   const __m256i key_b = mix_bits_4(_mm256_setr_epi64x(lane(4), lane(5), lane(6), lane(7)));
   // DimensionSeeds: shuffle the key's low half, first its high half, second the high half of key * constant.
   constexpr std::uint64_t kSecond = 0xd1342543de82ef95ULL;
-  const __m256i shuffle = halves_8(key_a, key_b, false);
-  const __m256i first_seed = halves_8(key_a, key_b, true);
-  const __m256i second_seed = halves_8(multiply_64(key_a, kSecond), multiply_64(key_b, kSecond), true);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(seeds.shuffle), halves_8(key_a, key_b, false));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(seeds.first), halves_8(key_a, key_b, true));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(seeds.second),
+                     halves_8(multiply_64(key_a, kSecond), multiply_64(key_b, kSecond), true));
+}
+
+__attribute__((target("avx2"))) static void fill_block_avx2(const BlockSeeds& seeds,
+                                                            std::uint32_t reversed_sample_index, float first[],
+                                                            float second[]) {
   // owen_scramble_reversed of the reversed sample index: the shuffled index.
   const __m256i index = reverse_bits_8(
-      laine_karras_8(_mm256_set1_epi32(static_cast<int>(reversed_sample_index)), shuffle));
-  store_unit_floats_8(first, reverse_bits_8(laine_karras_8(index, first_seed)));
+      laine_karras_8(_mm256_set1_epi32(static_cast<int>(reversed_sample_index)), load(seeds.shuffle)));
+  store_unit_floats_8(first, reverse_bits_8(laine_karras_8(index, load(seeds.first))));
   // kSobolSecondDimension.of(index): its four tables, one per byte, gathered.
   const auto table = [](int byte) { return reinterpret_cast<const int*>(kSobolSecondDimension.reversed[byte]); };
   const __m256i low_byte = _mm256_set1_epi32(0xff);
@@ -136,27 +171,44 @@ __attribute__((target("avx2"))) static void fill_block_avx2(std::uint64_t pixel_
   sobol = _mm256_xor_si256(
       sobol, _mm256_i32gather_epi32(table(2), _mm256_and_si256(_mm256_srli_epi32(index, 16), low_byte), 4));
   sobol = _mm256_xor_si256(sobol, _mm256_i32gather_epi32(table(3), _mm256_srli_epi32(index, 24), 4));
-  store_unit_floats_8(second, reverse_bits_8(laine_karras_8(sobol, second_seed)));
+  store_unit_floats_8(second, reverse_bits_8(laine_karras_8(sobol, load(seeds.second))));
 }
 #endif
 
-bool fill_dimension_block_avx2(std::uint64_t pixel_key, std::uint32_t reversed_sample_index,
-                               std::uint32_t first_dimension, float first[kBlockDimensions],
-                               float second[kBlockDimensions]) {
+bool block_seeds_avx2(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSeeds& seeds) {
 #if RAYLAB_AVX2_COMPILES
   if (!avx2_runs_here()) return false;
-  fill_block_avx2(pixel_key, reversed_sample_index, first_dimension, first, second);
+  block_seeds_avx2_lanes(pixel_key, first_dimension, seeds);
   return true;
 #else
-  (void)pixel_key, (void)reversed_sample_index, (void)first_dimension, (void)first, (void)second;
+  (void)pixel_key, (void)first_dimension, (void)seeds;
+  return false;
+#endif
+}
+
+bool fill_dimension_block_avx2(const BlockSeeds& seeds, std::uint32_t reversed_sample_index,
+                               float first[kBlockDimensions], float second[kBlockDimensions]) {
+#if RAYLAB_AVX2_COMPILES
+  if (!avx2_runs_here()) return false;
+  fill_block_avx2(seeds, reversed_sample_index, first, second);
+  return true;
+#else
+  (void)seeds, (void)reversed_sample_index, (void)first, (void)second;
   return false;
 #endif
 }
 
 namespace {
-using FillBlock = void (*)(std::uint64_t, std::uint32_t, std::uint32_t, float[], float[]);
-// The way this CPU takes, chosen once.
-FillBlock chosen_fill_block() {
+// The ways this CPU takes, chosen once.
+using BlockSeedsWay = void (*)(std::uint64_t, std::uint32_t, BlockSeeds&);
+using FillBlockWay = void (*)(const BlockSeeds&, std::uint32_t, float[], float[]);
+BlockSeedsWay chosen_block_seeds() {
+#if RAYLAB_AVX2_COMPILES
+  if (avx2_runs_here()) return &block_seeds_avx2_lanes;
+#endif
+  return &block_seeds_one_by_one;
+}
+FillBlockWay chosen_fill_block() {
 #if RAYLAB_AVX2_COMPILES
   if (avx2_runs_here()) return &fill_block_avx2;
 #endif
@@ -164,10 +216,15 @@ FillBlock chosen_fill_block() {
 }
 }  // namespace
 
-void fill_dimension_block(std::uint64_t pixel_key, std::uint32_t reversed_sample_index, std::uint32_t first_dimension,
-                          float first[kBlockDimensions], float second[kBlockDimensions]) {
-  static const FillBlock fill_block = chosen_fill_block();
-  fill_block(pixel_key, reversed_sample_index, first_dimension, first, second);
+void block_seeds(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSeeds& seeds) {
+  static const BlockSeedsWay way = chosen_block_seeds();
+  way(pixel_key, first_dimension, seeds);
+}
+
+void fill_dimension_block(const BlockSeeds& seeds, std::uint32_t reversed_sample_index, float first[kBlockDimensions],
+                          float second[kBlockDimensions]) {
+  static const FillBlockWay way = chosen_fill_block();
+  way(seeds, reversed_sample_index, first, second);
 }
 
 }  // namespace owen_sobol

@@ -80,24 +80,30 @@ static_assert(kSobolSecondDimension.of(3u) == reverse_bits(0x80000000u ^ 0xc0000
 inline float to_unit_float(std::uint32_t fraction) { return static_cast<float>(fraction >> 8u) * 0x1p-24f; }
 
 // One dimension's three scramblings from its 64-bit key: the shuffle of the sample index, and the
-// Owen scrambling of each coordinate.
+// Owen scrambling of each coordinate. They depend on the pixel and the dimension, not on the
+// sample: the sampler keeps them for a pixel's samples.
 struct DimensionSeeds {
   std::uint32_t shuffle, first, second;
   explicit DimensionSeeds(std::uint64_t key)
       : shuffle(static_cast<std::uint32_t>(key)),
         first(static_cast<std::uint32_t>(key >> 32u)),
         second(static_cast<std::uint32_t>((key * 0xd1342543de82ef95ULL) >> 32u)) {}
+  DimensionSeeds(std::uint32_t shuffle_seed, std::uint32_t first_seed, std::uint32_t second_seed)
+      : shuffle(shuffle_seed), first(first_seed), second(second_seed) {}
 };
 
-// The numbers of one dimension of one pixel sample, from the dimension's key (dimension_key) and
-// the sample index with its bits reversed: `first`, its 1D number and a 2D point's x (the shuffled
-// index's van der Corput value, scrambled), and `second`, the 2D point's y (Sobol's second
-// dimension at the same index, scrambled on its own).
-inline void dimension_numbers(std::uint64_t key, std::uint32_t reversed_sample_index, float& first, float& second) {
-  const DimensionSeeds seeds(key);
+// The numbers of one dimension of one pixel sample, from the dimension's seeds (of its key,
+// dimension_key) and the sample index with its bits reversed: `first`, its 1D number and a 2D
+// point's x (the shuffled index's van der Corput value, scrambled), and `second`, the 2D point's y
+// (Sobol's second dimension at the same index, scrambled on its own).
+inline void dimension_numbers(const DimensionSeeds& seeds, std::uint32_t reversed_sample_index, float& first,
+                              float& second) {
   const std::uint32_t index = owen_scramble_reversed(reversed_sample_index, seeds.shuffle);
   first = to_unit_float(owen_scramble_reversed(index, seeds.first));
   second = to_unit_float(owen_scramble_reversed(kSobolSecondDimension.of(index), seeds.second));
+}
+inline void dimension_numbers(std::uint64_t key, std::uint32_t reversed_sample_index, float& first, float& second) {
+  dimension_numbers(DimensionSeeds(key), reversed_sample_index, first, second);
 }
 
 // The key of a pixel's samples: its coordinates and the render's seed, hashed.
@@ -117,18 +123,28 @@ constexpr std::uint64_t dimension_key(std::uint64_t pixel_key, std::uint32_t dim
 // How many dimensions the sampler computes at once.
 constexpr int kBlockDimensions = 8;
 
-// dimension_numbers of the dimensions first_dimension, first_dimension + 1, ..., + 7 into
-// first[0 .. 7] and second[0 .. 7]: in the eight lanes of AVX2 where the CPU has it (chosen once,
-// sampler.cpp), else one after another. The same numbers, bit for bit, either way.
-void fill_dimension_block(std::uint64_t pixel_key, std::uint32_t reversed_sample_index, std::uint32_t first_dimension,
-                          float first[kBlockDimensions], float second[kBlockDimensions]);
-// Its two ways, for the tests: one dimension after another, and AVX2 (returns false, and writes
-// nothing, where this compiler or CPU has no AVX2).
-void fill_dimension_block_one_by_one(std::uint64_t pixel_key, std::uint32_t reversed_sample_index,
-                                     std::uint32_t first_dimension, float first[kBlockDimensions],
-                                     float second[kBlockDimensions]);
-bool fill_dimension_block_avx2(std::uint64_t pixel_key, std::uint32_t reversed_sample_index,
-                               std::uint32_t first_dimension, float first[kBlockDimensions],
-                               float second[kBlockDimensions]);
+// The seeds (DimensionSeeds) of eight dimensions of a pixel, as columns for the lanes of AVX2.
+struct BlockSeeds {
+  std::uint32_t shuffle[kBlockDimensions];
+  std::uint32_t first[kBlockDimensions];
+  std::uint32_t second[kBlockDimensions];
+};
+
+// The seeds of the dimensions first_dimension, first_dimension + 1, ..., + 7 of the pixel whose
+// key is pixel_key (DimensionSeeds of dimension_key).
+void block_seeds(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSeeds& seeds);
+// dimension_numbers of a block's eight dimensions for one pixel sample into first[0 .. 7] and
+// second[0 .. 7].
+void fill_dimension_block(const BlockSeeds& seeds, std::uint32_t reversed_sample_index, float first[kBlockDimensions],
+                          float second[kBlockDimensions]);
+// Both compute in the eight lanes of AVX2 where the CPU has it (chosen once, sampler.cpp), else
+// one dimension after another: the same numbers, bit for bit, either way. Their two ways, for the
+// tests (the AVX2 ones return false, and write nothing, where this compiler or CPU has no AVX2):
+void block_seeds_one_by_one(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSeeds& seeds);
+bool block_seeds_avx2(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSeeds& seeds);
+void fill_dimension_block_one_by_one(const BlockSeeds& seeds, std::uint32_t reversed_sample_index,
+                                     float first[kBlockDimensions], float second[kBlockDimensions]);
+bool fill_dimension_block_avx2(const BlockSeeds& seeds, std::uint32_t reversed_sample_index,
+                               float first[kBlockDimensions], float second[kBlockDimensions]);
 
 }  // namespace raylab::owen_sobol

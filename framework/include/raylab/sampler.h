@@ -46,10 +46,13 @@ class Sampler {
   // Starts sample `sample_index` (0 .. samples_per_pixel - 1) of pixel (pixel_x, pixel_y), at
   // dimension 0.
   void start_pixel_sample(int pixel_x, int pixel_y, int sample_index) {
-    pixel_x_ = static_cast<std::uint32_t>(pixel_x);
-    pixel_y_ = static_cast<std::uint32_t>(pixel_y);
-    pixel_key_ready_ = false;  // hashed at the first number drawn: a Whitted render draws none
+    if (static_cast<std::uint32_t>(pixel_x) != pixel_x_ || static_cast<std::uint32_t>(pixel_y) != pixel_y_) {
+      pixel_x_ = static_cast<std::uint32_t>(pixel_x);
+      pixel_y_ = static_cast<std::uint32_t>(pixel_y);
+      pixel_key_ready_ = false;  // hashed at the first number drawn: a Whitted render draws none
+    }
     sample_index_ = static_cast<std::uint32_t>(sample_index);
+    sample_index_ready_ = false;
     dimension_ = 0;
     block_end_ = 0;  // the numbers held are another sample's
   }
@@ -71,24 +74,32 @@ class Sampler {
   int dimension() const { return dimension_; }
 
  private:
-  // The numbers of the next kBlockDimensions dimensions, from dimension_ on, computed together
-  // (owen_sobol::fill_dimension_block: eight dimensions in the lanes of AVX2 where the CPU has
-  // it, the same numbers either way). A draw then reads them: hashing each dimension on its own
-  // was a fifth of a path's instructions (docs/performance.md, "The sampler's numbers eight
-  // dimensions at a time").
+  // The numbers of the kBlockDimensions dimensions of the block that holds dimension_ (blocks
+  // start at multiples of kBlockDimensions), computed together (owen_sobol::fill_dimension_block:
+  // eight dimensions in the lanes of AVX2 where the CPU has it, the same numbers either way). A
+  // draw then reads them: hashing each dimension on its own was a fifth of a path's instructions
+  // (docs/performance.md, "The sampler's numbers eight dimensions at a time"). The blocks' seeds
+  // depend on the pixel, not on the sample: the first kSeedBlocksHeld blocks' are kept for the
+  // pixel's next samples ("The seeds kept for a pixel's samples").
   void fill_block();
+
+  static constexpr std::uint32_t kSeedBlocksHeld = 8;  // dimensions 0-63
 
   int samples_per_pixel_ = 1;
   std::uint64_t seed_ = 0;
   std::uint32_t pixel_x_ = 0, pixel_y_ = 0;
   std::uint64_t pixel_key_ = 0;  // owen_sobol::pixel_key, once a number is drawn
   bool pixel_key_ready_ = false;
+  std::uint32_t seeds_held_ = 0;  // bit b: seeds_[b] holds block b's seeds for this pixel (with pixel_key_)
   std::uint32_t sample_index_ = 0;
-  std::uint32_t reversed_sample_index_ = 0;  // its bits reversed, with pixel_key_
+  std::uint32_t reversed_sample_index_ = 0;  // its bits reversed, once a number is drawn
+  bool sample_index_ready_ = false;
   int dimension_ = 0;
   int block_start_ = 0, block_end_ = 0;  // the dimensions [block_start_, block_end_) held below
   float block_first_[owen_sobol::kBlockDimensions] = {};   // each one's 1D number (and 2D x)
   float block_second_[owen_sobol::kBlockDimensions] = {};  // each one's 2D y
+  owen_sobol::BlockSeeds seeds_[kSeedBlocksHeld];  // read only where seeds_held_ says
+  owen_sobol::BlockSeeds extra_seeds_;             // a block's past them, not kept
   bool constant_ = false;  // Sampler::constant: the numbers below at every dimension
   float constant_1d_ = 0.0f;
   glm::vec2 constant_2d_{0.0f};
