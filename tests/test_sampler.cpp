@@ -192,41 +192,49 @@ glm::vec2 numbers_one_at_a_time(int x, int y, int index, int dimension, std::uin
   return numbers;
 }
 
-TEST(Sampler, EightDimensionsAtOnceGiveTheNumbersOfOneAtATime) {
-  // The sampler computes eight dimensions' seeds and numbers together (with AVX2 where the CPU has
-  // it): the same, bit for bit, as one at a time, at every key, sample index and dimension, also
-  // where the dimension's number wraps around 2^32.
+TEST(Sampler, SixteenDimensionsAtOnceGiveTheNumbersOfOneAtATime) {
+  // The sampler computes blocks of eight dimensions' seeds, and two blocks' numbers, together (with
+  // AVX2 where the CPU has it): the same, bit for bit, as one at a time, at every key, sample index
+  // and dimension, also where the dimension's number wraps around 2^32.
   Pcg32 random(7, 11);
   const bool avx2 = [] {
     owen_sobol::BlockSeeds seeds;
     return owen_sobol::block_seeds_avx2(0, 0, seeds);
   }();
   if (!avx2) std::printf("(no AVX2 here: only the one-by-one way is checked)\n");
+  constexpr int kBlock = owen_sobol::kBlockDimensions;
+  constexpr int kAtOnce = owen_sobol::kDimensionsAtOnce;
   for (int trial = 0; trial < 20000; ++trial) {
     const std::uint64_t pixel_key = (static_cast<std::uint64_t>(random.next_uint32()) << 32u) | random.next_uint32();
     const std::uint32_t reversed_index = trial < 100 ? owen_sobol::reverse_bits(static_cast<std::uint32_t>(trial))
                                                      : random.next_uint32();
-    const std::uint32_t first_dimension =
-        trial % 3 == 0 ? random.next_uint32() % 64 : (trial % 3 == 1 ? 0xfffffffcu : random.next_uint32());
-    owen_sobol::BlockSeeds seeds, wide_seeds, avx2_seeds;
-    owen_sobol::block_seeds_one_by_one(pixel_key, first_dimension, seeds);
-    owen_sobol::block_seeds(pixel_key, first_dimension, wide_seeds);
-    ASSERT_EQ(owen_sobol::block_seeds_avx2(pixel_key, first_dimension, avx2_seeds), avx2);
-    float first[owen_sobol::kBlockDimensions], second[owen_sobol::kBlockDimensions];
-    float wide_first[owen_sobol::kBlockDimensions], wide_second[owen_sobol::kBlockDimensions];
-    float avx2_first[owen_sobol::kBlockDimensions], avx2_second[owen_sobol::kBlockDimensions];
-    owen_sobol::fill_dimension_block_one_by_one(seeds, reversed_index, first, second);
-    owen_sobol::fill_dimension_block(seeds, reversed_index, wide_first, wide_second);
-    ASSERT_EQ(owen_sobol::fill_dimension_block_avx2(seeds, reversed_index, avx2_first, avx2_second), avx2);
-    for (int i = 0; i < owen_sobol::kBlockDimensions; ++i) {
-      const std::uint64_t key = owen_sobol::dimension_key(pixel_key, first_dimension + static_cast<std::uint32_t>(i));
+    // Two blocks, each from any dimension (the sampler's are consecutive, from a multiple of 16).
+    std::uint32_t first_dimensions[2];
+    for (std::uint32_t& first_dimension : first_dimensions)
+      first_dimension =
+          trial % 3 == 0 ? random.next_uint32() % 64 : (trial % 3 == 1 ? 0xfffffffcu : random.next_uint32());
+    owen_sobol::BlockSeeds seeds[2], wide_seeds[2], avx2_seeds[2];
+    for (int b = 0; b < 2; ++b) {
+      owen_sobol::block_seeds_one_by_one(pixel_key, first_dimensions[b], seeds[b]);
+      owen_sobol::block_seeds(pixel_key, first_dimensions[b], wide_seeds[b]);
+      ASSERT_EQ(owen_sobol::block_seeds_avx2(pixel_key, first_dimensions[b], avx2_seeds[b]), avx2);
+    }
+    float first[kAtOnce], second[kAtOnce], wide_first[kAtOnce], wide_second[kAtOnce];
+    float avx2_first[kAtOnce], avx2_second[kAtOnce];
+    owen_sobol::fill_dimension_blocks_one_by_one(seeds[0], seeds[1], reversed_index, first, second);
+    owen_sobol::fill_dimension_blocks(seeds[0], seeds[1], reversed_index, wide_first, wide_second);
+    ASSERT_EQ(owen_sobol::fill_dimension_blocks_avx2(seeds[0], seeds[1], reversed_index, avx2_first, avx2_second),
+              avx2);
+    for (int i = 0; i < kAtOnce; ++i) {
+      const int b = i / kBlock, lane = i % kBlock;
+      const std::uint32_t dimension = first_dimensions[b] + static_cast<std::uint32_t>(lane);
+      const std::uint64_t key = owen_sobol::dimension_key(pixel_key, dimension);
       const owen_sobol::DimensionSeeds expected_seeds(key);
-      const std::string where = "trial " + std::to_string(trial) + ", dimension " + std::to_string(first_dimension) +
-                                " + " + std::to_string(i);
-      for (const owen_sobol::BlockSeeds* way : {&seeds, &wide_seeds, avx2 ? &avx2_seeds : &seeds}) {
-        ASSERT_EQ(way->shuffle[i], expected_seeds.shuffle) << where;
-        ASSERT_EQ(way->first[i], expected_seeds.first) << where;
-        ASSERT_EQ(way->second[i], expected_seeds.second) << where;
+      const std::string where = "trial " + std::to_string(trial) + ", dimension " + std::to_string(dimension);
+      for (const owen_sobol::BlockSeeds* way : {&seeds[b], &wide_seeds[b], avx2 ? &avx2_seeds[b] : &seeds[b]}) {
+        ASSERT_EQ(way->shuffle[lane], expected_seeds.shuffle) << where;
+        ASSERT_EQ(way->first[lane], expected_seeds.first) << where;
+        ASSERT_EQ(way->second[lane], expected_seeds.second) << where;
       }
       float expected_first = 0.0f, expected_second = 0.0f;
       owen_sobol::dimension_numbers(key, reversed_index, expected_first, expected_second);

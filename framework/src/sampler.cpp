@@ -33,23 +33,28 @@ void Sampler::fill_block() {
     reversed_sample_index_ = owen_sobol::reverse_bits(sample_index_);
     sample_index_ready_ = true;
   }
-  // The block holding dimension_: blocks start at multiples of eight, so that a pixel's samples
-  // share their seeds.
-  const auto block = static_cast<std::uint32_t>(dimension_) / owen_sobol::kBlockDimensions;
+  // The two blocks from an even one on that hold dimension_, so that a pixel's samples share the
+  // blocks' seeds.
+  const auto low_block =
+      static_cast<std::uint32_t>(dimension_) / owen_sobol::kDimensionsAtOnce * owen_sobol::kBlocksAtOnce;
+  owen_sobol::fill_dimension_blocks(seeds_of_block(low_block, extra_seeds_[0]),
+                                    seeds_of_block(low_block + 1, extra_seeds_[1]), reversed_sample_index_,
+                                    block_first_, block_second_);
+  block_start_ = static_cast<int>(low_block * owen_sobol::kBlockDimensions);
+  block_end_ = block_start_ + owen_sobol::kDimensionsAtOnce;
+}
+
+const owen_sobol::BlockSeeds& Sampler::seeds_of_block(std::uint32_t block, owen_sobol::BlockSeeds& scratch) {
   const std::uint32_t first_dimension = block * owen_sobol::kBlockDimensions;
-  owen_sobol::BlockSeeds* seeds = &extra_seeds_;
-  if (block < kSeedBlocksHeld) {
-    seeds = &seeds_[block];
-    if (!(seeds_held_ & (1u << block))) {
-      owen_sobol::block_seeds(pixel_key_, first_dimension, *seeds);
-      seeds_held_ |= 1u << block;
-    }
-  } else {
-    owen_sobol::block_seeds(pixel_key_, first_dimension, *seeds);
+  if (block >= kSeedBlocksHeld) {
+    owen_sobol::block_seeds(pixel_key_, first_dimension, scratch);
+    return scratch;
   }
-  owen_sobol::fill_dimension_block(*seeds, reversed_sample_index_, block_first_, block_second_);
-  block_start_ = static_cast<int>(first_dimension);
-  block_end_ = block_start_ + owen_sobol::kBlockDimensions;
+  if (!(seeds_held_ & (1u << block))) {
+    owen_sobol::block_seeds(pixel_key_, first_dimension, seeds_[block]);
+    seeds_held_ |= 1u << block;
+  }
+  return seeds_[block];
 }
 
 namespace owen_sobol {
@@ -63,11 +68,15 @@ void block_seeds_one_by_one(std::uint64_t pixel_key, std::uint32_t first_dimensi
   }
 }
 
-void fill_dimension_block_one_by_one(const BlockSeeds& seeds, std::uint32_t reversed_sample_index,
-                                     float first[kBlockDimensions], float second[kBlockDimensions]) {
-  for (int i = 0; i < kBlockDimensions; ++i)
-    dimension_numbers(DimensionSeeds(seeds.shuffle[i], seeds.first[i], seeds.second[i]), reversed_sample_index,
-                      first[i], second[i]);
+void fill_dimension_blocks_one_by_one(const BlockSeeds& low, const BlockSeeds& high,
+                                      std::uint32_t reversed_sample_index, float first[kDimensionsAtOnce],
+                                      float second[kDimensionsAtOnce]) {
+  for (int i = 0; i < kDimensionsAtOnce; ++i) {
+    const BlockSeeds& seeds = i < kBlockDimensions ? low : high;
+    const int lane = i % kBlockDimensions;
+    dimension_numbers(DimensionSeeds(seeds.shuffle[lane], seeds.first[lane], seeds.second[lane]),
+                      reversed_sample_index, first[i], second[i]);
+  }
 }
 
 #if RAYLAB_AVX2_COMPILES
@@ -155,9 +164,10 @@ __attribute__((target("avx2"))) static void block_seeds_avx2_lanes(std::uint64_t
                      halves_8(multiply_64(key_a, kSecond), multiply_64(key_b, kSecond), true));
 }
 
-__attribute__((target("avx2"))) static void fill_block_avx2(const BlockSeeds& seeds,
-                                                            std::uint32_t reversed_sample_index, float first[],
-                                                            float second[]) {
+// One block's numbers (dimension_numbers in eight lanes), inlined twice in fill_blocks_avx2.
+__attribute__((target("avx2"), always_inline)) inline void fill_block_avx2(const BlockSeeds& seeds,
+                                                                           std::uint32_t reversed_sample_index,
+                                                                           float first[], float second[]) {
   // owen_scramble_reversed of the reversed sample index: the shuffled index.
   const __m256i index = reverse_bits_8(
       laine_karras_8(_mm256_set1_epi32(static_cast<int>(reversed_sample_index)), load(seeds.shuffle)));
@@ -173,6 +183,14 @@ __attribute__((target("avx2"))) static void fill_block_avx2(const BlockSeeds& se
   sobol = _mm256_xor_si256(sobol, _mm256_i32gather_epi32(table(3), _mm256_srli_epi32(index, 24), 4));
   store_unit_floats_8(second, reverse_bits_8(laine_karras_8(sobol, load(seeds.second))));
 }
+
+// Two blocks' numbers: two independent chains in one function, which the processor runs side by side.
+__attribute__((target("avx2"))) static void fill_blocks_avx2(const BlockSeeds& low, const BlockSeeds& high,
+                                                             std::uint32_t reversed_sample_index, float first[],
+                                                             float second[]) {
+  fill_block_avx2(low, reversed_sample_index, first, second);
+  fill_block_avx2(high, reversed_sample_index, first + kBlockDimensions, second + kBlockDimensions);
+}
 #endif
 
 bool block_seeds_avx2(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSeeds& seeds) {
@@ -186,14 +204,14 @@ bool block_seeds_avx2(std::uint64_t pixel_key, std::uint32_t first_dimension, Bl
 #endif
 }
 
-bool fill_dimension_block_avx2(const BlockSeeds& seeds, std::uint32_t reversed_sample_index,
-                               float first[kBlockDimensions], float second[kBlockDimensions]) {
+bool fill_dimension_blocks_avx2(const BlockSeeds& low, const BlockSeeds& high, std::uint32_t reversed_sample_index,
+                                float first[kDimensionsAtOnce], float second[kDimensionsAtOnce]) {
 #if RAYLAB_AVX2_COMPILES
   if (!avx2_runs_here()) return false;
-  fill_block_avx2(seeds, reversed_sample_index, first, second);
+  fill_blocks_avx2(low, high, reversed_sample_index, first, second);
   return true;
 #else
-  (void)seeds, (void)reversed_sample_index, (void)first, (void)second;
+  (void)low, (void)high, (void)reversed_sample_index, (void)first, (void)second;
   return false;
 #endif
 }
@@ -201,18 +219,18 @@ bool fill_dimension_block_avx2(const BlockSeeds& seeds, std::uint32_t reversed_s
 namespace {
 // The ways this CPU takes, chosen once.
 using BlockSeedsWay = void (*)(std::uint64_t, std::uint32_t, BlockSeeds&);
-using FillBlockWay = void (*)(const BlockSeeds&, std::uint32_t, float[], float[]);
+using FillBlocksWay = void (*)(const BlockSeeds&, const BlockSeeds&, std::uint32_t, float[], float[]);
 BlockSeedsWay chosen_block_seeds() {
 #if RAYLAB_AVX2_COMPILES
   if (avx2_runs_here()) return &block_seeds_avx2_lanes;
 #endif
   return &block_seeds_one_by_one;
 }
-FillBlockWay chosen_fill_block() {
+FillBlocksWay chosen_fill_blocks() {
 #if RAYLAB_AVX2_COMPILES
-  if (avx2_runs_here()) return &fill_block_avx2;
+  if (avx2_runs_here()) return &fill_blocks_avx2;
 #endif
-  return &fill_dimension_block_one_by_one;
+  return &fill_dimension_blocks_one_by_one;
 }
 }  // namespace
 
@@ -221,10 +239,10 @@ void block_seeds(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSe
   way(pixel_key, first_dimension, seeds);
 }
 
-void fill_dimension_block(const BlockSeeds& seeds, std::uint32_t reversed_sample_index, float first[kBlockDimensions],
-                          float second[kBlockDimensions]) {
-  static const FillBlockWay way = chosen_fill_block();
-  way(seeds, reversed_sample_index, first, second);
+void fill_dimension_blocks(const BlockSeeds& low, const BlockSeeds& high, std::uint32_t reversed_sample_index,
+                           float first[kDimensionsAtOnce], float second[kDimensionsAtOnce]) {
+  static const FillBlocksWay way = chosen_fill_blocks();
+  way(low, high, reversed_sample_index, first, second);
 }
 
 }  // namespace owen_sobol

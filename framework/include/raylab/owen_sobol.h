@@ -1,6 +1,6 @@
 // The arithmetic of the sampler's points (sampler.h): Owen-scrambled Sobol' numbers by Burley's
 // hash ("Practical Hash-based Owen Scrambling", JCGT 2020): dimension_numbers below defines a
-// dimension's numbers, and fill_dimension_block computes eight dimensions' at once for the sampler
+// dimension's numbers, and fill_dimension_blocks computes sixteen dimensions' at once for the sampler
 // (sampler.cpp); docs/07_sampling.md, section 9, explains them.
 #pragma once
 
@@ -120,10 +120,15 @@ constexpr std::uint64_t dimension_key(std::uint64_t pixel_key, std::uint32_t dim
   return mix_bits(dimension_key_unmixed(pixel_key, dimension));
 }
 
-// How many dimensions the sampler computes at once.
+// Dimensions go in blocks of eight, the lanes of AVX2.
 constexpr int kBlockDimensions = 8;
+// The sampler computes two blocks at once: each block's numbers are one long chain of dependent
+// steps (the multiplies of three Laine-Karras permutations), and two chains side by side take
+// about the time of one (docs/performance.md, "The seeds kept for a pixel's samples").
+constexpr int kBlocksAtOnce = 2;
+constexpr int kDimensionsAtOnce = kBlocksAtOnce * kBlockDimensions;
 
-// The seeds (DimensionSeeds) of eight dimensions of a pixel, as columns for the lanes of AVX2.
+// The seeds (DimensionSeeds) of a block's eight dimensions of a pixel, as columns for the lanes.
 struct BlockSeeds {
   std::uint32_t shuffle[kBlockDimensions];
   std::uint32_t first[kBlockDimensions];
@@ -133,18 +138,19 @@ struct BlockSeeds {
 // The seeds of the dimensions first_dimension, first_dimension + 1, ..., + 7 of the pixel whose
 // key is pixel_key (DimensionSeeds of dimension_key).
 void block_seeds(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSeeds& seeds);
-// dimension_numbers of a block's eight dimensions for one pixel sample into first[0 .. 7] and
-// second[0 .. 7].
-void fill_dimension_block(const BlockSeeds& seeds, std::uint32_t reversed_sample_index, float first[kBlockDimensions],
-                          float second[kBlockDimensions]);
-// Both compute in the eight lanes of AVX2 where the CPU has it (chosen once, sampler.cpp), else
-// one dimension after another: the same numbers, bit for bit, either way. Their two ways, for the
+// dimension_numbers of two blocks' dimensions for one pixel sample: of `low`'s eight into
+// first[0 .. 7] and second[0 .. 7], of `high`'s into first[8 .. 15] and second[8 .. 15].
+void fill_dimension_blocks(const BlockSeeds& low, const BlockSeeds& high, std::uint32_t reversed_sample_index,
+                           float first[kDimensionsAtOnce], float second[kDimensionsAtOnce]);
+// Both compute in the lanes of AVX2 where the CPU has it (chosen once, sampler.cpp), else one
+// dimension after another: the same numbers, bit for bit, either way. Their two ways, for the
 // tests (the AVX2 ones return false, and write nothing, where this compiler or CPU has no AVX2):
 void block_seeds_one_by_one(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSeeds& seeds);
 bool block_seeds_avx2(std::uint64_t pixel_key, std::uint32_t first_dimension, BlockSeeds& seeds);
-void fill_dimension_block_one_by_one(const BlockSeeds& seeds, std::uint32_t reversed_sample_index,
-                                     float first[kBlockDimensions], float second[kBlockDimensions]);
-bool fill_dimension_block_avx2(const BlockSeeds& seeds, std::uint32_t reversed_sample_index,
-                               float first[kBlockDimensions], float second[kBlockDimensions]);
+void fill_dimension_blocks_one_by_one(const BlockSeeds& low, const BlockSeeds& high,
+                                      std::uint32_t reversed_sample_index, float first[kDimensionsAtOnce],
+                                      float second[kDimensionsAtOnce]);
+bool fill_dimension_blocks_avx2(const BlockSeeds& low, const BlockSeeds& high, std::uint32_t reversed_sample_index,
+                                float first[kDimensionsAtOnce], float second[kDimensionsAtOnce]);
 
 }  // namespace raylab::owen_sobol

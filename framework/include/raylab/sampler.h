@@ -19,7 +19,7 @@
 // one sample per pixel is special, the pixel's centre), so a pixel that stops early, as
 // adaptive sampling does, keeps samples as well spread as a render of that count. Within its
 // cell a value is uniformly random. All values are in [0, 1). docs/07_sampling.md, section 9.
-// The numbers of eight dimensions are computed at once, when a draw needs one not held (see
+// The numbers of sixteen dimensions are computed at once, when a draw needs one not held (see
 // fill_block below); a draw is then a comparison and a read.
 #pragma once
 
@@ -74,14 +74,16 @@ class Sampler {
   int dimension() const { return dimension_; }
 
  private:
-  // The numbers of the kBlockDimensions dimensions of the block that holds dimension_ (blocks
-  // start at multiples of kBlockDimensions), computed together (owen_sobol::fill_dimension_block:
-  // eight dimensions in the lanes of AVX2 where the CPU has it, the same numbers either way). A
-  // draw then reads them: hashing each dimension on its own was a fifth of a path's instructions
-  // (docs/performance.md, "The sampler's numbers eight dimensions at a time"). The blocks' seeds
-  // depend on the pixel, not on the sample: the first kSeedBlocksHeld blocks' are kept for the
-  // pixel's next samples ("The seeds kept for a pixel's samples").
+  // The numbers of the 16 dimensions from a multiple of 16 on that hold dimension_, computed
+  // together (owen_sobol::fill_dimension_blocks: two blocks of eight dimensions, each in the lanes
+  // of AVX2 where the CPU has it; the same numbers either way). A draw then reads them: hashing each
+  // dimension on its own was a fifth of a path's instructions (docs/performance.md, "The sampler's
+  // numbers eight dimensions at a time"). The blocks' seeds depend on the pixel, not on the
+  // sample: the first kSeedBlocksHeld blocks' are kept for the pixel's next samples ("The seeds
+  // kept for a pixel's samples").
   void fill_block();
+  // Block `block`'s seeds for this pixel: kept, or (past those kept) computed into `scratch`.
+  const owen_sobol::BlockSeeds& seeds_of_block(std::uint32_t block, owen_sobol::BlockSeeds& scratch);
 
   static constexpr std::uint32_t kSeedBlocksHeld = 8;  // dimensions 0-63
 
@@ -96,16 +98,16 @@ class Sampler {
   bool sample_index_ready_ = false;
   int dimension_ = 0;
   int block_start_ = 0, block_end_ = 0;  // the dimensions [block_start_, block_end_) held below
-  float block_first_[owen_sobol::kBlockDimensions] = {};   // each one's 1D number (and 2D x)
-  float block_second_[owen_sobol::kBlockDimensions] = {};  // each one's 2D y
-  owen_sobol::BlockSeeds seeds_[kSeedBlocksHeld];  // read only where seeds_held_ says
-  owen_sobol::BlockSeeds extra_seeds_;             // a block's past them, not kept
+  float block_first_[owen_sobol::kDimensionsAtOnce] = {};   // each one's 1D number (and 2D x)
+  float block_second_[owen_sobol::kDimensionsAtOnce] = {};  // each one's 2D y
+  owen_sobol::BlockSeeds seeds_[kSeedBlocksHeld];        // read only where seeds_held_ says
+  owen_sobol::BlockSeeds extra_seeds_[owen_sobol::kBlocksAtOnce];  // blocks' past them, not kept
   bool constant_ = false;  // Sampler::constant: the numbers below at every dimension
   float constant_1d_ = 0.0f;
   glm::vec2 constant_2d_{0.0f};
 };
 
-// The draws, inline: a comparison and a read; a block filled every kBlockDimensions dimensions.
+// The draws, inline: a comparison and a read; the numbers filled every kDimensionsAtOnce dimensions.
 inline float Sampler::get_1d() {
   if (dimension_ >= block_end_) {
     if (constant_) {
