@@ -42,7 +42,9 @@ bool sample_f_into(BsdfSample& sample, const Bsdf& bsdf, const glm::vec3& normal
     case BsdfKind::Lambertian: {
       const glm::vec3 local = sample_cosine_hemisphere(u);
       if (!(local.z > 0.0f)) return false;  // on the rim: no density
-      sample.wi = glm::normalize(Frame(facing_normal).to_world(local));
+      // Unit to within rounding, as a unit vector turned by an orthonormal frame is; not
+      // normalized again, as pbrt-v4 does not: the next ray waits for every step of this one.
+      sample.wi = Frame(facing_normal).to_world(local);
       const float cos_i = glm::dot(facing_normal, sample.wi);
       if (!(cos_i > 0.0f)) return false;
       sample.f = lambertian_f(bsdf.albedo);
