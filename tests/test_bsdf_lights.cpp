@@ -349,6 +349,18 @@ TEST(Dielectric, ChoosesReflectionWithTheFresnelProbabilityAndRefractsBySnell) {
 
 // --- lights -----------------------------------------------------------------------------
 
+Light triangle_light(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& radiance) {
+  Light light;
+  light.kind = LightKind::Triangle;
+  light.p0 = p0;
+  light.p1 = p1;
+  light.p2 = p2;
+  light.area = triangle_area(p0, p1, p2);
+  light.normal = triangle_normal(p0, p1, p2);
+  light.radiance = radiance;
+  return light;
+}
+
 TEST(TriangleLight, SampleLiAgreesWithPdfLiWhichIntegratesToOneOverDirections) {
   // A big triangle close to the point, so that it covers much of the sphere of directions
   // and the density varies (grazing near its edges).

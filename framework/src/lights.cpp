@@ -1,7 +1,6 @@
 #include "raylab/lights.h"
 
 #include "raylab/shapes.h"
-#include "raylab/stages/07_sampling.h"
 #include "raylab/stages/08_direct_light.h"
 
 #include <algorithm>
@@ -41,19 +40,6 @@ double solid_angle_density(double pdf_area, double t, const glm::dvec3& directio
 
 }  // namespace
 
-Light triangle_light(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& radiance) {
-  Light light;
-  light.kind = LightKind::Triangle;
-  light.p0 = p0;
-  light.p1 = p1;
-  light.p2 = p2;
-  light.area = triangle_area(p0, p1, p2);
-  light.normal = triangle_normal(p0, p1, p2);
-  light.pdf_area = uniform_triangle_pdf(p0, p1, p2);  // stage 07's, once per light
-  light.radiance = radiance;
-  return light;
-}
-
 std::optional<LightSample> sample_li(const Light& light, const glm::vec3& reference_point, glm::vec2 u) {
   switch (light.kind) {
     case LightKind::Point: {
@@ -70,8 +56,8 @@ std::optional<LightSample> sample_li(const Light& light, const glm::vec3& refere
       return sample;
     }
     case LightKind::Triangle:
-      return area_sample(sample_triangle(light.p0, light.p1, light.p2, light.normal, light.pdf_area, u),
-                         light.radiance, reference_point);
+      return area_sample(sample_triangle(light.p0, light.p1, light.p2, light.normal, u), light.radiance,
+                         reference_point);
     case LightKind::Sphere:
       return area_sample(sample_sphere(light.sphere, u), light.radiance, reference_point);
   }
@@ -154,10 +140,15 @@ LightSet::LightSet(const Scene& scene) {
   for (const TriangleMesh& mesh : scene.meshes) {
     if (!emits(mesh.material)) continue;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-      const Light light =
-          triangle_light(mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
-                         mesh.positions[mesh.indices[3 * t + 2]], scene.materials[mesh.material].emission);
+      Light light;
+      light.kind = LightKind::Triangle;
+      light.p0 = mesh.positions[mesh.indices[3 * t]];
+      light.p1 = mesh.positions[mesh.indices[3 * t + 1]];
+      light.p2 = mesh.positions[mesh.indices[3 * t + 2]];
+      light.area = triangle_area(light.p0, light.p1, light.p2);
       if (!(light.area > 0.0f)) continue;  // a degenerate triangle emits nothing
+      light.normal = triangle_normal(light.p0, light.p1, light.p2);
+      light.radiance = scene.materials[mesh.material].emission;
       lights_.push_back(light);
     }
   }

@@ -15,17 +15,17 @@ glm::vec3 triangle_normal(const glm::vec3& p0, const glm::vec3& p1, const glm::v
 }
 
 ShapeSample sample_triangle(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, glm::vec2 u) {
-  return sample_triangle(p0, p1, p2, triangle_normal(p0, p1, p2), uniform_triangle_pdf(p0, p1, p2), u);
+  return sample_triangle(p0, p1, p2, triangle_normal(p0, p1, p2), u);
 }
 
 ShapeSample sample_triangle(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& normal,
-                            float pdf_area, glm::vec2 u) {
+                            glm::vec2 u) {
   const Barycentrics b = sample_uniform_triangle(u);
   ShapeSample sample;
   sample.point = (1.0f - b.barycentric_b1 - b.barycentric_b2) * p0 + b.barycentric_b1 * p1 + b.barycentric_b2 * p2;
   if (normal != glm::vec3(0.0f)) {
     sample.normal = normal;
-    sample.pdf_area = pdf_area;
+    sample.pdf_area = uniform_triangle_pdf(p0, p1, p2);
   }
   return sample;
 }

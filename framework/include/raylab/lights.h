@@ -32,16 +32,11 @@ struct Light {
   glm::vec3 position{0.0f};   // Point: where it is
   glm::vec3 intensity{0.0f};  // Point: W/sr
   glm::vec3 p0{0.0f}, p1{0.0f}, p2{0.0f};  // Triangle: its corners, world space
-  glm::vec3 normal{0.0f};  // Triangle: triangle_normal(p0, p1, p2)
-  float pdf_area = 0.0f;   // Triangle: uniform_triangle_pdf(p0, p1, p2) (stage 07)
+  glm::vec3 normal{0.0f};  // Triangle: triangle_normal(p0, p1, p2); LightSet sets it (a Light made by hand must too)
   Sphere sphere;                         // Sphere
   glm::vec3 radiance{0.0f};  // Triangle and Sphere: emitted radiance
   float area = 0.0f;         // Triangle and Sphere
 };
-
-// A triangle light with its area, normal and density computed (as LightSet makes them; a
-// triangle Light made by hand needs them too).
-Light triangle_light(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& radiance);
 
 struct LightSample {
   glm::vec3 radiance{0.0f};   // arriving at the reference point, before any occlusion

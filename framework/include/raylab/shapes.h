@@ -18,10 +18,10 @@ float triangle_area(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p
 glm::vec3 triangle_normal(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2);
 // u in [0, 1)^2. A degenerate triangle (area 0) gives pdf_area = 0.
 ShapeSample sample_triangle(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, glm::vec2 u);
-// The same, with the triangle's triangle_normal and its density (stage 07's uniform_triangle_pdf)
-// computed once by the caller (a light's, for every sample).
+// The same, with the triangle's triangle_normal computed once by the caller (a light's, at
+// every sample).
 ShapeSample sample_triangle(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& normal,
-                            float pdf_area, glm::vec2 u);
+                            glm::vec2 u);
 
 inline float sphere_area(const Sphere& sphere) { return 4.0f * kPi * sphere.radius * sphere.radius; }
 ShapeSample sample_sphere(const Sphere& sphere, glm::vec2 u);
