@@ -257,6 +257,8 @@ TEST(Sampler, SixteenDimensionsAtOnceGiveTheNumbersOfOneAtATime) {
     const glm::vec2 pixel = sampler.get_pixel_2d();
     if (samples > 1) {
       EXPECT_EQ(pixel, numbers_one_at_a_time(x, y, index, 0, 5));
+    } else {
+      EXPECT_EQ(pixel, glm::vec2(0.5f));
     }
     for (int dimension = 1; dimension < dimensions; ++dimension) {
       const glm::vec2 expected = numbers_one_at_a_time(x, y, index, dimension, 5);
@@ -283,6 +285,8 @@ TEST(Sampler, SixteenDimensionsAtOnceGiveTheNumbersOfOneAtATime) {
   Sampler sampler(16, 5);
   for (int index = 0; index < 16; ++index) check_draws(sampler, 7, 2, index, 16, index % 2 ? 80 : 20);
   for (int index = 15; index >= 0; --index) check_draws(sampler, 7, 2, index, 16, 100);
+  for (const int x : {8, 7})  // past the kept seeds at another pixel, then back
+    for (int index = 0; index < 4; ++index) check_draws(sampler, x, 2, index, 16, 100);
 }
 
 TEST(Sampler, NumbersAreThoseTheImagesWereMadeWith) {

@@ -42,8 +42,10 @@ bool sample_f_into(BsdfSample& sample, const Bsdf& bsdf, const glm::vec3& normal
     case BsdfKind::Lambertian: {
       const glm::vec3 local = sample_cosine_hemisphere(u);
       if (!(local.z > 0.0f)) return false;  // on the rim: no density
-      // Unit to within rounding, as a unit vector turned by an orthonormal frame is; not
-      // normalized again, as pbrt-v4 does not: the next ray waits for every step of this one.
+      // As long as `local` is (stage 07's sample_cosine_hemisphere returns unit vectors), unit to
+      // within rounding: a vector turned by an orthonormal frame keeps its length. Not normalized
+      // again, as pbrt-v4 does not: the next ray waits for every step of this one. (f |cos| / pdf
+      // does not depend on the length: cos_i is local.z, as the pdf is.)
       sample.wi = Frame(facing_normal).to_world(local);
       const float cos_i = glm::dot(facing_normal, sample.wi);
       if (!(cos_i > 0.0f)) return false;

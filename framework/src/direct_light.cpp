@@ -26,7 +26,8 @@ glm::vec3 direct_light_li(const RenderContext& context, const Ray& camera_ray, S
     const std::optional<SurfaceHit> hit = context.geometry.intersect(ray);
     if (!hit) return radiance + throughput * scene.background;
     const Material& material = scene.materials[hit->material];
-    // Unit already: stage 01's camera rays are, and so are bsdf_sample_f's directions.
+    // Unit (to within rounding) already: stage 01's camera rays are, and so are bsdf_sample_f's
+    // directions; normalizing again would only lengthen the chain from one ray to the next.
     const glm::vec3 wo = -ray.direction;
     // Seen directly or after specular bounces only: a diffuse surface's light comes from the
     // light sampling below, so emission is counted once.

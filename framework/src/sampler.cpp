@@ -33,8 +33,8 @@ void Sampler::fill_block() {
     reversed_sample_index_ = owen_sobol::reverse_bits(sample_index_);
     sample_index_ready_ = true;
   }
-  // The two blocks from an even one on that hold dimension_, so that a pixel's samples share the
-  // blocks' seeds.
+  // Blocks 2k and 2k + 1, the pair that contains dimension_: every sample of a pixel fills the same
+  // blocks, so they share the blocks' seeds.
   const auto low_block =
       static_cast<std::uint32_t>(dimension_) / owen_sobol::kDimensionsAtOnce * owen_sobol::kBlocksAtOnce;
   owen_sobol::fill_dimension_blocks(seeds_of_block(low_block, extra_seeds_[0]),
@@ -165,7 +165,7 @@ __attribute__((target("avx2"))) static void block_seeds_avx2_lanes(std::uint64_t
 }
 
 // One block's numbers (dimension_numbers in eight lanes), inlined twice in fill_blocks_avx2.
-__attribute__((target("avx2"), always_inline)) inline void fill_block_avx2(const BlockSeeds& seeds,
+__attribute__((target("avx2"), always_inline)) static inline void fill_block_avx2(const BlockSeeds& seeds,
                                                                            std::uint32_t reversed_sample_index,
                                                                            float first[], float second[]) {
   // owen_scramble_reversed of the reversed sample index: the shuffled index.

@@ -23,7 +23,8 @@ glm::vec3 path_radiance(const RenderContext& context, const Ray& camera_ray, Sam
     const std::optional<SurfaceHit> hit = context.geometry.intersect(ray);
     if (!hit) return radiance + throughput * scene.background;
     const Material& material = scene.materials[hit->material];
-    // Unit already: stage 01's camera rays are, and so are bsdf_sample_f's directions.
+    // Unit (to within rounding) already: stage 01's camera rays are, and so are bsdf_sample_f's
+    // directions; normalizing again would only lengthen the chain from one ray to the next.
     const glm::vec3 wo = -ray.direction;
     if (count_emission) radiance += throughput * emitted_radiance(material, *hit, ray.direction);
     const Bsdf bsdf = bsdf_of(material, diffuse_color_at(material, *hit));

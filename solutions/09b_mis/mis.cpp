@@ -65,7 +65,8 @@ glm::vec3 path_radiance_mis(const RenderContext& context, const Ray& camera_ray,
     const std::optional<SurfaceHit> hit = context.geometry.intersect(ray);
     if (!hit) return radiance + throughput * scene.background;
     const Material& material = scene.materials[hit->material];
-    // Unit already: stage 01's camera rays are, and so are bsdf_sample_f's directions.
+    // Unit (to within rounding) already: stage 01's camera rays are, and so are bsdf_sample_f's
+    // directions; normalizing again would only lengthen the chain from one ray to the next.
     const glm::vec3 wo = -ray.direction;
     const glm::vec3 emitted = emitted_radiance(material, *hit, ray.direction);
     if (emitted != glm::vec3(0.0f)) {

@@ -123,8 +123,9 @@ constexpr std::uint64_t dimension_key(std::uint64_t pixel_key, std::uint32_t dim
 // Dimensions go in blocks of eight, the lanes of AVX2.
 constexpr int kBlockDimensions = 8;
 // The sampler computes two blocks at once: each block's numbers are one long chain of dependent
-// steps (the multiplies of three Laine-Karras permutations), and two chains side by side take
-// about the time of one (docs/performance.md, "The seeds kept for a pixel's samples").
+// steps (the shuffle's Laine-Karras permutation, then the Sobol' table's gathers and the second
+// coordinate's permutation, four multiplies each), and two chains side by side take about the
+// time of one (docs/performance.md, "The seeds kept for a pixel's samples").
 constexpr int kBlocksAtOnce = 2;
 constexpr int kDimensionsAtOnce = kBlocksAtOnce * kBlockDimensions;
 

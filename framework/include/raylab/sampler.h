@@ -74,7 +74,7 @@ class Sampler {
   int dimension() const { return dimension_; }
 
  private:
-  // The numbers of the 16 dimensions from a multiple of 16 on that hold dimension_, computed
+  // The numbers of the 16 dimensions 16k, ..., 16k + 15 that contain dimension_, computed
   // together (owen_sobol::fill_dimension_blocks: two blocks of eight dimensions, each in the lanes
   // of AVX2 where the CPU has it; the same numbers either way). A draw then reads them: hashing each
   // dimension on its own was a fifth of a path's instructions (docs/performance.md, "The sampler's
@@ -86,6 +86,8 @@ class Sampler {
   const owen_sobol::BlockSeeds& seeds_of_block(std::uint32_t block, owen_sobol::BlockSeeds& scratch);
 
   static constexpr std::uint32_t kSeedBlocksHeld = 8;  // dimensions 0-63
+  static_assert(kSeedBlocksHeld <= 32 && kSeedBlocksHeld % owen_sobol::kBlocksAtOnce == 0,
+                "seeds_held_ has a bit per block, and a fill's blocks are all kept or none");
 
   int samples_per_pixel_ = 1;
   std::uint64_t seed_ = 0;
@@ -100,8 +102,9 @@ class Sampler {
   int block_start_ = 0, block_end_ = 0;  // the dimensions [block_start_, block_end_) held below
   float block_first_[owen_sobol::kDimensionsAtOnce] = {};   // each one's 1D number (and 2D x)
   float block_second_[owen_sobol::kDimensionsAtOnce] = {};  // each one's 2D y
-  owen_sobol::BlockSeeds seeds_[kSeedBlocksHeld];        // read only where seeds_held_ says
-  owen_sobol::BlockSeeds extra_seeds_[owen_sobol::kBlocksAtOnce];  // blocks' past them, not kept
+  owen_sobol::BlockSeeds seeds_[kSeedBlocksHeld] = {};  // read only where seeds_held_ says
+  // The seeds of blocks 8 and up (dimension 64 on), computed again at every fill.
+  owen_sobol::BlockSeeds extra_seeds_[owen_sobol::kBlocksAtOnce] = {};
   bool constant_ = false;  // Sampler::constant: the numbers below at every dimension
   float constant_1d_ = 0.0f;
   glm::vec2 constant_2d_{0.0f};
