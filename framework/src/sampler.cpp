@@ -29,10 +29,6 @@ void Sampler::fill_block() {
     pixel_key_ready_ = true;
     seeds_held_ = 0;
   }
-  if (!sample_index_ready_) {
-    reversed_sample_index_ = owen_sobol::reverse_bits(sample_index_);
-    sample_index_ready_ = true;
-  }
   // Blocks 2k and 2k + 1, the pair that contains dimension_: every sample of a pixel fills the same
   // blocks, so they share the blocks' seeds.
   const auto low_block =

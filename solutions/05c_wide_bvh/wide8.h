@@ -27,7 +27,6 @@
 #include <optional>
 #include <vector>
 
-
 namespace raylab::reference {
 
 // Whether the 8-wide tree is traced on this machine (else the 4-wide one is).

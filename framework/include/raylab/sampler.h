@@ -51,8 +51,7 @@ class Sampler {
       pixel_y_ = static_cast<std::uint32_t>(pixel_y);
       pixel_key_ready_ = false;  // hashed at the first number drawn: a Whitted render draws none
     }
-    sample_index_ = static_cast<std::uint32_t>(sample_index);
-    sample_index_ready_ = false;
+    reversed_sample_index_ = owen_sobol::reverse_bits(static_cast<std::uint32_t>(sample_index));
     dimension_ = 0;
     block_end_ = 0;  // the numbers held are another sample's
   }
@@ -95,9 +94,7 @@ class Sampler {
   std::uint64_t pixel_key_ = 0;  // owen_sobol::pixel_key, once a number is drawn
   bool pixel_key_ready_ = false;
   std::uint32_t seeds_held_ = 0;  // bit b: seeds_[b] holds block b's seeds for this pixel (with pixel_key_)
-  std::uint32_t sample_index_ = 0;
-  std::uint32_t reversed_sample_index_ = 0;  // its bits reversed, once a number is drawn
-  bool sample_index_ready_ = false;
+  std::uint32_t reversed_sample_index_ = 0;  // the sample index, its bits reversed
   int dimension_ = 0;
   int block_start_ = 0, block_end_ = 0;  // the dimensions [block_start_, block_end_) held below
   float block_first_[owen_sobol::kDimensionsAtOnce] = {};   // each one's 1D number (and 2D x)
