@@ -339,5 +339,32 @@ TEST(Messages, LanguageFromItsNameAndTheEnvironment) {
   EXPECT_EQ(language_from_environment(), Language::English);
 }
 
+// Text a stage wrote (an exception's message, what it printed) reaches the console, the HTML
+// report and results.json: nothing in it may act as anything but text.
+TEST(ShownAsText, ControlAndInvisibleCharactersBecomeQuestionMarks) {
+  EXPECT_EQ(shown_as_text("plain text, 中文 and t = 0.5\tok"), "plain text, 中文 and t = 0.5\tok");
+  EXPECT_EQ(shown_as_text("\033[2J\033[Hclear\r"), "?[2J?[Hclear?");            // C0 escapes and CR
+  EXPECT_EQ(shown_as_text("\xC2\x9B" "2J and \xC2\x85 and \x7F"), "?2J and ? and ?");  // C1 CSI, NEL; DEL
+  EXPECT_EQ(shown_as_text("score \xE2\x80\xAE" "02/001\xE2\x80\xAC"), "score ?02/001?");  // RLO ... PDF
+  EXPECT_EQ(shown_as_text("a\xE2\x80\x8B" "b\xE2\x81\xA6" "c\xEF\xBB\xBF" "d\xD8\x9C" "e\xE2\x80\xA8" "f"),
+            "a?b?c?d?e?f");  // zero-width space, isolate, BOM, Arabic mark, line separator
+  EXPECT_EQ(shown_as_text("bad \xFF\xC0\x80 \xE4\xB8"), "bad ??? ??");  // not UTF-8, overlong, cut short
+  EXPECT_EQ(shown_as_text(std::string("nul\0byte", 8)), "nul?byte");
+}
+
+TEST(MarkdownText, StageTextCannotMarkUpTheGradescopePage) {
+  // The catalogue's code spans stay spans; nothing inside one is live.
+  EXPECT_EQ(markdown_text("write `generate_camera_ray` in `a_b*c`"), "write `generate_camera_ray` in `a_b*c`");
+  // Bold, links, images, tags, headings, tables, entities: escaped, so shown as the characters they are.
+  EXPECT_EQ(markdown_text("**All tests passed**"), "\\*\\*All tests passed\\*\\*");
+  EXPECT_EQ(markdown_text("![t](http://x/t.png) [here](http://x)"), "\\!\\[t\\](http://x/t.png) \\[here\\](http://x)");
+  EXPECT_EQ(markdown_text("<img src=x> # Score | 40 &amp; ~~no~~"),
+            "\\<img src=x\\> \\# Score \\| 40 \\&amp; \\~\\~no\\~\\~");
+  // A backtick that opens no span is escaped: it cannot swallow what follows.
+  EXPECT_EQ(markdown_text("one ` tick **b**"), "one \\` tick \\*\\*b\\*\\*");
+  // Control characters go first (shown_as_text).
+  EXPECT_EQ(markdown_text("\xE2\x80\xAE" "x"), "?x");
+}
+
 }  // namespace
 }  // namespace raylab::grading

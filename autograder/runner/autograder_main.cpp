@@ -3,6 +3,8 @@
 //
 //   autograder [--stage ID]... [--json results.json] [--output DIR] [--timeout S] [--lang en|zh] [--list]
 //   autograder --list-files     the stage files of the stage table, one per line (for scripts)
+//   autograder --compile-failed BUILD_LOG --json results.json
+//                               results.json for a submission that did not compile (run_autograder)
 //
 // A stage is named by its id in stages.json or its short form: 05b_bvh_sah, 05b or 5b.
 //
@@ -12,6 +14,7 @@
 //
 // It speaks English or Simplified Chinese (messages.h): --lang, else LC_ALL / LC_MESSAGES / LANG.
 #include "grading.h"
+#include "results.h"
 #include "stage_process.h"
 #include "supervisor.h"
 
@@ -75,6 +78,7 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   std::string language_name;
   bool list = false;
   bool list_files = false;
+  std::string compile_failed_log;
   std::vector<std::string> visibility_rules;
   std::vector<std::string> stage_names;
   app.add_option("--stage", stage_names,
@@ -100,6 +104,7 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   app.add_flag("--list", list, worded(MessageId::cli_list));
   app.add_flag("--list-files", list_files,
                worded(MessageId::cli_list_files));
+  app.add_option("--compile-failed", compile_failed_log, worded(MessageId::cli_compile_failed));
   app.add_option("--visibility", visibility_rules,
                  worded(MessageId::cli_visibility));
   app.add_option("--lang", language_name,
@@ -114,6 +119,19 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
     return 1;
   }
   if (!language_name.empty()) set_language(*parse_language(language_name));
+  if (!compile_failed_log.empty()) {
+    if (options.json_path.empty()) {
+      std::cerr << render({MessageId::cli_usage_error, {{"error", "--compile-failed needs --json"}}}) << "\n";
+      return 1;
+    }
+    try {
+      write_compile_failure_json(compile_failed_log, options.json_path);
+    } catch (const std::exception& e) {
+      std::cerr << render({MessageId::cli_could_not_run, {{"error", e.what()}}}) << "\n";
+      return 1;
+    }
+    return 0;
+  }
   if (list_files) {
     std::vector<std::string_view> printed;
     for (const raylab::StageDescription& stage : raylab::stage_table())

@@ -84,14 +84,6 @@ std::string pad_left(const std::string& text, std::size_t width) {
   return used >= width ? text : std::string(width - used, ' ') + text;
 }
 
-// Printable: control characters (escape sequences that could move the cursor or rewrite the
-// table above) become '?'.
-std::string printable(const std::string& line) {
-  std::string text;
-  for (const char c : line) text += (static_cast<unsigned char>(c) < 32 && c != '\t') || c == 127 ? '?' : c;
-  return text;
-}
-
 }  // namespace
 
 int StageResult::earned() const {
@@ -150,7 +142,7 @@ void print_results(const std::vector<StageResult>& results, const Message& descr
       std::printf("  %s %s%s\n", pad_right(text_of(label), 6).c_str(), t.info.name.c_str(),
                   text_of(MessageId::console_test_points, {{"points", std::to_string(t.info.points)}}).c_str());
       std::istringstream lines(test_output(t, language()));
-      for (std::string line; std::getline(lines, line);) std::printf("         %s\n", printable(line).c_str());
+      for (std::string line; std::getline(lines, line);) std::printf("         %s\n", shown_as_text(line).c_str());
     }
   }
 
@@ -165,7 +157,7 @@ void print_results(const std::vector<StageResult>& results, const Message& descr
     std::istringstream lines(stage.output.substr(0, kShownOutputBytes));
     int shown = 0;
     for (std::string line; std::getline(lines, line) && shown < kShownOutputLines; ++shown)
-      std::printf("    | %s\n", printable(line).c_str());
+      std::printf("    | %s\n", shown_as_text(line).c_str());
     if (stage.output.size() > kShownOutputBytes || shown == kShownOutputLines)
       std::printf("    %s\n", text_of(MessageId::console_output_cut, {{"bytes", std::to_string(stage.output.size())}}).c_str());
   }

@@ -50,17 +50,6 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
-// A line of the grader's text as Markdown: the catalogue's texts already use `code` spans; only
-// what would start an HTML tag is escaped.
-std::string markdown_line(const std::string& line) {
-  std::string out;
-  for (char c : line) {
-    if (c == '<') out += '\\';
-    out += c;
-  }
-  return out;
-}
-
 // The numbers a note of `id` carries as `arg`, or nullopt.
 std::optional<double> note_number(const TestResult& test, MessageId id, const char* arg) {
   for (const Message& note : test.notes) {
@@ -103,7 +92,7 @@ std::string test_markdown(const TestResult& test, Language language) {
   std::string out;
   std::istringstream lines(test_output(test, language));
   for (std::string line; std::getline(lines, line);)
-    if (!line.empty()) out += "- " + markdown_line(line) + "\n";
+    if (!line.empty()) out += "- " + markdown_text(line) + "\n";
   if (test.earned() == test.info.points) return out;
   // The pictures named in the English text (the same files in either language), if the judge
   // wrote them: a file in the output folder (a text the stage code chose, such as an exception's,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 
 namespace raylab::grading {
@@ -192,5 +193,69 @@ Language language_from_environment() {
 
 Language language() { return language_storage(); }
 void set_language(Language language) { language_storage() = language; }
+
+std::size_t utf8_length(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u; };
+  const unsigned lead = byte(0);
+  const auto continuation = [&](std::size_t k, unsigned low = 0x80, unsigned high = 0xBF) {
+    return byte(k) >= low && byte(k) <= high;
+  };
+  if (lead >= 0xC2 && lead <= 0xDF) return continuation(1) ? 2 : 0;
+  if (lead >= 0xE0 && lead <= 0xEF) {
+    const unsigned low = lead == 0xE0 ? 0xA0 : 0x80, high = lead == 0xED ? 0x9F : 0xBF;
+    return continuation(1, low, high) && continuation(2) ? 3 : 0;
+  }
+  if (lead >= 0xF0 && lead <= 0xF4) {
+    const unsigned low = lead == 0xF0 ? 0x90 : 0x80, high = lead == 0xF4 ? 0x8F : 0xBF;
+    return continuation(1, low, high) && continuation(2) && continuation(3) ? 4 : 0;
+  }
+  return 0;
+}
+
+std::string shown_as_text(std::string_view line) {
+  std::string text;
+  text.reserve(line.size());
+  for (std::size_t i = 0; i < line.size();) {
+    const unsigned char lead = static_cast<unsigned char>(line[i]);
+    if (lead < 0x80) {
+      text += (lead < 32 && lead != '\t') || lead == 127 ? '?' : static_cast<char>(lead);
+      ++i;
+      continue;
+    }
+    const std::size_t length = utf8_length(line, i);
+    if (length == 0) {
+      text += '?';
+      ++i;
+      continue;
+    }
+    char32_t code = lead & (0x7F >> length);
+    for (std::size_t k = 1; k < length; ++k) code = code << 6 | (static_cast<unsigned char>(line[i + k]) & 0x3F);
+    const bool hidden = (code >= 0x80 && code <= 0x9F) || code == 0x61C || code == 0x180E ||
+                        (code >= 0x200B && code <= 0x200F) || (code >= 0x2028 && code <= 0x202E) ||
+                        (code >= 0x2060 && code <= 0x206F) || code == 0xFEFF || (code >= 0xFFF9 && code <= 0xFFFB);
+    if (hidden) text += '?';
+    else text.append(line.substr(i, length));
+    i += length;
+  }
+  return text;
+}
+
+std::string markdown_text(std::string_view line) {
+  const std::string text = shown_as_text(line);
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (text[i] == '`') {
+      const std::size_t close = text.find('`', i + 1);
+      if (close != std::string::npos) {  // a code span, as it is
+        out.append(text, i, close + 1 - i);
+        i = close + 1;
+        continue;
+      }
+    }
+    if (std::strchr("\\`*_[]<>!#|~&", text[i]) != nullptr) out += '\\';
+    out += text[i++];
+  }
+  return out;
+}
 
 }  // namespace raylab::grading

@@ -100,6 +100,25 @@ std::string stream_text(Number value) {
 // (grading.cpp), so a number reads the same wherever it was formatted.
 std::string short_numbers(const std::string& text);
 
+// The length of the UTF-8 sequence at text[i], or 0 if it is not one (overlong, a surrogate,
+// beyond U+10FFFF, cut short).
+std::size_t utf8_length(std::string_view text, std::size_t i);
+
+// A line as the grader shows it, whoever wrote it (a stage's exception text or output may say
+// anything): every character that is not plain visible text becomes '?': C0 controls but tab
+// (escape sequences that move the cursor or rewrite the table above), DEL, C1 controls (which
+// some terminals also take as escape sequences), bidirectional controls and other invisible
+// format characters (which reorder or hide what is shown: U+061C, U+180E, U+200B-U+200F,
+// U+2028-U+202E, U+2060-U+206F, U+FEFF, U+FFF9-U+FFFB), and bytes that are not UTF-8.
+std::string shown_as_text(std::string_view line);
+
+// A line of the grader's text as Markdown (results.json's output for Gradescope), shown as text
+// whoever wrote it: the catalogue's `code` spans stay spans (nothing inside one is live); outside
+// them every character that starts Markdown or HTML markup is escaped (emphasis, links and
+// images, headings, tables, quotes, tags, entities), and so is a backtick that opens no span;
+// after shown_as_text.
+std::string markdown_text(std::string_view line);
+
 // A hint or note given as text fails to compile with this message: each is a catalogue entry.
 template <typename Text, typename = std::enable_if_t<std::is_convertible_v<Text, std::string_view>>>
 void add_hint(const Text&) {

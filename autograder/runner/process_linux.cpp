@@ -12,9 +12,13 @@
 //     writes, no signals, no other privilege), as an ambient capability across the exec;
 //   - not root: the same user, so the judge is a child subreaper and kills every descendant it
 //     finds in /proc until none is left (a setsid() grandchild still has the judge as ancestor);
+//   - as root, where the kernel allows it: network and IPC namespaces of its own (no network;
+//     no System V shared memory or message queues, which RLIMIT_AS does not count and which
+//     would outlive it: enter_own_namespaces);
 //   - both: Landlock where the kernel has it (no file may be created or written anywhere, no TCP,
 //     no signals to processes outside the sandbox), RLIMIT_NPROC, RLIMIT_AS, RLIMIT_FSIZE (the
-//     output limit; stdout and stderr go to a memfd), no core dumps, parent-death signal, only
+//     output limit; stdout and stderr go to a memfd; it bounds each memfd the stage makes too),
+//     RLIMIT_NOFILE (kMaxOpenFiles), no core dumps, parent-death signal, only
 //     descriptors 0-4 open.
 #include "stage_process.h"
 
@@ -26,11 +30,13 @@
 #include <signal.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
+#include <sched.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -79,8 +85,30 @@ struct Sandbox {
   bool as_root = false;
   uid_t uid = 0;  // the sandbox's own uid and gid, when as_root
   bool keeps_read_search = false;  // as_root, and the uid alone cannot reach the programs
+  bool own_namespaces = false;     // as_root, and the kernel gives it network and IPC namespaces
   int landlock = 0;
 };
+
+// The descriptors a stage server may have open at once: its five, and room for files it reads
+// (a scene, a mesh). Each could hold a memfd or a pipe's buffer, memory outside RLIMIT_AS.
+constexpr rlim_t kMaxOpenFiles = 64;
+
+// In the child, as root, before setuid: a network namespace of its own (no interface but a
+// loopback that is down: no UDP or TCP out, no abstract sockets shared with the machine) and an
+// IPC namespace of its own with no room for System V shared memory segments or message queues,
+// nor POSIX message queues (memory that RLIMIT_AS does not count, which would outlive the
+// stage). The namespaces end with the stage's last process. Only system calls.
+bool enter_own_namespaces() {
+  if (::unshare(CLONE_NEWNET | CLONE_NEWIPC) != 0) return false;
+  for (const char* limit : {"/proc/sys/kernel/shmmni", "/proc/sys/kernel/msgmni", "/proc/sys/fs/mqueue/queues_max"}) {
+    const int fd = ::open(limit, O_WRONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool written = ::write(fd, "0\n", 2) == 2;
+    ::close(fd);
+    if (!written) return false;
+  }
+  return true;
+}
 
 // In the child, after setuid: keep CAP_DAC_READ_SEARCH alone, in the permitted, effective,
 // inheritable and ambient sets, so that it survives the exec (PR_SET_KEEPCAPS was set before
@@ -265,6 +293,14 @@ void prepare_judge() {
   box.as_root = ::geteuid() == 0;
   box.keeps_read_search = box.as_root && !sandbox_uid_can_reach(box.uid);
   box.landlock = landlock_abi();
+  if (box.as_root) {  // whether this kernel (or container) lets it have the namespaces
+    const pid_t probe = ::fork();
+    if (probe == 0) ::_exit(enter_own_namespaces() ? 0 : 1);
+    int status = 0;
+    while (probe > 0 && ::waitpid(probe, &status, 0) < 0 && errno == EINTR) {
+    }
+    box.own_namespaces = probe > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  }
 }
 
 std::string default_stage_server_path() {
@@ -275,6 +311,7 @@ Message sandbox_description() {
   const Sandbox& box = sandbox();
   std::vector<Message> parts = {box.as_root ? MessageId::sandbox_own_user : MessageId::sandbox_your_user};
   if (box.keeps_read_search) parts.push_back(MessageId::sandbox_reads_every_folder);
+  parts.push_back(box.own_namespaces ? MessageId::sandbox_own_namespaces : MessageId::sandbox_shared_namespaces);
   if (box.landlock > 0) {
     std::vector<Message> tcp, signals;
     if (box.landlock >= 4) tcp.push_back(MessageId::sandbox_no_tcp);
@@ -336,9 +373,12 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
       ::setrlimit(RLIMIT_AS, &memory);
     }
     const struct rlimit file_size{static_cast<rlim_t>(limits.output_limit_bytes), static_cast<rlim_t>(limits.output_limit_bytes)};
-    ::setrlimit(RLIMIT_FSIZE, &file_size);
+    ::setrlimit(RLIMIT_FSIZE, &file_size);  // also bounds each memfd it makes
+    const struct rlimit open_files{kMaxOpenFiles, kMaxOpenFiles};
+    ::setrlimit(RLIMIT_NOFILE, &open_files);
     ::signal(SIGXFSZ, SIG_IGN);  // over the output limit: writes fail, the program goes on
     if (box.as_root) {
+      if (box.own_namespaces && !enter_own_namespaces()) child_fail("unshare");
       if (box.keeps_read_search && ::prctl(PR_SET_KEEPCAPS, 1, 0, 0, 0) != 0) child_fail("keepcaps");
       if (::setgroups(0, nullptr) != 0 || ::setgid(box.uid) != 0 || ::setuid(box.uid) != 0) child_fail("setuid");
       if (box.keeps_read_search && !keep_only_read_search()) child_fail("capset");
@@ -370,18 +410,34 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
   child_ = std::make_unique<Child>(Child{pid, output, limits.output_limit_bytes});
   request_fd_ = requests[1];
   reply_fd_ = replies[0];
+  // The judge's ends never block: every read and write waits in poll() for its deadline first.
+  ::fcntl(request_fd_, F_SETFL, ::fcntl(request_fd_, F_GETFL) | O_NONBLOCK);
+  ::fcntl(reply_fd_, F_SETFL, ::fcntl(reply_fd_, F_GETFL) | O_NONBLOCK);
 }
 
-bool StageProcess::wait_for_reply(Clock::time_point deadline) const {
+namespace {
+// Waits until `fd` is ready for `events` or is closed (true), or the deadline passes (false).
+bool wait_ready(int fd, short events, Clock::time_point deadline) {
   for (;;) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
     if (left <= 0) return false;
-    pollfd reply{reply_fd_, POLLIN, 0};
-    const int ready = ::poll(&reply, 1, static_cast<int>(std::min<long long>(left, 1000)));
+    pollfd ready_fd{fd, events, 0};
+    const int ready = ::poll(&ready_fd, 1, static_cast<int>(std::min<long long>(left, 1000)));
     if (ready > 0) return true;
-    if (ready < 0 && errno != EINTR) return true;  // let the read report it
+    if (ready < 0 && errno != EINTR) return true;  // let the read or write report it
   }
 }
+}  // namespace
+
+bool StageProcess::send(const std::string& payload, Clock::time_point deadline) {
+  return protocol::write_frame(request_fd_, payload, [&]() { return wait_ready(request_fd_, POLLOUT, deadline); });
+}
+
+protocol::FrameRead StageProcess::receive(std::string& payload, std::uint32_t max_bytes, Clock::time_point deadline) {
+  return protocol::read_frame(reply_fd_, payload, max_bytes, [&]() { return wait_for_reply(deadline); });
+}
+
+bool StageProcess::wait_for_reply(Clock::time_point deadline) const { return wait_ready(reply_fd_, POLLIN, deadline); }
 
 ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
   ProcessEnd end;

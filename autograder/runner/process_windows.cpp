@@ -34,13 +34,16 @@
 #include <io.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -50,6 +53,8 @@ namespace {
 constexpr UINT kKilledExitCode = 0xDEAD;  // what TerminateJobObject leaves as the exit code
 constexpr UINT kMemoryExitCode = 0xDEAE;  // the same when the judge's memory watch ended the job
 constexpr auto kMemoryCheckInterval = std::chrono::milliseconds(50);  // how often the watch looks
+// Requests queued for a server that does not read them: past this, send() gives up as if timed out.
+constexpr std::size_t kMaxQueuedRequestBytes = std::size_t{64} << 20;
 
 std::string last_error(const char* what) {
   const DWORD code = ::GetLastError();
@@ -151,6 +156,15 @@ struct StageProcess::Child {
   std::condition_variable delivered_changed;
   std::uint64_t delivered = 0;  // chunks copied, under `mutex`
   bool reply_ended = false;     // the server's reply pipe reached its end, under `mutex`
+  // Requests go the other way through a thread too, so that the judge never blocks in a write to
+  // a server that stopped reading: send() queues a frame, request_pump writes it. Under `mutex`:
+  std::thread request_pump;
+  HANDLE request_write = nullptr;  // the judge's end of the server's request pipe (the pump's)
+  std::deque<std::string> queued_requests;
+  std::size_t queued_bytes = 0;
+  bool requests_closed = false;  // stop(): the pump closes the pipe once the queue is empty
+  bool request_failed = false;   // a write failed: the server is gone
+  std::condition_variable request_queued;
   // The judge's own memory watch (see the top of this file); used by the judge's thread only.
   std::uint64_t memory_limit_bytes = 0;  // 0: none
   std::size_t max_processes = 0;
@@ -317,14 +331,57 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
     });
   else
     close_handle(replies.read);
-  request_fd_ = ::_open_osfhandle(reinterpret_cast<std::intptr_t>(requests.write), _O_WRONLY | _O_BINARY);
+  // The requests, written by a thread of their own (see Child::request_pump).
+  child->request_write = requests.write;
+  requests.write = nullptr;
+  child->request_pump = std::thread([raw = child.get()]() {
+    for (;;) {
+      std::unique_lock<std::mutex> lock(raw->mutex);
+      raw->request_queued.wait(lock, [&]() { return !raw->queued_requests.empty() || raw->requests_closed; });
+      if (raw->queued_requests.empty()) break;  // closed, and all is written
+      const std::string frame = std::move(raw->queued_requests.front());
+      raw->queued_requests.pop_front();
+      raw->queued_bytes -= frame.size();
+      lock.unlock();
+      DWORD done = 0, wrote = 0;
+      for (; done < frame.size(); done += wrote)
+        if (!::WriteFile(raw->request_write, frame.data() + done, static_cast<DWORD>(frame.size() - done), &wrote, nullptr)) break;
+      if (done < frame.size()) {  // the server is gone
+        const std::lock_guard<std::mutex> failed(raw->mutex);
+        raw->request_failed = true;
+        break;
+      }
+    }
+    ::CloseHandle(raw->request_write);  // a server waiting for requests sees end of file and exits
+  });
   reply_fd_ = local_read != nullptr ? ::_open_osfhandle(reinterpret_cast<std::intptr_t>(local_read), _O_RDONLY | _O_BINARY) : -1;
   child_ = std::move(child);
-  if (request_fd_ < 0 || reply_fd_ < 0) {
+  if (reply_fd_ < 0) {
     std::string ignored;
     stop(true, ignored);
     throw std::runtime_error("_open_osfhandle failed for the stage server's pipes");
   }
+}
+
+bool StageProcess::send(const std::string& payload, Clock::time_point) {
+  Child& child = *child_;
+  std::string frame;
+  const auto size = static_cast<std::uint32_t>(payload.size());
+  for (int i = 0; i < 4; ++i) frame.push_back(static_cast<char>((size >> (8 * i)) & 0xff));
+  frame += payload;
+  const std::lock_guard<std::mutex> lock(child.mutex);
+  if (child.request_failed) throw std::system_error(EPIPE, std::generic_category(), "write");
+  // The pump writes it; the deadline holds while the judge waits for the reply. A server that
+  // reads nothing while asking and asking (callbacks) fills the queue: then it has stopped reading.
+  if (child.queued_bytes + frame.size() > kMaxQueuedRequestBytes) return false;
+  child.queued_bytes += frame.size();
+  child.queued_requests.push_back(std::move(frame));
+  child.request_queued.notify_all();
+  return true;
+}
+
+protocol::FrameRead StageProcess::receive(std::string& payload, std::uint32_t max_bytes, Clock::time_point deadline) {
+  return protocol::read_frame(reply_fd_, payload, max_bytes, [&]() { return wait_for_reply(deadline); });
 }
 
 bool StageProcess::wait_for_reply(Clock::time_point deadline) const {
@@ -353,7 +410,12 @@ bool StageProcess::wait_for_reply(Clock::time_point deadline) const {
 ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
   ProcessEnd end;
   if (!child_) return end;
-  if (request_fd_ >= 0) ::_close(request_fd_);  // a server waiting for requests sees end of file and exits
+  {  // the pump closes the request pipe after what is queued: a server waiting for requests exits
+    const std::lock_guard<std::mutex> lock(child_->mutex);
+    child_->requests_closed = true;
+    if (kill_now) child_->queued_requests.clear();
+    child_->request_queued.notify_all();
+  }
   if (!kill_now) ::WaitForSingleObject(child_->process, 500);
   ::TerminateJobObject(child_->job, kKilledExitCode);  // the server, if still there, and all it started
   ::WaitForSingleObject(child_->process, INFINITE);
@@ -384,6 +446,7 @@ ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
   }
   if (reply_fd_ >= 0) ::_close(reply_fd_);  // a pump blocked on a full pipe of ours stops
   if (child_->reply_pump.joinable()) child_->reply_pump.join();      // the server's end is gone: end of file
+  if (child_->request_pump.joinable()) child_->request_pump.join();  // its write fails or its queue is empty
   if (child_->output_reader.joinable()) child_->output_reader.join();  // every writer is gone: end of file
   output += child_->output;
   close_handle(child_->process);

@@ -29,19 +29,59 @@ long long read_some(int fd, char* data, std::size_t size) { return ::read(fd, da
 long long write_some(int fd, const char* data, std::size_t size) { return ::write(fd, data, size); }
 #endif
 
-// Reads exactly `size` bytes; returns how many it got before end of file.
-std::size_t read_fully(int fd, char* data, std::size_t size) {
+// Reads exactly `size` bytes; returns how many it got before end of file, or before `wait`
+// returned false (then timed_out is set). A non-blocking descriptor's EAGAIN waits again.
+std::size_t read_fully(int fd, char* data, std::size_t size, const std::function<bool()>* wait, bool& timed_out) {
   std::size_t done = 0;
   while (done < size) {
+    if (wait && !(*wait)()) {
+      timed_out = true;
+      break;
+    }
     const long long n = read_some(fd, data + done, size - done);
     if (n == 0) break;
     if (n < 0) {
-      if (errno == EINTR) continue;
+      if (errno == EINTR || errno == EAGAIN || errno == EWOULDBLOCK) continue;
       throw std::system_error(errno, std::generic_category(), "read");
     }
     done += static_cast<std::size_t>(n);
   }
   return done;
+}
+
+FrameRead read_frame_waiting(int fd, std::string& payload, std::uint32_t max_bytes, const std::function<bool()>* wait) {
+  unsigned char header[4];
+  bool timed_out = false;
+  const std::size_t got = read_fully(fd, reinterpret_cast<char*>(header), 4, wait, timed_out);
+  if (timed_out) return FrameRead::kTimedOut;
+  if (got == 0) return FrameRead::kEnd;
+  if (got < 4) throw ProtocolError(MessageId::protocol_frame_cut_short);
+  const std::uint32_t size = header[0] | header[1] << 8 | header[2] << 16 | std::uint32_t(header[3]) << 24;
+  if (size > max_bytes) throw ProtocolError({MessageId::protocol_frame_too_large, {{"bytes", std::to_string(size)}}});
+  payload.resize(size);
+  const std::size_t read = read_fully(fd, payload.data(), size, wait, timed_out);
+  if (timed_out) return FrameRead::kTimedOut;
+  if (read < size) throw ProtocolError(MessageId::protocol_frame_cut_short);
+  return FrameRead::kFrame;
+}
+
+bool write_frame_waiting(int fd, const std::string& payload, const std::function<bool()>* wait) {
+  const auto size = static_cast<std::uint32_t>(payload.size());
+  std::string frame;
+  frame.reserve(4 + payload.size());
+  for (int i = 0; i < 4; ++i) frame.push_back(static_cast<char>((size >> (8 * i)) & 0xff));
+  frame += payload;
+  std::size_t done = 0;
+  while (done < frame.size()) {
+    if (wait && !(*wait)()) return false;
+    const long long n = write_some(fd, frame.data() + done, frame.size() - done);
+    if (n < 0) {
+      if (errno == EINTR || errno == EAGAIN || errno == EWOULDBLOCK) continue;
+      throw std::system_error(errno, std::generic_category(), "write");
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
 }
 
 }  // namespace
@@ -50,32 +90,25 @@ ProtocolError::ProtocolError(Message what_was_wrong)
     : std::runtime_error(render(what_was_wrong, Language::English)), problem(std::move(what_was_wrong)) {}
 
 bool read_frame(int fd, std::string& payload) {
-  unsigned char header[4];
-  const std::size_t got = read_fully(fd, reinterpret_cast<char*>(header), 4);
-  if (got == 0) return false;
-  if (got < 4) throw ProtocolError(MessageId::protocol_frame_cut_short);
-  const std::uint32_t size = header[0] | header[1] << 8 | header[2] << 16 | std::uint32_t(header[3]) << 24;
-  if (size > kMaxFrameBytes) throw ProtocolError({MessageId::protocol_frame_too_large, {{"bytes", std::to_string(size)}}});
-  payload.resize(size);
-  if (read_fully(fd, payload.data(), size) < size) throw ProtocolError(MessageId::protocol_frame_cut_short);
-  return true;
+  return read_frame_waiting(fd, payload, kMaxRequestBytes, nullptr) == FrameRead::kFrame;
 }
 
-void write_frame(int fd, const std::string& payload) {
-  const auto size = static_cast<std::uint32_t>(payload.size());
-  std::string frame;
-  frame.reserve(4 + payload.size());
-  for (int i = 0; i < 4; ++i) frame.push_back(static_cast<char>((size >> (8 * i)) & 0xff));
-  frame += payload;
-  std::size_t done = 0;
-  while (done < frame.size()) {
-    const long long n = write_some(fd, frame.data() + done, frame.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw std::system_error(errno, std::generic_category(), "write");
-    }
-    done += static_cast<std::size_t>(n);
-  }
+void write_frame(int fd, const std::string& payload) { write_frame_waiting(fd, payload, nullptr); }
+
+FrameRead read_frame(int fd, std::string& payload, std::uint32_t max_bytes, const std::function<bool()>& wait_readable) {
+  return read_frame_waiting(fd, payload, max_bytes, &wait_readable);
+}
+
+bool write_frame(int fd, const std::string& payload, const std::function<bool()>& wait_writable) {
+  return write_frame_waiting(fd, payload, &wait_writable);
+}
+
+std::string cut_text(std::string text, std::size_t max_bytes) {
+  if (text.size() <= max_bytes) return text;
+  std::size_t end = max_bytes;
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;  // not inside a character
+  text.resize(end);
+  return text + "...";
 }
 
 void put_lists(Writer& out, const std::vector<std::vector<std::uint32_t>>& lists) {
@@ -93,11 +126,13 @@ std::vector<std::vector<std::uint32_t>> get_lists(Reader& in) {
   const auto offsets = in.get_vector<std::uint64_t>();
   const auto values = in.get_vector<std::uint32_t>();
   if (offsets.empty() || offsets.front() != 0 || offsets.back() != values.size()) throw ProtocolError(MessageId::protocol_malformed_lists);
-  std::vector<std::vector<std::uint32_t>> lists(offsets.size() - 1);
-  for (std::size_t i = 0; i + 1 < offsets.size(); ++i) {
+  // Every offset checked before the lists are made: an empty list costs a vector's 24 bytes, so
+  // a count of lists is believed only when the frame held the offsets that describe them.
+  for (std::size_t i = 0; i + 1 < offsets.size(); ++i)
     if (offsets[i + 1] < offsets[i] || offsets[i + 1] > values.size()) throw ProtocolError(MessageId::protocol_malformed_lists);
+  std::vector<std::vector<std::uint32_t>> lists(offsets.size() - 1);
+  for (std::size_t i = 0; i + 1 < offsets.size(); ++i)
     lists[i].assign(values.begin() + static_cast<std::ptrdiff_t>(offsets[i]), values.begin() + static_cast<std::ptrdiff_t>(offsets[i + 1]));
-  }
   return lists;
 }
 

@@ -24,6 +24,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -38,7 +39,15 @@ constexpr int kRequestFd = 3, kReplyFd = 4;
 // The stage server's first call: puts the pipes the judge gave it on kRequestFd and kReplyFd
 // (Linux: already there; Windows: the handles named by its two arguments). Throws ProtocolError.
 void adopt_channels(int argc, char** argv);
-constexpr std::uint32_t kMaxFrameBytes = 512u << 20;
+// The largest frame the stage server reads from the judge (the judge's own requests: meshes,
+// trees). What the judge reads is bounded per call, by the call's reply limit (stage_call.h).
+constexpr std::uint32_t kMaxRequestBytes = 512u << 20;
+// The longest exception text the judge keeps of a stage's kThrow reply (the stage server cuts
+// its own texts there too): a longer one is cut, never shown whole.
+constexpr std::size_t kMaxExceptionTextBytes = 4096;
+// The largest question a stage server may ask the judge during a call (kCallback: a ray and an
+// index today).
+constexpr std::size_t kMaxCallbackBytes = 64u << 10;
 
 enum Kind : std::uint8_t { kCall = 1, kReturn = 2, kThrow = 3, kCallback = 4 };
 
@@ -129,10 +138,22 @@ class Reader {
   std::size_t offset_ = 0;
 };
 
-// Whole frames on a blocking descriptor. read_frame returns false at end of file before a frame
-// starts; both throw ProtocolError on a short or oversized frame, std::system_error on I/O errors.
+// Whole frames on a blocking descriptor (the stage server's side). read_frame returns false at end
+// of file before a frame starts; both throw ProtocolError on a short frame or one over
+// kMaxRequestBytes, std::system_error on I/O errors.
 bool read_frame(int fd, std::string& payload);
 void write_frame(int fd, const std::string& payload);
+
+// The judge's side: frames on a non-blocking descriptor, with a wait before every read or write
+// that returns false once the call's deadline has passed. So a partial frame, or a server that
+// stops reading, costs its call's time and no more. A frame over max_bytes is a ProtocolError
+// as soon as its header is read, before anything is allocated for it.
+enum class FrameRead { kFrame, kEnd, kTimedOut };
+FrameRead read_frame(int fd, std::string& payload, std::uint32_t max_bytes, const std::function<bool()>& wait_readable);
+bool write_frame(int fd, const std::string& payload, const std::function<bool()>& wait_writable);  // false: timed out
+
+// A text cut to at most max_bytes, at a UTF-8 character's start, with "..." after a cut.
+std::string cut_text(std::string text, std::size_t max_bytes);
 
 using Triangle = std::array<glm::vec3, 3>;
 

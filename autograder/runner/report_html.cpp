@@ -139,26 +139,6 @@ constexpr const char* kScript = R"js(
 
 std::string text_of(const Message& message, Language language) { return render(message, language); }
 
-// The length of the UTF-8 sequence at text[i], or 0 if it is not one (overlong, a surrogate,
-// beyond U+10FFFF, cut short).
-std::size_t utf8_length(const std::string& text, std::size_t i) {
-  const auto byte = [&](std::size_t k) { return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u; };
-  const unsigned lead = byte(0);
-  const auto continuation = [&](std::size_t k, unsigned low = 0x80, unsigned high = 0xBF) {
-    return byte(k) >= low && byte(k) <= high;
-  };
-  if (lead >= 0xC2 && lead <= 0xDF) return continuation(1) ? 2 : 0;
-  if (lead >= 0xE0 && lead <= 0xEF) {
-    const unsigned low = lead == 0xE0 ? 0xA0 : 0x80, high = lead == 0xED ? 0x9F : 0xBF;
-    return continuation(1, low, high) && continuation(2) ? 3 : 0;
-  }
-  if (lead >= 0xF0 && lead <= 0xF4) {
-    const unsigned low = lead == 0xF0 ? 0x90 : 0x80, high = lead == 0xF4 ? 0x8F : 0xBF;
-    return continuation(1, low, high) && continuation(2) && continuation(3) ? 4 : 0;
-  }
-  return 0;
-}
-
 // A relative path or file name as a URL: every byte but letters, digits and -._~/ percent-encoded
 // (and ':' too unless `keep_colon`: in a relative URL it would start a scheme).
 std::string url_of(const std::string& path, bool keep_colon = false) {
@@ -341,7 +321,7 @@ std::string escape_html(const std::string& text) {
     const unsigned char c = static_cast<unsigned char>(text[i]);
     if (c >= 0x80) {
       const std::size_t length = utf8_length(text, i);
-      out += length > 0 ? text.substr(i, length) : std::string("\xEF\xBF\xBD");
+      out += length > 0 ? shown_as_text(std::string_view(text).substr(i, length)) : std::string("\xEF\xBF\xBD");
       i += length > 0 ? length : 1;
       continue;
     }

@@ -60,4 +60,10 @@ void write_results_json(const std::vector<StageResult>& results, const std::stri
 // Throws std::runtime_error naming the file if it cannot.
 void replace_file(const std::string& path, const std::string& text);
 
+// results.json for a submission that did not compile (tools/gradescope/run_autograder): score 0,
+// and the compiler's first error lines from `build_log` (at most 20, each cut at 300 bytes), shown
+// as text (an indented code block of shown_as_text lines), in English and Chinese. Written with
+// the JSON library, so it is valid whatever the log holds.
+void write_compile_failure_json(const std::string& build_log, const std::string& path);
+
 }  // namespace raylab::grading

@@ -1,6 +1,7 @@
 #include "results.h"
 
 #include "gradescope.h"
+#include "protocol.h"
 
 #include <nlohmann/json.hpp>
 
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <stdexcept>
 #include <system_error>
@@ -109,6 +111,26 @@ void replace_file(const std::string& path, const std::string& text) {
     std::filesystem::remove(temporary, renamed);
     throw std::runtime_error("cannot write " + path);
   }
+}
+
+void write_compile_failure_json(const std::string& build_log, const std::string& path) {
+  std::ifstream in(build_log, std::ios::binary);
+  std::vector<std::string> errors;
+  for (std::string line; errors.size() < 20 && std::getline(in, line);)
+    if (line.find("error") != std::string::npos || line.find("Error") != std::string::npos)
+      errors.push_back(shown_as_text(protocol::cut_text(line, 300)));
+  auto output = [&](Language language) {
+    std::string text = render(MessageId::gradescope_did_not_compile, language) + "\n\n";
+    if (errors.empty()) return text + render(MessageId::gradescope_no_error_lines, language) + "\n";
+    for (const std::string& line : errors) text += "    " + line + "\n";  // a code block: nothing in it is live
+    return text;
+  };
+  const nlohmann::json results = {{"score", 0},
+                                  {"output", output(Language::English)},
+                                  {"output_zh", output(Language::Chinese)},
+                                  {"output_format", "md"},
+                                  {"tests", nlohmann::json::array()}};
+  replace_file(path, results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace raylab::grading

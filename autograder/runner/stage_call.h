@@ -28,6 +28,7 @@
 #include "protocol.h"
 #include "stage_session.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -87,20 +88,49 @@ bool same_bytes(const std::vector<T, Allocator>& a, const std::vector<T, Allocat
 
 // ---- The judge's side (RAYLAB_JUDGE 1).
 
+// How long a reply may be: room for the stage's exception (a kThrow frame, whose three texts the
+// judge cuts at protocol::kMaxExceptionTextBytes) plus `result_bytes`, the most the call's result
+// can take. The judge reads no more (StageSession::call): a reply's size follows from its request.
+inline std::uint32_t reply_limit(std::uint64_t result_bytes) {
+  constexpr std::uint64_t kExceptionRoom = 16u << 10;
+  return static_cast<std::uint32_t>(std::min<std::uint64_t>(kExceptionRoom + result_bytes, protocol::kMaxRequestBytes));
+}
+// The reply limit of a batch call whose result is at most kResultPerRequestByte times its request
+// (a tree for its boxes, a sample for its random numbers, hits for rays); calls whose results can
+// be larger (pictures, samples per query, hit lists) give their own (remote's max_reply_bytes).
+constexpr std::uint64_t kResultPerRequestByte = 64;
+
 // One request to the current stage server (StageSession::call: a lost server throws StageLost,
 // a stage exception is rethrown). `read(reply)` reads the result from the reply and checks it;
-// every byte of the reply must be read. on_callback answers the server's questions during the
-// call (ask_judge below). A reader that checks the result's sizes and indices calls
-// in.expect_end() first, so that a reply with extra bytes is reported as such.
+// every byte of the reply must be read, and a reply that does not pass read's checks (a
+// protocol::ProtocolError) loses the call as a malformed frame does. on_callback answers the
+// server's questions during the call (ask_judge below). A reader that checks the result's sizes
+// and indices calls in.expect_end() first, so that a reply with extra bytes is reported as such.
+// max_reply_bytes: 0 for kResultPerRequestByte times the request's size.
 template <class Read>
 auto remote(const StageCall& call, const protocol::Writer& arguments, Read read,
-            const StageSession::Callback& on_callback = {}) {
-  const std::string reply = StageSession::instance().call(call, arguments, on_callback);
-  protocol::Reader in(reply);
-  in.get<std::uint8_t>();  // kReturn
-  auto result = read(in);
-  in.expect_end();
-  return result;
+            const StageSession::Callback& on_callback = {}, std::uint32_t max_reply_bytes = 0) {
+  if (max_reply_bytes == 0) max_reply_bytes = reply_limit(kResultPerRequestByte * arguments.bytes().size());
+  StageSession& session = StageSession::instance();
+  const std::string reply = session.call(call, arguments, max_reply_bytes, on_callback);
+  try {
+    protocol::Reader in(reply);
+    in.get<std::uint8_t>();  // kReturn
+    auto result = read(in);
+    in.expect_end();
+    return result;
+  } catch (const protocol::ProtocolError& e) {
+    session.reject_reply(call, e.problem);
+  }
+}
+
+// The bytes a result of a call_remote takes in its reply, when bounded by its type (plain values
+// and optionals); 0 when not (a vector or a text: then the request's rule of remote()).
+template <class T>
+constexpr std::uint64_t fixed_result_bytes() {
+  if constexpr (IsVector<T>::value || std::is_same_v<T, std::string>) return 0;
+  else if constexpr (IsOptional<T>::value) return 1 + sizeof(typename T::value_type);
+  else return sizeof(T);
 }
 
 // A stage function of plain values, as a request: call_remote<decltype(f)>(call, arguments...).
@@ -110,7 +140,9 @@ typename Signature<Function>::ResultType call_remote(const StageCall& call, cons
   const typename Signature<Function>::Arguments values{arguments...};
   protocol::Writer out;
   std::apply([&](const auto&... value) { (put_value(out, value), ...); }, values);
-  return remote(call, out, [](protocol::Reader& in) { return get_value<Result>(in); });
+  constexpr std::uint64_t result_bytes = fixed_result_bytes<Result>();
+  return remote(call, out, [](protocol::Reader& in) { return get_value<Result>(in); }, {},
+                result_bytes > 0 ? reply_limit(1 + result_bytes) : 0);
 }
 
 // A list that the stage server keeps between calls, sent only when the current server does not

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "messages.h"
+#include "protocol.h"
 
 #include <chrono>
 #include <memory>
@@ -56,12 +57,14 @@ class StageProcess {
   void start(const std::string& program, const SandboxLimits& limits);
   bool running() const;
 
-  // The judge's ends of the pipes, as C runtime file descriptors (protocol.h reads and writes them).
-  int request_fd() const { return request_fd_; }
-  int reply_fd() const { return reply_fd_; }
-
-  // Waits until the reply pipe has data or is closed (true), or the deadline passes (false).
-  bool wait_for_reply(Clock::time_point deadline) const;
+  // One request to the server: false when the deadline passed before the server took all of it
+  // (a server that stops reading its requests cannot block the judge). Throws std::system_error
+  // when the server is gone.
+  bool send(const std::string& payload, Clock::time_point deadline);
+  // One reply frame of at most max_bytes: kTimedOut when the deadline passed before all of it came
+  // (a partial frame costs the call's time, no more), kEnd when the server closed its end first.
+  // Throws protocol::ProtocolError on a frame cut short or over max_bytes (before reading it).
+  protocol::FrameRead receive(std::string& payload, std::uint32_t max_bytes, Clock::time_point deadline);
 
   // Ends the stage server (killing it first when `kill_now`, else giving it a moment to finish
   // exiting), then kills every process it started, detached or not. Returns how the server
@@ -69,6 +72,9 @@ class StageProcess {
   ProcessEnd stop(bool kill_now, std::string& output);
 
  private:
+  // Waits until the reply pipe has data or is closed (true), or the deadline passes (false).
+  bool wait_for_reply(Clock::time_point deadline) const;
+
   struct Child;  // the platform's handles on the running server (its process_*.cpp)
   std::unique_ptr<Child> child_;
   int request_fd_ = -1, reply_fd_ = -1;

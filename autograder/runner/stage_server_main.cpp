@@ -80,14 +80,14 @@ int main(int argc, char** argv) {
       out = Writer{};
       out.put(kThrow);
       out.put(ExceptionKind::InvalidArgument);
-      out.put_string(e.what());
+      out.put_string(cut_text(e.what(), kMaxExceptionTextBytes));
       out.put_string("");
       out.put_string("");
     } catch (const std::exception& e) {
       out = Writer{};
       out.put(kThrow);
       out.put(ExceptionKind::Other);
-      out.put_string(e.what());
+      out.put_string(cut_text(e.what(), kMaxExceptionTextBytes));
       out.put_string("");
       out.put_string("");
     } catch (...) {

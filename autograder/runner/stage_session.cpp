@@ -59,7 +59,19 @@ void StageSession::lose(const Message& reason, bool timed_out) {
   throw StageLost(render(reason, Language::English));
 }
 
-std::string StageSession::call(const StageCall& stage_call, const Writer& arguments, const Callback& on_callback) {
+Message StageSession::during(const StageCall& stage_call) {
+  return stage_call.during == MessageId::lost_during_function
+             ? Message{MessageId::lost_during_function, {{"function", stage_call.description}}}
+             : Message(stage_call.during);
+}
+
+void StageSession::reject_reply(const StageCall& stage_call, const Message& what) {
+  if (process_.running()) process_.stop(true, output_);
+  lose({MessageId::lost_malformed_answer, {{"during", during(stage_call)}, {"what", what}}}, false);
+}
+
+std::string StageSession::call(const StageCall& stage_call, const Writer& arguments, std::uint32_t max_reply_bytes,
+                               const Callback& on_callback) {
   if (abandoned_) {
     test_loss_ = abandoned_;
     throw StageLost(render(*abandoned_, Language::English));
@@ -75,9 +87,6 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
     ~Account() { session.used_seconds_ += std::chrono::duration<double>(Clock::now() - started).count(); }
   } account{*this, started};
 
-  const Message during = stage_call.during == MessageId::lost_during_function
-                             ? Message{MessageId::lost_during_function, {{"function", stage_call.description}}}
-                             : Message(stage_call.during);
   auto timed_out = [&]() {
     process_.stop(true, output_);
     if (deadline == options_.run_deadline) lose(MessageId::lost_run_time_limit, true);
@@ -86,11 +95,18 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
   auto ended = [&]() {
     const ProcessEnd end = process_.stop(false, output_);
     if (end.crashed) lose({MessageId::lost_crashed, {{"crash", end.crash}}}, false);
-    lose({MessageId::lost_exited, {{"status", std::to_string(end.exit_code)}, {"during", during}}}, false);
+    lose({MessageId::lost_exited, {{"status", std::to_string(end.exit_code)}, {"during", during(stage_call)}}}, false);
   };
-  auto garbled = [&](const Message& what) {
-    process_.stop(true, output_);
-    lose({MessageId::lost_malformed_answer, {{"during", during}, {"what", what}}}, false);
+  auto garbled = [&](const Message& what) { reject_reply(stage_call, what); };
+  // Sends a frame within the deadline; a server that is gone ends the call.
+  auto send = [&](const std::string& payload) {
+    bool sent = false;
+    try {
+      sent = process_.send(payload, deadline);
+    } catch (const std::system_error&) {
+      ended();  // EPIPE: it is gone
+    }
+    if (!sent) timed_out();  // it stopped reading its requests
   };
 
   if (!process_.running()) {
@@ -105,16 +121,13 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
   request.put(protocol::kCall);
   request.put_string(stage_call.name);
   request.bytes() += arguments.bytes();
-  try {
-    protocol::write_frame(process_.request_fd(), request.bytes());
-  } catch (const std::system_error&) {
-    ended();  // EPIPE: it is gone
-  }
+  send(request.bytes());
   for (;;) {
-    if (!process_.wait_for_reply(deadline)) timed_out();
     std::string reply;
     try {
-      if (!protocol::read_frame(process_.reply_fd(), reply)) ended();
+      const protocol::FrameRead read = process_.receive(reply, max_reply_bytes, deadline);
+      if (read == protocol::FrameRead::kTimedOut) timed_out();
+      if (read == protocol::FrameRead::kEnd) ended();
     } catch (const protocol::ProtocolError& e) {
       garbled(e.problem);
     } catch (const std::system_error&) {
@@ -124,6 +137,8 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
     const auto kind = static_cast<std::uint8_t>(reply[0]);
     if (kind == protocol::kReturn) return reply;
     if (kind == protocol::kCallback && on_callback) {
+      if (reply.size() > protocol::kMaxCallbackBytes)
+        garbled({MessageId::protocol_frame_too_large, {{"bytes", std::to_string(reply.size())}}});
       Writer answer;
       answer.put(protocol::kReturn);
       try {
@@ -138,11 +153,7 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
         process_.stop(true, output_);
         throw;
       }
-      try {
-        protocol::write_frame(process_.request_fd(), answer.bytes());
-      } catch (const std::system_error&) {
-        ended();
-      }
+      send(answer.bytes());
       continue;
     }
     if (kind != protocol::kThrow) garbled(MessageId::protocol_unknown_frame);
@@ -155,9 +166,9 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
       Reader in(reply);
       in.get<std::uint8_t>();
       exception = in.get<protocol::ExceptionKind>();
-      message = in.get_string();
-      stage_id = in.get_string();
-      function_text = in.get_string();
+      message = protocol::cut_text(in.get_string(), protocol::kMaxExceptionTextBytes);
+      stage_id = protocol::cut_text(in.get_string(), protocol::kMaxExceptionTextBytes);
+      function_text = protocol::cut_text(in.get_string(), protocol::kMaxExceptionTextBytes);
       if (exception == protocol::ExceptionKind::BrokenTree) {
         names_a_mesh = in.get<std::uint8_t>() != 0;
         broken_rule = in.get<BvhViolation>();

@@ -12,6 +12,7 @@
 #include "stage_process.h"
 #include "protocol.h"
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -66,8 +67,15 @@ class StageSession {
   // the kReturn reply (its first byte is the kind). Stage exceptions are rethrown here
   // (NotImplemented, std::invalid_argument, std::runtime_error); on_callback answers the
   // server's questions during the call (kCallback frames: stage_call.h, ask_judge).
+  // Every read and write of the call waits for the stage's deadline at most, and the reply may be
+  // max_reply_bytes long at most (stage_call.h: remote() says how much each call may return).
   using Callback = std::function<void(protocol::Reader& request, protocol::Writer& answer)>;
-  std::string call(const StageCall& stage_call, const protocol::Writer& arguments, const Callback& on_callback = {});
+  std::string call(const StageCall& stage_call, const protocol::Writer& arguments, std::uint32_t max_reply_bytes,
+                   const Callback& on_callback = {});
+  // A reply that call() returned but whose contents are malformed (a list of the wrong length, a
+  // size that does not match): the server goes, and the test is lost with the reason, as for a
+  // malformed frame. Throws StageLost.
+  [[noreturn]] void reject_reply(const StageCall& stage_call, const Message& what);
 
   // Increases whenever a fresh server starts (what it was sent before is gone).
   unsigned server_generation() const { return generation_; }
@@ -78,6 +86,7 @@ class StageSession {
   // says what the process did, a lost_... message ("timed out after 60 s (an endless loop?)").
   [[noreturn]] void lose(const Message& reason, bool timed_out);
   Message where() const;
+  static Message during(const StageCall& stage_call);
 
   SessionOptions options_;
   StageProcess process_;

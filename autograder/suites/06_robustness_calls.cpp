@@ -44,6 +44,13 @@ std::vector<std::vector<std::uint32_t>> triangles_hit(TriangleFunction function,
   arguments.put_vector(triangles);
   arguments.put_vector(rays);
   protocol::put_lists(arguments, candidates);
+  // At most every triangle (or every candidate) for every ray, with the lists' offsets.
+  std::uint64_t most_hits = 0;
+  if (candidates.empty()) most_hits = static_cast<std::uint64_t>(rays.size()) * triangles.size();
+  else
+    for (const auto& list : candidates) most_hits += list.size();
+  const std::uint32_t limit = reply_limit(2 * sizeof(std::uint64_t) + (rays.size() + 1) * sizeof(std::uint64_t) +
+                                          most_hits * sizeof(std::uint32_t));
   return remote(kTrianglesHit, arguments, [&](Reader& in) {
     auto hits = protocol::get_lists(in);
     in.expect_end();
@@ -52,7 +59,7 @@ std::vector<std::vector<std::uint32_t>> triangles_hit(TriangleFunction function,
       for (std::uint32_t t : list)
         if (t >= triangles.size()) throw protocol::ProtocolError(MessageId::protocol_triangle_out_of_range);
     return hits;
-  });
+  }, {}, limit);
 }
 
 }  // namespace grading

@@ -57,14 +57,14 @@ std::vector<glm::vec3> direct_light_samples(const DirectLightScene& scene, const
   arguments.put_vector(scene.point_lights);
   arguments.put_vector(queries);
   arguments.put(seed);
+  std::size_t expected = 0;
+  for (const DirectLightQuery& query : queries) expected += query.sample_count;
   return remote(kDirectLightSamples, arguments, [&](Reader& in) {
     auto samples = in.get_vector<glm::vec3>();
     in.expect_end();
-    std::size_t expected = 0;
-    for (const DirectLightQuery& query : queries) expected += query.sample_count;
     if (samples.size() != expected) throw protocol::ProtocolError(MessageId::protocol_wrong_sample_count);
     return samples;
-  });
+  }, {}, grading::reply_limit(sizeof(std::uint64_t) + expected * sizeof(glm::vec3)));
 }
 
 }  // namespace grading

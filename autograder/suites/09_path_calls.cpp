@@ -53,7 +53,8 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
     std::memcpy(result.mean.data(), mean.data(), pixels * sizeof(glm::vec3));
     std::memcpy(result.variance_of_mean.data(), variance.data(), pixels * sizeof(glm::vec3));
     return result;
-  });
+  }, {}, reply_limit(2 * sizeof(int) + 2 * sizeof(std::uint64_t) + 2 * sizeof(glm::vec3) * (request.probe_only ? 1 :
+                     static_cast<std::uint64_t>(std::max(request.width, 0)) * static_cast<std::uint64_t>(std::max(request.height, 0)))));
 }
 
 }  // namespace grading

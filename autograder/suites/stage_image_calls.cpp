@@ -37,7 +37,7 @@ Image render_stage_image(const std::string& stage_id) {
     Image image(width, height);
     std::memcpy(image.data(), pixels.data(), pixels.size() * sizeof(glm::vec3));
     return image;
-  });
+  }, {}, reply_limit(2 * sizeof(int) + sizeof(std::uint64_t) + std::uint64_t{kImageWidth} * kImageHeight * sizeof(glm::vec3)));
 }
 
 #else

@@ -10,7 +10,7 @@ cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
 # Every run also checks: a results.json (and an index.html) planted before grading does not survive, the score table
 # shows one total and it is results.json's, a time-out is paid once, no stage process is left.
 # ONLY_LOSES (optional regex: the only tests of EXPECT_STAGE that may lose points), FORBID (optional
-# regex the output must not match), LOSES (optional regex: the "stage: Test" names that must lose
+# regex the output must not match), FORBID_JSON (optional regex results.json must not match), LOSES (optional regex: the "stage: Test" names that must lose
 # points; at least one test matches).
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -33,6 +33,18 @@ endif()
 file(WRITE "${WORK}/results.json" "{\"score\": 99999, \"max_score\": 1, \"tests\": [{\"name\": \"planted: Forged\", \"score\": 99999, \"max_score\": 1}]}\n")
 # And a forged HTML report where the grader writes its own (grading-output/index.html).
 file(WRITE "${WORK}/images/index.html" "<p>planted: total <strong>99999/1</strong></p>\n")
+# The machine's System V shared memory segments (ipcs, from util-linux), before and after.
+find_program(IPCS ipcs)
+function(count_shared_memory_segments out)
+  set(count -1)
+  if(IPCS)
+    execute_process(COMMAND ${IPCS} -m OUTPUT_VARIABLE segments ERROR_QUIET)
+    string(REGEX MATCHALL "\n0x[0-9a-f]+" found "\n${segments}")
+    list(LENGTH found count)
+  endif()
+  set(${out} ${count} PARENT_SCOPE)
+endfunction()
+count_shared_memory_segments(segments_before)
 execute_process(COMMAND "${GRADER}" --json "${WORK}/results.json" --output "${WORK}/images" --timeout ${TIMEOUT} --lang en
                 RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE errors)
 message("${output}")
@@ -56,6 +68,14 @@ endif()
 execute_process(COMMAND ${PGREP} -f "${GRADER}-stage-server" RESULT_VARIABLE pgrep_status OUTPUT_VARIABLE left_over)
 if(pgrep_status EQUAL 0)
   list(APPEND problems "stage processes outlived the grader: ${left_over}")
+endif()
+# Where the sandbox gives each stage an IPC namespace of its own (as root, where the kernel lets
+# root make one: process_linux.cpp), no segment survives it.
+count_shared_memory_segments(segments_after)
+execute_process(COMMAND id -u OUTPUT_VARIABLE uid OUTPUT_STRIP_TRAILING_WHITESPACE)
+execute_process(COMMAND unshare --ipc --net true RESULT_VARIABLE namespaces_status OUTPUT_QUIET ERROR_QUIET)
+if(uid STREQUAL "0" AND namespaces_status EQUAL 0 AND segments_after GREATER segments_before)
+  list(APPEND problems "System V shared memory outlived the grader: ${segments_before} segments before, ${segments_after} after")
 endif()
 if(REFERENCE)
   hash_folder("${REFERENCE}" reference_after)
@@ -198,6 +218,9 @@ if(MODE STREQUAL "broken" OR MODE STREQUAL "lost" OR (MODE STREQUAL "full" AND E
 endif()
 if(FORBID AND output MATCHES "${FORBID}")
   list(APPEND problems "the output says '${CMAKE_MATCH_0}', which blames what is right")
+endif()
+if(FORBID_JSON AND results MATCHES "${FORBID_JSON}")
+  list(APPEND problems "results.json says '${CMAKE_MATCH_0}', which it must not")
 endif()
 if(MODE STREQUAL "zero")
   foreach(stage IN LISTS stages)

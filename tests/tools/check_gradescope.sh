@@ -8,20 +8,29 @@
 #   code that does not compile       0, and results.json says so
 #   a camera that copies the released reference answers: earns MatchesReferenceRays against
 #   the released data, and nothing for it on the server (fresh cases from the course's seed)
+#   a sphere that #includes the reference solution, or (as root) .incbin's the fresh cases: 0, the
+#   kit has no solutions/ after setup.sh and the build runs as a user that cannot read the cases;
+#   the course's seed appears in no output
+# The folder standing for /autograder is made under /tmp (every folder above it searchable), as
+# the service's is: the build's own user id must reach the kit.
 # and the Gradescope fields: Markdown output with a failed picture inlined, execution times, the
 # course's --visibility rules, and the leaderboard.
 # Usage: check_gradescope.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 source_dir=$(realpath "$1"); work=$(realpath -m "$2")
 rm -rf "$work"; mkdir -p "$work"
-root=$work/autograder
-"$source_dir/tools/make-gradescope" --seed 4242 --visibility '06_robustness=after_published' \
+root=$(mktemp -d "${TMPDIR:-/tmp}/raylab-gradescope.XXXXXX")
+trap 'rm -rf "$root"' EXIT
+chmod 755 "$root"
+seed=918273645
+"$source_dir/tools/make-gradescope" --seed $seed --visibility '06_robustness=after_published' \
   --visibility '05_bvh: Bunny*=hidden' "$work" >/dev/null
 mkdir -p "$root/source" "$root/submission" "$root/results"
 (cd "$root/source" && cmake -E tar xf "$work/gradescope.zip")
 export AUTOGRADER_ROOT=$root
 bash "$root/source/setup.sh" > "$work/setup.log" 2>&1 || { tail -20 "$work/setup.log"; echo "FAIL: setup.sh"; exit 1; }
 kit=$root/source/raylab
+[ ! -e "$kit/solutions" ] && [ ! -e "$kit/autograder/course-seed" ] || echo "FAIL: solutions/ or the seed is still in the kit after setup.sh"
 stage_files=$("$kit/build/bin/autograder" --list-files)
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
@@ -122,6 +131,27 @@ grade copies_released > /dev/null
 "$kit/build/bin/autograder" --stage 01 --json "$work/released.json" --output "$work/released-images" > "$work/released.log" 2>&1 || true
 [ "$(test_score "$work/released.json" "01_camera_rays: MatchesReferenceRays")" = 3 ] ||
   fail "the copying camera should earn MatchesReferenceRays against the released data (else this test proves nothing)"
+
+# The reference solution, #included: no solutions/ to include after setup.sh.
+submit_solutions_except 02_sphere/sphere.cpp
+echo '#include "../../solutions/02_sphere/sphere.cpp"' > "$root/submission/sphere.cpp"
+score=$(grade includes_the_solution)
+[ "$score" = 0 ] || fail "a sphere that #includes the reference solution scored $score"
+python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$work/includes_the_solution.results.json" ||
+  fail "the failed include's results.json is not JSON"
+if [ "$(id -u)" = 0 ]; then  # the fresh cases, read at compile time: the build's user cannot
+  [ -f "$root/private/cases/01_camera_rays_cases.json" ] || fail "setup.sh made no fresh cases in $root/private/cases"
+  submit_solutions_except 02_sphere/sphere.cpp
+  { cat "$source_dir/solutions/02_sphere/sphere.cpp"
+    echo "asm(\".section .rodata\\n.incbin \\\"$root/private/cases/01_camera_rays_cases.json\\\"\\n.text\");"
+  } > "$root/submission/sphere.cpp"
+  score=$(grade reads_the_cases)
+  [ "$score" = 0 ] || fail "a sphere that .incbin's the fresh cases compiled and scored $score"
+fi
+# The seed is in no output of any run.
+if grep -rqs "$seed" "$work" --include='*.json' --include='*.log' --include='*.html'; then
+  fail "the course's seed appears in an output: $(grep -rls "$seed" "$work" --include='*.json' --include='*.log' --include='*.html' | head -3)"
+fi
 
 if [ $failures -gt 0 ]; then echo "check_gradescope: $failures failures (logs in $work)"; exit 1; fi
 echo "check_gradescope: the pipeline grades the solutions $max/$max, the stubs 0, a broken camera, a compile error and copied answers right, with Gradescope's fields"
