@@ -58,12 +58,7 @@ void ProgressReporter::finish(ProgressState state, bool completed) {
   if (!printed_) return;
   state.seconds = now() - start_;
   if (completed) print(state);
-  if (settings_.terminal) {
-    if (settings_.write)
-      settings_.write("\n");
-    else
-      std::fputc('\n', stderr);
-  }
+  if (settings_.terminal) emit("\n");
 }
 
 void ProgressReporter::print(const ProgressState& state) {
@@ -78,6 +73,10 @@ void ProgressReporter::print(const ProgressState& state) {
     text += '\n';
   }
   printed_ = true;
+  emit(text);
+}
+
+void ProgressReporter::emit(const std::string& text) {
   if (settings_.write) {
     settings_.write(text);
   } else {

@@ -39,16 +39,15 @@ std::vector<Tile> make_tiles(int width, int height) {
 }
 
 // What the progress line counts (progress.h): one worker's, added to by it after each row of a
-// tile and read by the thread that shows the progress. On a cache line of its own, so that the
-// workers never wait for each other's counts: a few additions per row, nothing next to the
-// row's samples.
+// tile and read by the thread that shows the progress. On a cache line of its own, so that no
+// worker waits for another's: three additions per row, nothing next to the row's samples.
 struct alignas(64) ProgressCounters {
   std::atomic<std::uint64_t> samples{0};  // samples taken
   std::atomic<std::uint64_t> pixels{0};   // pixels finished (in the last pass)
   std::atomic<std::uint64_t> rays{0};     // rays traced
 };
 
-// One tile's part: what its rows did since it last told the shared counters.
+// One tile's part: after each of its rows, adds what the row did to its worker's counters.
 class TileProgress {
  public:
   TileProgress(ProgressCounters& counters, const ShadingStats& tile_stats) : counters_(counters), tile_stats_(tile_stats) {}

@@ -12,6 +12,7 @@
 // Nothing here changes the image: the counters are only read.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -68,6 +69,7 @@ class ProgressReporter {
  private:
   double now() const;
   void print(const ProgressState& state);
+  void emit(const std::string& text);  // to settings_.write, else stderr
 
   ProgressSettings settings_;
   double start_ = 0.0;
