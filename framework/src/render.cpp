@@ -1,6 +1,7 @@
 #include "raylab/render.h"
 
 #include "raylab/geometry.h"
+#include "raylab/progress.h"
 #include "raylab/stages/01_camera_rays.h"
 
 #include <algorithm>
@@ -8,7 +9,6 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
-#include <cstdio>
 #include <exception>
 #include <functional>
 #include <memory>
@@ -23,6 +23,8 @@ namespace raylab {
 namespace {
 
 constexpr int kTileSize = 16;
+// How often the calling thread reads the progress counters (and a terminal's line is redrawn).
+constexpr std::chrono::milliseconds kProgressTick(250);
 
 struct Tile {
   int x0, y0, x1, y1;
@@ -36,18 +38,33 @@ std::vector<Tile> make_tiles(int width, int height) {
   return tiles;
 }
 
-void print_progress(std::size_t done, std::size_t total, double seconds, std::uint64_t rays) {
-  const double fraction = total ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
-  const double eta = fraction > 0 ? seconds * (1.0 - fraction) / fraction : 0.0;
-  const double mrays = seconds > 0 ? static_cast<double>(rays) / seconds * 1e-6 : 0.0;
-  constexpr int kBarWidth = 30;
-  char bar[kBarWidth + 1];
-  const int filled = static_cast<int>(fraction * kBarWidth);
-  for (int i = 0; i < kBarWidth; ++i) bar[i] = i < filled ? '#' : '.';
-  bar[kBarWidth] = '\0';
-  std::fprintf(stderr, "\r[%s] %3.0f%%  ETA %5.1f s  %7.2f Mrays/s ", bar, fraction * 100.0, eta, mrays);
-  std::fflush(stderr);
-}
+// What the progress line counts (progress.h): one worker's, added to by it after each row of a
+// tile and read by the thread that shows the progress. On a cache line of its own, so that no
+// worker waits for another's: three additions per row, nothing next to the row's samples.
+struct alignas(64) ProgressCounters {
+  std::atomic<std::uint64_t> samples{0};  // samples taken
+  std::atomic<std::uint64_t> pixels{0};   // pixels finished (in the last pass)
+  std::atomic<std::uint64_t> rays{0};     // rays traced
+};
+
+// One tile's part: after each of its rows, adds what the row did to its worker's counters.
+class TileProgress {
+ public:
+  TileProgress(ProgressCounters& counters, const ShadingStats& tile_stats) : counters_(counters), tile_stats_(tile_stats) {}
+  // A row of the tile is done: `pixels` finished, `samples` taken.
+  void row_done(int pixels, std::uint64_t samples) {
+    const std::uint64_t rays = tile_stats_.rays();
+    counters_.samples.fetch_add(samples, std::memory_order_relaxed);
+    counters_.pixels.fetch_add(static_cast<std::uint64_t>(pixels), std::memory_order_relaxed);
+    counters_.rays.fetch_add(rays - rays_told_, std::memory_order_relaxed);
+    rays_told_ = rays;
+  }
+
+ private:
+  ProgressCounters& counters_;
+  const ShadingStats& tile_stats_;
+  std::uint64_t rays_told_ = 0;
+};
 
 }  // namespace
 
@@ -163,10 +180,8 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   // pixels; once every worker has finished a pass, the last one runs between_passes (by noise:
   // the samples' shares) and all go on to the next. (New threads for a pass could wait: the
   // image I/O loads beside the first pass, and glibc makes a new thread wait while a library loads.)
-  struct Pass {
-    std::function<void(const Tile&, ShadingStats&, Sampler&)> render_tile;
-    std::size_t units;  // for the progress line: a tile's samples per pixel in this pass
-  };
+  // A pass renders a tile at a time, and tells `progress` after each of the tile's rows.
+  using Pass = std::function<void(const Tile&, ShadingStats&, Sampler&, TileProgress& progress)>;
   std::vector<Pass> passes;
   std::function<void()> between_passes;
   std::vector<std::uint32_t> shares;  // by noise: each pixel's samples in all
@@ -176,13 +191,15 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
 
   if (!by_noise) {
     // One pass; each tile keeps a film of its own.
-    passes.push_back({[&](const Tile& tile, ShadingStats& tile_stats, Sampler& sampler) {
+    passes.push_back([&](const Tile& tile, ShadingStats& tile_stats, Sampler& sampler, TileProgress& progress) {
                         std::optional<Film> film;
                         if (!one_plain_sample) film.emplace(tile.x1 - tile.x0, tile.y1 - tile.y0, settings.track_variance);
-                        for (int y = tile.y0; y < tile.y1; ++y)
+                        for (int y = tile.y0; y < tile.y1; ++y) {
+                          std::uint64_t row_samples = 0;
                           for (int x = tile.x0; x < tile.x1; ++x) {
                             if (one_plain_sample) {  // the mean of one sample is that sample: no film needed
                               output.mean.at(x, y) = trace_sample(x, y, 0, sampler, tile_stats);
+                              ++row_samples;
                               continue;
                             }
                             PixelConvergence convergence;  // adaptive sampling: a pixel's samples depend on it alone
@@ -195,6 +212,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                                   convergence.converged(settings.adaptive_tolerance))
                                 break;
                             }
+                            row_samples += adaptive ? convergence.count() : static_cast<std::uint32_t>(samples_per_pixel);
                             if (adaptive)
                               output.sample_rate.at(x, y) = glm::vec3(static_cast<float>(
                                   static_cast<double>(convergence.count()) / static_cast<double>(samples_per_pixel)));
@@ -202,15 +220,16 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                             if (settings.track_variance)
                               output.variance_of_mean.at(x, y) = film->variance_of_mean_at(x - tile.x0, y - tile.y0);
                           }
-                      },
-                      1u});
+                          progress.row_done(tile.x1 - tile.x0, row_samples);
+                        }
+                      });
   } else {
     image_film.emplace(camera.width, camera.height, settings.track_variance);
     noise.assign(width * static_cast<std::size_t>(camera.height), 0.0f);
     // Pass 1: every pixel's pilot samples, and their variance as a picture shows them (each channel
     // clamped to [0, 1], NaN as 0; the channels' variances added).
-    passes.push_back({[&](const Tile& tile, ShadingStats& tile_stats, Sampler& sampler) {
-                        for (int y = tile.y0; y < tile.y1; ++y)
+    passes.push_back([&](const Tile& tile, ShadingStats& tile_stats, Sampler& sampler, TileProgress& progress) {
+                        for (int y = tile.y0; y < tile.y1; ++y) {
                           for (int x = tile.x0; x < tile.x1; ++x) {
                             glm::dvec3 sum(0.0), sum_of_squares(0.0);
                             for (int sample = 0; sample < kPilotSamples; ++sample) {
@@ -226,17 +245,21 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                             noise[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)] =
                                 static_cast<float>(std::max(0.0, variance.x + variance.y + variance.z));
                           }
-                      },
-                      static_cast<std::size_t>(kPilotSamples)});
+                          // No pixel finished yet: the second pass finishes them.
+                          progress.row_done(0, static_cast<std::uint64_t>(tile.x1 - tile.x0) * kPilotSamples);
+                        }
+                      });
     between_passes = [&] {
       shares = allot_samples_by_noise(noise, camera.width, camera.height, samples_per_pixel, kPilotSamples);
     };
     // Pass 2: each pixel's samples from kPilotSamples up to its share.
-    passes.push_back({[&](const Tile& tile, ShadingStats& tile_stats, Sampler& sampler) {
-                        for (int y = tile.y0; y < tile.y1; ++y)
+    passes.push_back([&](const Tile& tile, ShadingStats& tile_stats, Sampler& sampler, TileProgress& progress) {
+                        for (int y = tile.y0; y < tile.y1; ++y) {
+                          std::uint64_t row_samples = 0;
                           for (int x = tile.x0; x < tile.x1; ++x) {
                             const std::uint32_t share =
                                 shares[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)];
+                            row_samples += share - kPilotSamples;
                             for (std::uint32_t sample = kPilotSamples; sample < share; ++sample) {
                               image_film->add_sample(x, y, trace_sample(x, y, static_cast<int>(sample), sampler, tile_stats));
                             }
@@ -246,19 +269,17 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                             output.sample_rate.at(x, y) = glm::vec3(
                                 static_cast<float>(static_cast<double>(share) / static_cast<double>(samples_per_pixel)));
                           }
-                      },
-                      static_cast<std::size_t>(samples_per_pixel - kPilotSamples)});
+                          progress.row_done(tile.x1 - tile.x0, row_samples);
+                        }
+                      });
   }
 
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
   const int thread_count = std::max(1, std::min<int>(settings.threads > 0 ? settings.threads : static_cast<int>(hardware),
                                                       static_cast<int>(tiles.size())));
-  std::size_t total_units = 0;
-  for (const Pass& pass : passes) total_units += tiles.size() * pass.units;
   std::unique_ptr<std::atomic<std::size_t>[]> next_tile(new std::atomic<std::size_t>[passes.size()]);
   for (std::size_t p = 0; p < passes.size(); ++p) next_tile[p] = 0;
-  std::atomic<std::size_t> units_done{0};
-  std::atomic<std::uint64_t> rays{0};  // for the progress line, read while workers run
+  std::vector<ProgressCounters> progress_counters(static_cast<std::size_t>(thread_count));  // one per worker
   std::atomic<bool> stop{false};
   ShadingStats total_work;
   std::mutex work_mutex;
@@ -275,20 +296,21 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   int workers_finished = 0;
   std::size_t passes_done = 0;
   bool threads_failed = false;  // not every worker could be started: nobody waits for the others
+  // The workers still at work, for the calling thread while it shows the progress.
+  std::mutex end_mutex;
+  std::condition_variable worker_ended;
+  int workers_running = thread_count;
 
-  auto worker = [&] {
+  auto worker = [&](int index) {
     for (std::size_t p = 0; p < passes.size(); ++p) {
       try {
         for (std::size_t t = next_tile[p]++; t < tiles.size() && !stop; t = next_tile[p]++) {
           ShadingStats tile_stats;
           Sampler sampler(samples_per_pixel, settings.seed);
-          passes[p].render_tile(tiles[t], tile_stats, sampler);
-          rays += tile_stats.rays();
-          {
-            std::lock_guard<std::mutex> lock(work_mutex);
-            total_work += tile_stats;
-          }
-          units_done += passes[p].units;
+          TileProgress tile_progress(progress_counters[static_cast<std::size_t>(index)], tile_stats);
+          passes[p](tiles[t], tile_stats, sampler, tile_progress);
+          std::lock_guard<std::mutex> lock(work_mutex);
+          total_work += tile_stats;
         }
       } catch (...) {
         keep_error();
@@ -310,11 +332,34 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
         pass_finished.wait(lock, [&] { return passes_done > p || threads_failed; });
       }
     }
+    std::lock_guard<std::mutex> lock(end_mutex);
+    if (--workers_running == 0) worker_ended.notify_one();
   };
+
+  // The progress line's state from the counters: the fraction done by samples taken, with
+  // adaptive sampling (where a pixel's samples are not known before) by pixels finished.
+  const double pixel_count = static_cast<double>(camera.width) * static_cast<double>(camera.height);
+  const auto progress_state = [&] {
+    std::uint64_t samples = 0, pixels = 0, rays = 0;
+    for (const ProgressCounters& counters : progress_counters) {
+      samples += counters.samples.load(std::memory_order_relaxed);
+      pixels += counters.pixels.load(std::memory_order_relaxed);
+      rays += counters.rays.load(std::memory_order_relaxed);
+    }
+    ProgressState state;
+    state.fraction = adaptive ? static_cast<double>(pixels) / pixel_count
+                              : static_cast<double>(samples) / (pixel_count * samples_per_pixel);
+    state.samples_per_pixel = static_cast<double>(samples) / pixel_count;
+    state.samples_per_pixel_goal = samples_per_pixel;
+    state.rays = rays;
+    return state;
+  };
+  std::optional<ProgressReporter> progress;  // its clock starts here, as the tracing does
+  if (settings.progress.show) progress.emplace(settings.progress);
 
   std::vector<std::thread> threads;
   try {
-    for (int i = 0; i < thread_count; ++i) threads.emplace_back(worker);
+    for (int i = 0; i < thread_count; ++i) threads.emplace_back(worker, i);
     if (settings.on_workers_started) settings.on_workers_started();
   } catch (...) {  // no thread to be had (std::system_error): stop the ones started, then say why
     stop = true;
@@ -326,15 +371,17 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
     for (std::thread& thread : threads) thread.join();
     throw;
   }
-  if (settings.show_progress) {
-    while (units_done < total_units && !stop) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(200));
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      print_progress(units_done, total_units, seconds, rays);
-    }
+  if (progress) {
+    // Reads the counters now and then every kProgressTick until the last worker ends.
+    std::unique_lock<std::mutex> lock(end_mutex);
+    do {
+      lock.unlock();
+      progress->update(progress_state());
+      lock.lock();
+    } while (!worker_ended.wait_for(lock, kProgressTick, [&] { return workers_running == 0; }));
   }
   for (std::thread& thread : threads) thread.join();
-  if (settings.show_progress) std::fprintf(stderr, "\r%*s\r", 78, "");
+  if (progress) progress->finish(progress_state(), !first_error);
   if (first_error) std::rethrow_exception(first_error);
 
   if (stats) {

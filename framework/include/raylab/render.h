@@ -13,6 +13,7 @@
 #include "raylab/geometry.h"
 #include "raylab/image.h"
 #include "raylab/integrator.h"
+#include "raylab/progress.h"
 #include "raylab/scene.h"
 #include "raylab/shading.h"
 
@@ -39,7 +40,8 @@ struct RenderSettings {
   int max_depth = 5;
   RussianRoulette roulette;  // --roulette: how the path tracer's paths end (default: no roulette)
   int threads = 0;             // 0: every core
-  bool show_progress = false;  // progress, ETA and rays/s on stderr
+  // Progress on stderr (progress.h): off unless progress.show (raylab render: unless --quiet).
+  ProgressSettings progress;
   // What to leave out (shading.h); the same image either way. Changed only to measure.
   Skips skips;
   TriangleTest triangle_test = TriangleTest::MollerTrumbore;  // --watertight: bonus stage 06_robustness's test
