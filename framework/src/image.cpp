@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <future>
 #include <iterator>
 #include <mutex>
@@ -86,16 +87,14 @@ std::string write_ppm(const Image& image, const std::string& path) {
   const std::string header =
       "P6\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n255\n";
   const std::vector<unsigned char> bytes = srgb_bytes(image);
-  FILE* file = std::fopen(path.c_str(), "wb");
-  if (file == nullptr) return std::string("cannot open the file: ") + std::strerror(errno);
-  errno = 0;
-  const bool written = std::fwrite(header.data(), 1, header.size(), file) == header.size() &&
-                       std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-  const bool closed = std::fclose(file) == 0;
-  if (written && closed) return "";
-  const std::string why = errno != 0 ? std::strerror(errno) : "the file is shorter than the image";
+  std::ofstream file(path, std::ios::binary);
+  if (!file) return std::string("cannot open the file: ") + std::strerror(errno);
+  file << header;
+  file.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  file.close();
+  if (file) return "";
   std::remove(path.c_str());  // no truncated image left where a whole one may have been
-  return "cannot write the file: " + why;
+  return "cannot write the whole file";
 }
 
 // PNG through libpng's simplified API, which marks the file as sRGB (its sRGB chunk) and
@@ -131,8 +130,8 @@ void wait_for_preload() {
   if (pending.valid()) pending.wait();
 }
 
-// Every OpenImageIO call waits for a background load first: OpenImageIO is then never used from two
-// threads at once by the framework.
+// Every OpenImageIO call waits for a background load first: OpenImageIO is then never used
+// from two threads at once by the framework.
 const image_io::ModuleFunctions& oiio() {
   wait_for_preload();
   return image_io::load_image_io_module();
@@ -161,8 +160,8 @@ ImageIoPreload::~ImageIoPreload() { wait_for_preload(); }
 
 std::uint8_t srgb_byte(float linear) {
   // How many steps start at or below the value; NaN compares false with every one: 255.
-  return static_cast<std::uint8_t>(std::upper_bound(std::begin(kSrgbByteStarts), std::end(kSrgbByteStarts), linear) -
-                                   std::begin(kSrgbByteStarts));
+  const float* const starts = std::begin(kSrgbByteStarts);
+  return static_cast<std::uint8_t>(std::upper_bound(starts, std::end(kSrgbByteStarts), linear) - starts);
 }
 
 void check_image_extension(const std::string& path) {

@@ -47,8 +47,8 @@ struct RenderSettings {
   TracingFunctions tracing;
   // Called once by the calling thread as soon as the render's worker threads exist, to start
   // other work beside them: `raylab render` starts loading OpenImageIO for an EXR file
-  // (ImageIoPreload, image.h). Work that loads shared libraries must wait until then, as glibc cannot create a
-  // thread while another is inside dlopen (it waits for the loader's lock).
+  // (ImageIoPreload, image.h). Work that loads shared libraries must wait until then, as glibc
+  // cannot create a thread while another is inside dlopen (it waits for the loader's lock).
   std::function<void()> on_workers_started;
 };
 

@@ -61,9 +61,9 @@ std::string reason_of(Body&& body) {
 }
 
 // Collects the EXR encoder's output in memory; write_exr() below puts it in the file in one
-// call, and removes a file it could not write whole. One encoder writes
-// into one MemoryOutput, from one thread: pwrite does not take a lock (OpenImageIO's EXR
-// writer never calls it from two threads).
+// call, and removes a file it could not write whole. One encoder writes into one MemoryOutput,
+// from one thread: pwrite does not take a lock (OpenImageIO's EXR writer never calls it from
+// two threads).
 class MemoryOutput final : public oiio::Filesystem::IOProxy {
  public:
   MemoryOutput() : IOProxy("", Write) {}
