@@ -130,13 +130,15 @@ TEST(Image, EightBitFilesHoldTheBytesOpenImageIoWrote) {
   const std::filesystem::path dir = scratch_dir();
   // PPM: the same file, header and all.
   write_image(input, (dir / "written.ppm").string());
-  const std::string ppm = read_bytes(dir / "written.ppm", 1 << 20), expected_ppm = read_bytes(data + "_openimageio.ppm", 1 << 20);
+  const std::string ppm = read_bytes(dir / "written.ppm", 1 << 20);
+  const std::string expected_ppm = read_bytes(data + "_openimageio.ppm", 1 << 20);
   ASSERT_EQ(ppm.size(), expected_ppm.size()) << dir / "written.ppm";
   const std::size_t header = ppm.size() - 3 * input.pixels().size();
   EXPECT_EQ(ppm.substr(0, header), expected_ppm.substr(0, header)) << "the PPM header";
   // PNG: the same pixels, read back through OpenImageIO (the chunks around them differ).
   write_image(input, (dir / "written.png").string());
-  const Image png = read_image((dir / "written.png").string()), expected_png = read_image(data + "_openimageio.png");
+  const Image png = read_image((dir / "written.png").string());
+  const Image expected_png = read_image(data + "_openimageio.png");
   ASSERT_EQ(png.width(), input.width());
   ASSERT_EQ(png.height(), input.height());
   int wrong = 0;
@@ -162,7 +164,8 @@ TEST(Image, EightBitFilesHoldTheBytesOpenImageIoWrote) {
 TEST(Image, OnlyExrIsWrittenThroughOpenImageIo) {
   EXPECT_TRUE(writes_through_openimageio("out.exr"));
   EXPECT_TRUE(writes_through_openimageio("OUT.EXR"));
-  for (const std::string path : {"out.png", "out.ppm", "out.PNG", ""}) EXPECT_FALSE(writes_through_openimageio(path)) << path;
+  for (const std::string path : {"out.png", "out.ppm", "out.PNG", ""})
+    EXPECT_FALSE(writes_through_openimageio(path)) << path;
 }
 
 TEST(Image, PpmIsBinaryP6AndPngHasItsSignature) {
