@@ -1,8 +1,10 @@
 // Images: write_image / read_image round trips, extension checks, and the comparison tools
 // the autograder uses (compare_images, side_by_side_difference).
 //
-// image.h: .exr keeps linear floats exactly; .png and .ppm store 8-bit sRGB, so a value comes
-// back within half an 8-bit step of sRGB (checked below as 1/255 in sRGB units).
+// image.h: .exr keeps linear floats exactly; .png (libpng) and .ppm (the framework's own
+// writer) store 8-bit sRGB, so a value comes back within half an 8-bit step of sRGB (checked
+// below as 1/255 in sRGB units), and each file holds the bytes OpenImageIO wrote for it before
+// (EightBitFilesHoldTheBytesOpenImageIoWrote). Reading goes through OpenImageIO.
 #include "raylab/error.h"
 #include "raylab/image.h"
 
@@ -12,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -38,6 +41,12 @@ Image make_test_image() {
   image.at(1, 1) = glm::vec3(0.5f, 0.5f, 0.5f);  // mid grey
   image.at(2, 1) = glm::vec3(0.001f, 0.04f, 0.2f);  // the steep toe of the sRGB curve
   return image;
+}
+
+std::uint32_t bits_of(float value) {
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  return bits;
 }
 
 std::string read_bytes(const std::filesystem::path& path, std::size_t count) {
@@ -105,6 +114,59 @@ TEST_P(EightBitImage, ValuesOutsideZeroToOneAreClamped) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PngAndPpm, EightBitImage, ::testing::Values("png", "ppm"));
+
+// tests/data/eight_bit_input.exr holds 32 x 23 linear values: NaN, -NaN, +-infinity, -0, the
+// smallest denormals, values below 0 and above 1 up to the largest float, the first value of
+// each byte from 1 to 255 with the floats just below and above it, a gradient from -0.1 to
+// 1.3, and random values in [0, 1]. eight_bit_openimageio.png and .ppm are what the framework
+// wrote for it through OpenImageIO 2.4 (Debian 12) at 2c4b51e, before it wrote these formats
+// itself. (3 x 32 values to a row, a multiple of 4: OpenImageIO wrote the last 3 x width mod 4
+// values of a row through another path, which differs for one float; image.cpp.)
+TEST(Image, EightBitFilesHoldTheBytesOpenImageIoWrote) {
+  const std::string data = testing::source_path("tests/data/eight_bit");
+  const Image input = read_image(data + "_input.exr");
+  ASSERT_EQ(input.width(), 32);
+  ASSERT_EQ(input.height(), 23);
+  const std::filesystem::path dir = scratch_dir();
+  // PPM: the same file, header and all.
+  write_image(input, (dir / "written.ppm").string());
+  const std::string ppm = read_bytes(dir / "written.ppm", 1 << 20);
+  const std::string expected_ppm = read_bytes(data + "_openimageio.ppm", 1 << 20);
+  ASSERT_EQ(ppm.size(), expected_ppm.size()) << dir / "written.ppm";
+  const std::size_t header = ppm.size() - 3 * input.pixels().size();
+  EXPECT_EQ(ppm.substr(0, header), expected_ppm.substr(0, header)) << "the PPM header";
+  // PNG: the same pixels, read back through OpenImageIO (the chunks around them differ).
+  write_image(input, (dir / "written.png").string());
+  const Image png = read_image((dir / "written.png").string());
+  const Image expected_png = read_image(data + "_openimageio.png");
+  ASSERT_EQ(png.width(), input.width());
+  ASSERT_EQ(png.height(), input.height());
+  int wrong = 0;
+  for (int y = 0; y < input.height(); ++y)
+    for (int x = 0; x < input.width(); ++x)
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t i = header + 3 * (static_cast<std::size_t>(y) * input.width() + x) + c;
+        const float value = input.at(x, y)[c];
+        if (ppm[i] != expected_ppm[i] && ++wrong <= 5)
+          ADD_FAILURE() << "PPM, pixel (" << x << ", " << y << ") channel " << c << ", linear " << value
+                        << " (bits 0x" << std::hex << bits_of(value) << std::dec << "): wrote "
+                        << int(static_cast<unsigned char>(ppm[i])) << ", OpenImageIO wrote "
+                        << int(static_cast<unsigned char>(expected_ppm[i]));
+        if (png.at(x, y)[c] != expected_png.at(x, y)[c] && ++wrong <= 5)
+          ADD_FAILURE() << "PNG, pixel (" << x << ", " << y << ") channel " << c << ", linear " << value
+                        << " (bits 0x" << std::hex << bits_of(value) << std::dec << "): reads back as "
+                        << png.at(x, y)[c] << ", OpenImageIO's file as " << expected_png.at(x, y)[c];
+      }
+  EXPECT_EQ(wrong, 0) << "values written otherwise than OpenImageIO wrote them, out of 2 x "
+                      << 3 * input.pixels().size();
+}
+
+TEST(Image, OnlyExrIsWrittenThroughOpenImageIo) {
+  EXPECT_TRUE(writes_through_openimageio("out.exr"));
+  EXPECT_TRUE(writes_through_openimageio("OUT.EXR"));
+  for (const std::string path : {"out.png", "out.ppm", "out.PNG", ""})
+    EXPECT_FALSE(writes_through_openimageio(path)) << path;
+}
 
 TEST(Image, PpmIsBinaryP6AndPngHasItsSignature) {
   // Students open .ppm files in a text editor to debug: it must be the binary P6 variant that

@@ -115,10 +115,13 @@ int run_render(const RenderOptions& options) {
     settings.progress.delay = *seconds;
     settings.progress.interval = *seconds;
   }
-  // OpenImageIO loaded beside the render, once its workers run; waited for by the first write
-  // (and before this function returns or throws).
+  // OpenImageIO, when an EXR file is to be written, loaded beside the render once its workers
+  // run; waited for by the first write (and before this function returns or throws). PNG and
+  // PPM files are written without it.
   std::optional<ImageIoPreload> image_io_preload;
-  settings.on_workers_started = [&image_io_preload] { image_io_preload.emplace(); };
+  if (writes_through_openimageio(options.output_path) || writes_through_openimageio(options.variance_path) ||
+      writes_through_openimageio(options.sample_rate_path))
+    settings.on_workers_started = [&image_io_preload] { image_io_preload.emplace(); };
   RenderStats stats;
   const RenderOutput output = render_with_variance(scene, settings, &stats);
   const Image& image = output.mean;

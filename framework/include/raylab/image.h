@@ -1,13 +1,15 @@
-// Float linear-RGB images in memory; all file I/O goes through OpenImageIO, which the
-// framework loads only on the first call below that needs it (framework/src/image_io/), so
-// that programs that never touch an image file do not pay its start-up.
+// Float linear-RGB images in memory, and their files.
 //
-// On disk: .exr keeps linear float values; .png and .ppm (binary P6) are 8-bit sRGB
-// (the sRGB transfer curve applied by OpenImageIO, values clamped to [0, 1]).
+// On disk, by the extension: .png and .ppm (binary P6) are 8-bit sRGB (srgb_byte below), the
+// PNG written with libpng and the PPM by the framework itself; .exr keeps linear float values
+// and goes through OpenImageIO, as does reading any file and comparing images. The framework
+// loads OpenImageIO (about 260 shared libraries) only on the first call that needs it
+// (framework/src/image_io/), so that programs that write no EXR and read no image never do.
 #pragma once
 
 #include "raylab/math.h"
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,19 +42,27 @@ class Image {
   std::vector<glm::vec3> pixels_;
 };
 
-// Writes by the path's extension (.png, .exr, .ppm). Throws InputError with the path and
-// OpenImageIO's reason if the extension is unknown or the file cannot be written.
+// Writes by the path's extension (.png, .exr, .ppm). Throws InputError with the path and the
+// reason if the extension is unknown or the file cannot be written.
 void write_image(const Image& image, const std::string& path);
 
 // Throws InputError if `path` does not end in an extension write_image knows; call it before
 // long work whose result would then be lost.
 void check_image_extension(const std::string& path);
 
+// Whether write_image(image, path) goes through OpenImageIO (an .exr file).
+bool writes_through_openimageio(const std::string& path);
+
+// The byte a .png or .ppm file stores for a linear value: the sRGB curve applied, clamped to
+// [0, 1] and rounded to 8 bits, exactly as OpenImageIO 2.4 converted it when it wrote these
+// files: below 0 (and -infinity) 0, above 1 (and +infinity, NaN) 255.
+std::uint8_t srgb_byte(float linear);
+
 // Loads OpenImageIO (0.16 s on the course's Debian machines: the dynamic loader binds the ~260
 // shared libraries it brings) on a background thread from its construction, for a program that
-// will write an image: the load then overlaps its work (a render) instead of following it.
-// Every image call below waits until that load is done (a failed load is reported by the call
-// as it would have been without it), and so does the destructor: keep the object until the
+// will write an EXR file: the load then overlaps its work (a render) instead of following it.
+// Every OpenImageIO call below waits until that load is done (a failed load is reported by the
+// call as it would have been without it), and so does the destructor: keep the object until the
 // images are written, and do not leave the program (std::exit) while it lives, as the exit
 // would destroy OpenImageIO's static objects under the load. Only the first object of a
 // process starts a load (later ones wait for it); where no thread can be started, none does,

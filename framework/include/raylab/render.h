@@ -48,9 +48,9 @@ struct RenderSettings {
   // Who computes camera rays and primitive tests (geometry.h); by default the stages' own.
   TracingFunctions tracing;
   // Called once by the calling thread as soon as the render's worker threads exist, to start
-  // other work beside them: `raylab render` starts loading the image I/O (ImageIoPreload,
-  // image.h). Work that loads shared libraries must wait until then, as glibc cannot create a
-  // thread while another is inside dlopen (it waits for the loader's lock).
+  // other work beside them: `raylab render` starts loading OpenImageIO for an EXR file
+  // (ImageIoPreload, image.h). Work that loads shared libraries must wait until then, as glibc
+  // cannot create a thread while another is inside dlopen (it waits for the loader's lock).
   std::function<void()> on_workers_started;
 };
 

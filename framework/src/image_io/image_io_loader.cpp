@@ -1,7 +1,7 @@
 // Loads the image I/O module (image_io_module.h). The framework's only platform-specific
 // code: POSIX dlopen, or LoadLibrary/GetProcAddress on Windows. A build configured with
 // RAYLAB_WITH_OPENIMAGEIO=OFF (the Windows check under Wine, tools/windows-check) has no
-// module: every image call then says so.
+// module: every call that needs it then says so.
 //
 // Where the module is, tried in this order:
 //   1. $RAYLAB_IMAGE_IO_MODULE, if set (a program moved away from its build; tests): only there;
@@ -107,7 +107,7 @@ const ModuleFunctions& load() {
 #else
 const ModuleFunctions& load() {
   throw std::runtime_error("image I/O: this build has no OpenImageIO (configured with RAYLAB_WITH_OPENIMAGEIO=OFF), "
-                           "so it cannot read, write or compare images");
+                           "so it cannot read images, write EXR files or compare images");
 }
 #endif
 

@@ -1,11 +1,12 @@
 // The interface between the framework (framework/src/image.cpp) and its image I/O module
-// (oiio_module.cpp, built as a separate shared module that links OpenImageIO).
+// (oiio_module.cpp, built as a separate shared module that links OpenImageIO): EXR files,
+// reading any image file, comparisons. (PNG and PPM files are written without it, image.cpp.)
 //
 // Why a module: OpenImageIO brings in about 260 shared libraries. Linked into every program,
 // the dynamic loader maps them all at start-up (0.19 s and 128 MiB for `--help`), in every
-// render and in every autograder child, although most never touch an image file. Loaded with
-// load_image_io_module() on the first image call, only the processes that read, write or
-// compare images pay for it, once.
+// render and in every autograder child, although most never need it. Loaded with
+// load_image_io_module() on the first call that needs it, only the processes that read images,
+// write EXR files or compare images pay for it, once.
 //
 // Nothing throws across this boundary: each function returns "" on success or the reason it
 // failed, and image.cpp turns the reason into the exception its header promises.
@@ -19,12 +20,12 @@ namespace raylab::image_io {
 
 // Raised whenever a field is added, removed or changes type, so that a stale module built from
 // older sources is refused instead of called with the wrong layout.
-constexpr int kModuleVersion = 2;
+constexpr int kModuleVersion = 3;
 
 struct ModuleFunctions {
   int version = kModuleVersion;
-  // .exr as linear float, anything else as 8-bit sRGB (the caller checked the extension).
-  std::string (*write)(const Image& image, const std::string& path, bool linear_float) = nullptr;
+  // An OpenEXR file of linear float values (the caller checked the extension).
+  std::string (*write_exr)(const Image& image, const std::string& path) = nullptr;
   std::string (*read)(const std::string& path, Image& image) = nullptr;
   // Sizes are equal (the caller checked).
   std::string (*compare)(const Image& actual, const Image& expected, float threshold,
@@ -32,8 +33,8 @@ struct ModuleFunctions {
   std::string (*resize)(const Image& image, int width, int height, Image& resized) = nullptr;
   std::string (*side_by_side_difference)(const Image& actual, const Image& expected,
                                          float full_scale, Image& picture) = nullptr;
-  // OpenImageIO's one-time work done ahead (its plugins found, their functions bound), so that
-  // the first write is as fast as the next; writes no file. For a background load (image.h).
+  // OpenImageIO's one-time work done ahead (its EXR plugin found, its functions bound), so
+  // that the first write is as fast as the next; writes no file. For a background load (image.h).
   void (*warm_up)() = nullptr;
 };
 

@@ -1,5 +1,6 @@
-// The framework's image I/O through OpenImageIO, built as the shared module raylab_image_io
-// (see image_io_module.h for why). The only file that includes OpenImageIO.
+// The framework's image I/O through OpenImageIO (EXR files, reading, comparisons), built as the
+// shared module raylab_image_io (see image_io_module.h for why). The only file that includes
+// OpenImageIO.
 #include "image_io_module.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -59,12 +60,10 @@ std::string reason_of(Body&& body) {
   }
 }
 
-// Collects an encoder's output in memory. OpenImageIO's writers hand their output over in
-// small pieces (its PPM writer one byte at a time: 3.7 million calls for a 1280x960 image),
-// and a C file write per piece cost more than the encoding itself (70 ms against 20 ms for
-// that image, measured 2026-12-03). The bytes are the same; write() below puts them in the
-// file in one call. One encoder writes into one MemoryOutput, from one thread: pwrite does not
-// take a lock (OpenImageIO's PNG, PPM and EXR writers never call it from two threads).
+// Collects the EXR encoder's output in memory; write_exr() below puts it in the file in one
+// call, and removes a file it could not write whole. One encoder writes into one MemoryOutput,
+// from one thread: pwrite does not take a lock (OpenImageIO's EXR writer never calls it from
+// two threads).
 class MemoryOutput final : public oiio::Filesystem::IOProxy {
  public:
   MemoryOutput() : IOProxy("", Write) {}
@@ -89,32 +88,12 @@ class MemoryOutput final : public oiio::Filesystem::IOProxy {
   std::vector<unsigned char> bytes_;
 };
 
-// Encodes `image` for the file `path` (its extension chooses the format): .exr as linear float,
-// anything else as 8-bit sRGB. Into `memory` where the format's writer takes an I/O proxy (png,
-// exr and ppm do in OpenImageIO 2.4 and 2.5); a writer without one writes the file itself, and
-// `written_to_file` says so. Returns "" or the reason.
-std::string encode(const Image& image, const std::string& path, bool linear_float, MemoryOutput& memory,
-                   bool& written_to_file) {
+// Encodes `image` as an OpenEXR file of linear float values, into `memory` where the writer
+// takes an I/O proxy (OpenImageIO 2.4 and 2.5's does); a writer without one writes the file
+// `path` itself, and `written_to_file` says so. Returns "" or the reason.
+std::string encode_exr(const Image& image, const std::string& path, MemoryOutput& memory, bool& written_to_file) {
   written_to_file = false;
-  const int width = image.width(), height = image.height();
-  std::vector<unsigned char> bytes;
-  oiio::ImageSpec spec(width, height, 3, oiio::TypeDesc::FLOAT);
-  const void* pixels = image.pixels().data();  // exr: linear float, as in memory
-  if (!linear_float) {
-    // png, ppm: 8-bit sRGB. The sRGB curve applied in place to a copy (OpenImageIO's
-    // colorconvert), then quantised with values clamped to [0, 1] by get_pixels. The writer is
-    // handed 8-bit data: OpenImageIO 2.5's PNM writer flips the rows of float data it is given
-    // (its PFM convention) even when it writes an 8-bit PPM. Marked as sRGB, a PNG carries
-    // its sRGB, gAMA and cHRM chunks.
-    std::vector<glm::vec3> copy = image.pixels();
-    oiio::ImageBuf srgb(spec, copy.data());
-    if (!oiio::ImageBufAlgo::colorconvert(srgb, srgb, "linear", "sRGB")) return failure(srgb.geterror());
-    bytes.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
-    if (!srgb.get_pixels(oiio::ROI::All(), oiio::TypeDesc::UINT8, bytes.data())) return failure(srgb.geterror());
-    spec.set_format(oiio::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    pixels = bytes.data();
-  }
+  const oiio::ImageSpec spec(image.width(), image.height(), 3, oiio::TypeDesc::FLOAT);
   std::unique_ptr<oiio::ImageOutput> output = oiio::ImageOutput::create(path);
   if (!output) return failure(oiio::geterror());
   if (output->supports("ioproxy")) {
@@ -123,15 +102,16 @@ std::string encode(const Image& image, const std::string& path, bool linear_floa
   } else {
     written_to_file = true;
   }
-  if (output->open(path, spec) && output->write_image(spec.format, pixels) && output->close()) return "";
+  if (output->open(path, spec) && output->write_image(spec.format, image.pixels().data()) && output->close())
+    return "";
   return failure(output->geterror());
 }
 
-std::string write(const Image& image, const std::string& path, bool linear_float) {
+std::string write_exr(const Image& image, const std::string& path) {
   return reason_of([&]() -> std::string {
     MemoryOutput memory;
     bool written_to_file = false;
-    const std::string reason = encode(image, path, linear_float, memory, written_to_file);
+    const std::string reason = encode_exr(image, path, memory, written_to_file);
     if (!reason.empty() || written_to_file) return reason;
     FILE* file = oiio::Filesystem::fopen(path, "wb");
     if (file == nullptr) return std::string("cannot open the file: ") + std::strerror(errno);
@@ -146,20 +126,16 @@ std::string write(const Image& image, const std::string& path, bool linear_float
   });
 }
 
-// Encodes a tiny image in each format, into memory only (no file is written), so that the
-// first real write does not pay OpenImageIO's one-time work: finding its format plugins,
-// binding their functions, starting its thread pool (about 30 ms here). Called beside a render
-// by an ImageIoPreload (image.h).
+// Encodes a tiny EXR image into memory only (no file is written), so that the first real write
+// does not pay OpenImageIO's one-time work: finding its EXR plugin, binding its functions,
+// starting its thread pool. Called beside a render by an ImageIoPreload (image.h).
 void warm_up() {
   (void)reason_of([]() -> std::string {
     const Image tiny(2, 2, glm::vec3(0.5f));
-    for (const char* path : {"warm_up.png", "warm_up.ppm", "warm_up.exr"}) {
-      std::unique_ptr<oiio::ImageOutput> output = oiio::ImageOutput::create(path);
-      if (!output || !output->supports("ioproxy")) continue;  // would write a file
-      MemoryOutput memory;
-      bool written_to_file = false;
-      (void)encode(tiny, path, std::string(path).find(".exr") != std::string::npos, memory, written_to_file);
-    }
+    MemoryOutput memory;
+    bool written_to_file = false;
+    std::unique_ptr<oiio::ImageOutput> output = oiio::ImageOutput::create("warm_up.exr");
+    if (output && output->supports("ioproxy")) (void)encode_exr(tiny, "warm_up.exr", memory, written_to_file);
     return "";
   });
 }
@@ -231,7 +207,7 @@ std::string side_by_side_difference(const Image& actual, const Image& expected, 
 
 const ModuleFunctions kFunctions = [] {
   ModuleFunctions functions;
-  functions.write = write;
+  functions.write_exr = write_exr;
   functions.read = read;
   functions.compare = compare;
   functions.resize = resize;
