@@ -385,7 +385,7 @@ GRADED_TEST(kStage, Stage01CameraRays, MatchesReferenceRays, 3) {
   EXPECT_EQ(failures, 0)
       << failure_text({MessageId::camera_failure_reference_count,
                  {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())},
-                  {"seed", data.at("seed").dump()}}});
+                  {"seed", seed_shown(data)}}});
 }
 
 GRADED_TEST(kStage, Stage01CameraRays, DirectionImageMatchesReference, 2) {

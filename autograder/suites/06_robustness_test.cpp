@@ -109,7 +109,7 @@ void check_sphere_cases(const std::string& kind) {
   EXPECT_EQ(failures, 0)
       << failure_text({MessageId::robust_failure_spheres_wrong,
                  {{"failures", std::to_string(failures)}, {"count", std::to_string(checked)}, {"kind", kind},
-                  {"seed", data.at("seed").dump()}}});
+                  {"seed", seed_shown(data)}}});
 }
 
 GRADED_TEST(kStage, Stage06Robustness, SmallSpheresFarAway, 4) { check_sphere_cases("far_tiny"); }

@@ -127,6 +127,11 @@ std::uint64_t test_seed(std::uint64_t graded_seed) {
 
 void set_test_seed_round(std::uint64_t round) { test_seed_round = round; }
 
+std::string seed_shown(const nlohmann::json& case_file) {
+  const nlohmann::json& seed = case_file.at("seed");
+  return seed.is_string() ? seed.get<std::string>() : seed.dump();
+}
+
 std::string reference_image_name(const std::string& stage_id) { return stage_id + ".png"; }
 
 void expect_image_matches_reference(const std::string& stage_id, float channel_threshold, double max_fraction) {

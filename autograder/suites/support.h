@@ -83,6 +83,9 @@ std::uint64_t test_seed(std::uint64_t graded_seed);
 void set_test_seed_round(std::uint64_t round);
 
 std::string reference_image_name(const std::string& stage_id);  // "<id>.png"
+// The seed a case file names, as its failures show it: the released data's number, or "private"
+// for a course's fresh cases (autograder-regenerate --seed).
+std::string seed_shown(const nlohmann::json& case_file);
 
 // The image test: renders the stage's picture with the linked stage code, compares it with
 // the reference (both as 8-bit sRGB PNG, so quantisation is the same), writes
