@@ -365,10 +365,7 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
 
 bool StageProcess::send(const std::string& payload, Clock::time_point) {
   Child& child = *child_;
-  std::string frame;
-  const auto size = static_cast<std::uint32_t>(payload.size());
-  for (int i = 0; i < 4; ++i) frame.push_back(static_cast<char>((size >> (8 * i)) & 0xff));
-  frame += payload;
+  std::string frame = protocol::framed(payload);
   const std::lock_guard<std::mutex> lock(child.mutex);
   if (child.request_failed) throw std::system_error(EPIPE, std::generic_category(), "write");
   // The pump writes it; the deadline holds while the judge waits for the reply. A server that

@@ -66,11 +66,7 @@ FrameRead read_frame_waiting(int fd, std::string& payload, std::uint32_t max_byt
 }
 
 bool write_frame_waiting(int fd, const std::string& payload, const std::function<bool()>* wait) {
-  const auto size = static_cast<std::uint32_t>(payload.size());
-  std::string frame;
-  frame.reserve(4 + payload.size());
-  for (int i = 0; i < 4; ++i) frame.push_back(static_cast<char>((size >> (8 * i)) & 0xff));
-  frame += payload;
+  const std::string frame = framed(payload);
   std::size_t done = 0;
   while (done < frame.size()) {
     if (wait && !(*wait)()) return false;
@@ -101,6 +97,15 @@ FrameRead read_frame(int fd, std::string& payload, std::uint32_t max_bytes, cons
 
 bool write_frame(int fd, const std::string& payload, const std::function<bool()>& wait_writable) {
   return write_frame_waiting(fd, payload, &wait_writable);
+}
+
+std::string framed(const std::string& payload) {
+  const auto size = static_cast<std::uint32_t>(payload.size());
+  std::string frame;
+  frame.reserve(4 + payload.size());
+  for (int i = 0; i < 4; ++i) frame.push_back(static_cast<char>((size >> (8 * i)) & 0xff));
+  frame += payload;
+  return frame;
 }
 
 std::string cut_text(std::string text, std::size_t max_bytes) {

@@ -152,6 +152,9 @@ enum class FrameRead { kFrame, kEnd, kTimedOut };
 FrameRead read_frame(int fd, std::string& payload, std::uint32_t max_bytes, const std::function<bool()>& wait_readable);
 bool write_frame(int fd, const std::string& payload, const std::function<bool()>& wait_writable);  // false: timed out
 
+// A payload as a frame: its 4-byte little-endian length, then itself.
+std::string framed(const std::string& payload);
+
 // A text cut to at most max_bytes, at a UTF-8 character's start, with "..." after a cut.
 std::string cut_text(std::string text, std::size_t max_bytes);
 
