@@ -275,6 +275,24 @@ TEST(Statistics, MeanTestWithoutSpreadPassesOnlyTheExactValueOrWithinSlack) {
   EXPECT_NE(nan_result.reason.find("nan"), std::string::npos) << nan_result.reason;
 }
 
+// A bias hidden in added noise: values 0.5 too high with a spread of 100 pass a plain t-test at
+// 1,000 values (the standard error is about 3); with the variance a right source can have (1),
+// the added spread counts no further and the bias fails. Values as noisy as allowed keep the test.
+TEST(Statistics, MeanTestCountsTheSpreadOnlyUpToTheVarianceARightSourceCanHave) {
+  Pcg32 random(7, stream_of("statistics"));
+  std::vector<double> biased_and_noisy, right;
+  for (int i = 0; i < 1000; ++i) {
+    biased_and_noisy.push_back(0.5 + 100.0 * normal_value(random));
+    right.push_back(normal_value(random));
+  }
+  EXPECT_TRUE(mean_test(biased_and_noisy, 0.0, 1e-3).passed);
+  const MeanTestResult capped = mean_test(biased_and_noisy, 0.0, 1e-3, 0.0, 1.0);
+  EXPECT_FALSE(capped.passed) << capped.describe();
+  EXPECT_NEAR(capped.standard_error, std::sqrt(1.0 / 1000.0), 1e-12);
+  EXPECT_TRUE(mean_test(right, 0.0, 1e-3, 0.0, 1.5).passed);  // its variance is under the cap: no change
+  EXPECT_EQ(mean_test(right, 0.0, 1e-3, 0.0, 1.5).standard_error, mean_test(right, 0.0, 1e-3).standard_error);
+}
+
 TEST(Statistics, MeanTestFalseFailureRateIsItsSignificanceLevel) {
   struct Case {
     const char* what;

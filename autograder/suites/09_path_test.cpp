@@ -150,7 +150,7 @@ bool furnace_right(int index) {
   const FurnaceRender& render = furnace_render(index);
   if (render.not_finite || render.pixel_means.size() < 2) return false;
   const double exact = furnace_value(kCorrect, kFurnaces[index]);
-  return furnace_mean_test(render.pixel_means, exact, kLevel).passed &&
+  return furnace_exact_test(render.pixel_means, kFurnaces[index], exact, kLevel).passed &&
          furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel).passed;
 }
 
@@ -171,7 +171,7 @@ void expect_furnace(int index) {
     return;
   }
   const double exact = furnace_value(kCorrect, kFurnaces[index]);
-  const testkit::MeanTestResult result = furnace_mean_test(render.pixel_means, exact, kLevel);
+  const testkit::MeanTestResult result = furnace_exact_test(render.pixel_means, kFurnaces[index], exact, kLevel);
   const FurnaceSpreadResult spread = furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel);
   if (result.passed && spread.passed) return;
   if (!result.passed) add_furnace_failure(index, result);

@@ -402,7 +402,7 @@ void expect_furnace(int index) {
     return;
   }
   const double exact = furnace_exact(kFurnaces[index]);
-  const testkit::MeanTestResult result = furnace_mean_test(render.pixel_means, exact, kLevel);
+  const testkit::MeanTestResult result = furnace_exact_test(render.pixel_means, kFurnaces[index], exact, kLevel);
   const FurnaceSpreadResult spread = furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel);
   if (result.passed && spread.passed) return;
   if (!result.passed) add_furnace_failure(index, result);

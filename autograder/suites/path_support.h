@@ -68,7 +68,13 @@ FurnaceRender render_furnace(int index, std::uint64_t seed, bool mis);
 // sphere, is found just before the ray's end; a shorter shadow epsilon loses more. Every mistake
 // the suite models moves some furnace by 15% or more.
 constexpr double kFurnaceTolerance = 1e-3;
-testkit::MeanTestResult furnace_mean_test(const std::vector<double>& pixel_means, double expected, double level);
+testkit::MeanTestResult furnace_mean_test(const std::vector<double>& pixel_means, double expected, double level,
+                                          double max_variance = std::numeric_limits<double>::infinity());
+// The t-test of a furnace against its exact answer: the pixels' own variance counts only up to
+// furnace_variance_bound (a correct path tracer's can be no larger), so noise added to hide a
+// bias does not widen it (tests/submissions/hostile_noise_hides_bias.cpp).
+testkit::MeanTestResult furnace_exact_test(const std::vector<double>& pixel_means, const Furnace& furnace, double exact,
+                                           double level);
 // Adds the failure of furnace `index`'s test (`result`, against furnace_exact).
 void add_furnace_failure(int index, const testkit::MeanTestResult& result);
 
@@ -124,9 +130,21 @@ double mis_test_level();
 // The region z-tests of a Cornell render: per 4x4 region and channel, z = (yours - reference) /
 // sqrt(variance), the variance the larger of yours and the reference's (scaled to your sample
 // count) plus the reference mean's own.
+// How much noisier than the reference estimator's a student's picture may count in the region
+// z-tests: its variance of the mean, over the whole picture, up to this multiple of the reference's
+// (scaled to the student's samples) widens the tests as the noise it adds; past it, no more. A
+// path tracer that follows the contract (its sampling choices included: uniform or cosine bounces,
+// MIS, another roulette) stays well under it (docs/instructors.md); a biased estimate with noise
+// added to hide the bias does not (tests/submissions/hostile_noise_hides_bias.cpp).
+constexpr double kNoisierThanReferenceAllowed = 4.0;
+
 struct RegionTest {
   int failures = 0;
   double z_limit = 0;
+  // The student's variance of the mean over the whole picture, as a multiple of the reference's
+  // scaled to the student's samples (what the stage server reported: it never widens a test past
+  // kNoisierThanReferenceAllowed).
+  double variance_ratio = 0;
   double worst_z = 0, worst_mean = 0, worst_expected = 0;
   int worst_x = 0, worst_y = 0, worst_channel = 0;
   std::vector<double> z_scores;  // region by region (row-major), channel by channel

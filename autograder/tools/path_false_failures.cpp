@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
     for (int f = 0; f < 3; ++f) {
       const FurnaceRender render = render_furnace(f, 1000003ull * seed + f, false);
       const double exact = furnace_exact(kFurnaces[f]);
-      const testkit::MeanTestResult test = furnace_mean_test(render.pixel_means, exact, level);
+      const testkit::MeanTestResult test = furnace_exact_test(render.pixel_means, kFurnaces[f], exact, level);
       const FurnaceSpreadResult spread = furnace_spread_test(render.pixel_means, kFurnaces[f], exact, level);
       furnace_spread_share[f] = std::max(furnace_spread_share[f], spread.mean_square / spread.limit);
       if (render.not_finite || !test.passed || !spread.passed) {

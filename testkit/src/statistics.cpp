@@ -405,14 +405,18 @@ MeanTestResult decide(MeanTestResult result, double difference, double dof) {
 
 }  // namespace
 
-MeanTestResult mean_test(const RunningMoments& moments, double expected_mean, double significance_level, double slack) {
+MeanTestResult mean_test(const RunningMoments& moments, double expected_mean, double significance_level, double slack,
+                         double max_variance) {
   check_level(significance_level);
   if (!(slack >= 0.0)) throw std::invalid_argument("mean_test: slack must be >= 0");
+  if (!(max_variance >= 0.0)) throw std::invalid_argument("mean_test: max_variance must be >= 0");
   MeanTestResult result;
   result.count = moments.count();
   result.mean = moments.mean();
   result.expected_mean = expected_mean;
-  result.standard_error = moments.standard_error();
+  result.standard_error = moments.variance() > max_variance
+                              ? std::sqrt(max_variance / static_cast<double>(std::max<std::size_t>(moments.count(), 1)))
+                              : moments.standard_error();
   result.significance_level = significance_level;
   if (result.count < 2) {
     result.reason = "a mean test needs at least 2 values";
@@ -425,10 +429,10 @@ MeanTestResult mean_test(const RunningMoments& moments, double expected_mean, do
 }
 
 MeanTestResult mean_test(const std::vector<double>& values, double expected_mean, double significance_level,
-                         double slack) {
+                         double slack, double max_variance) {
   RunningMoments moments;
   for (const double value : values) moments.add(value);
-  return mean_test(moments, expected_mean, significance_level, slack);
+  return mean_test(moments, expected_mean, significance_level, slack, max_variance);
 }
 
 MeanTestResult two_sample_mean_test(const RunningMoments& first, const RunningMoments& second,

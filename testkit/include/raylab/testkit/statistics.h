@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <functional>
 #include <string>
 #include <vector>
@@ -182,6 +183,9 @@ struct MeanTestResult {
 // `slack` >= 0 forgives a deviation of that size (a known bias such as float rounding, far
 // below the noise you test for): the statistic is (|mean - expected| - slack)+ / standard error.
 // Zero spread (every value the same) passes only if |mean - expected| <= slack.
+// `max_variance`: the largest variance one value can have when the source is right (an a-priori
+// bound): the sample's variance counts no further, so values made noisier than a right source
+// can be, to widen the test, do not (a bias hidden in added noise still fails).
 //
 // False-failure rate: `significance_level` for values from a normal distribution at any count;
 // for other distributions the central limit theorem makes it so as the count grows (skewed
@@ -189,9 +193,9 @@ struct MeanTestResult {
 // suite measures an exponential's rate at n = 1000 within 20% of the level).
 constexpr std::size_t kNormalFromCount = 10000;
 MeanTestResult mean_test(const RunningMoments& moments, double expected_mean, double significance_level,
-                         double slack = 0.0);
+                         double slack = 0.0, double max_variance = std::numeric_limits<double>::infinity());
 MeanTestResult mean_test(const std::vector<double>& values, double expected_mean, double significance_level,
-                         double slack = 0.0);
+                         double slack = 0.0, double max_variance = std::numeric_limits<double>::infinity());
 
 // Do two independent samples have the same population mean? Welch's two-sided t-test (no
 // assumption of equal variances; Welch-Satterthwaite degrees of freedom), normal beyond
