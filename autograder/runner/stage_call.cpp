@@ -14,6 +14,14 @@ std::map<std::string, Handler>& handlers() {
   return registered;
 }
 
+// The handler of call_remote_each: the named call's handler once per set of arguments.
+void serve_each(protocol::Reader& in, protocol::Writer& out) {
+  const Handler handler = find_handler(in.get_string());
+  if (!handler || handler == &serve_each) throw protocol::ProtocolError(MessageId::protocol_unknown_request);
+  const auto count = in.get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < count; ++i) handler(in, out);
+}
+
 }  // namespace
 
 bool serve(const StageCall& call, Handler handler) {
@@ -38,5 +46,9 @@ std::string ask_judge(const protocol::Writer& question) {
     throw protocol::ProtocolError(MessageId::protocol_expected_answer);
   return answer.substr(1);
 }
+
+namespace {
+const bool kEachServed = serve(kEachCall, serve_each);
+}  // namespace
 
 }  // namespace raylab::grading

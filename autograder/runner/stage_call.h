@@ -145,6 +145,34 @@ typename Signature<Function>::ResultType call_remote(const StageCall& call, cons
                 result_bytes > 0 ? reply_limit(1 + result_bytes) : 0);
 }
 
+// The request that carries many calls of one stage function (call_remote_each): the call's name,
+// their count, then each call's arguments. The stage server runs the named call's handler once
+// per set of arguments, and the reply holds the results one after the other.
+inline constexpr StageCall kEachCall{"each", "each"};
+
+// Many calls of a stage function of plain values in one request, for a test of thousands of
+// inputs (a round trip costs more than such a call): the results in the order of `calls`, each
+// as call_remote<Function>(call, ...) returns it. A stage exception in any of them is thrown as
+// call_remote throws it, and a lost server's message names `call`, as for one call.
+template <class Function>
+std::vector<typename Signature<Function>::ResultType> call_remote_each(
+    const StageCall& call, const std::vector<typename Signature<Function>::Arguments>& calls) {
+  using Result = typename Signature<Function>::ResultType;
+  constexpr std::uint64_t result_bytes = fixed_result_bytes<Result>();
+  static_assert(result_bytes > 0, "call_remote_each: a function whose result has a fixed size");
+  protocol::Writer out;
+  out.put_string(call.name);
+  out.put<std::uint64_t>(calls.size());
+  for (const auto& values : calls) std::apply([&](const auto&... value) { (put_value(out, value), ...); }, values);
+  const StageCall each{kEachCall.name, call.description, call.during};
+  return remote(each, out, [&](protocol::Reader& in) {
+    std::vector<Result> results;
+    results.reserve(calls.size());
+    for (std::size_t i = 0; i < calls.size(); ++i) results.push_back(get_value<Result>(in));
+    return results;
+  }, {}, reply_limit(calls.size() * result_bytes));
+}
+
 // A list that the stage server keeps between calls, sent only when the current server does not
 // hold an equal one (stage 05's tree and mesh go once, not with each of thousands of rays). The
 // server reads it with receive().
@@ -198,6 +226,16 @@ void call_local(protocol::Reader& in, protocol::Writer& out) {
   using Arguments = typename Signature<std::remove_pointer_t<decltype(function)>>::Arguments;
   const Arguments arguments = get_values(in, static_cast<Arguments*>(nullptr));
   put_value(out, std::apply(function, arguments));
+}
+
+// call_remote_each's counterpart where the stage code is linked (the regenerate tool runs the
+// suites' calls in place): function on each set of arguments, in order.
+template <auto function, class Arguments>
+auto call_local_each(const std::vector<Arguments>& calls) {
+  std::vector<decltype(std::apply(function, calls.front()))> results;
+  results.reserve(calls.size());
+  for (const Arguments& arguments : calls) results.push_back(std::apply(function, arguments));
+  return results;
 }
 
 // During a call, in the stage server: sends the judge a question (answered by the on_callback

@@ -31,6 +31,11 @@ std::optional<TriangleHit> intersect_ray_triangle_watertight(const Ray& ray, con
 
 namespace grading {
 
+std::vector<std::optional<TriangleHit>> intersect_ray_triangle_watertight_each(
+    const std::vector<TriangleTestArguments>& calls) {
+  return call_remote_each<decltype(intersect_ray_triangle_watertight)>(kIntersectRayTriangleWatertight, calls);
+}
+
 std::vector<std::vector<std::uint32_t>> triangles_hit(TriangleFunction function, const std::vector<Triangle>& triangles,
                                                       const std::vector<Ray>& rays,
                                                       const std::vector<std::vector<std::uint32_t>>& candidates) {
@@ -66,6 +71,11 @@ std::vector<std::vector<std::uint32_t>> triangles_hit(TriangleFunction function,
 
 #else
 namespace grading {
+
+std::vector<std::optional<TriangleHit>> intersect_ray_triangle_watertight_each(
+    const std::vector<TriangleTestArguments>& calls) {
+  return call_local_each<&intersect_ray_triangle_watertight>(calls);
+}
 
 std::vector<std::vector<std::uint32_t>> triangles_hit(TriangleFunction function, const std::vector<Triangle>& triangles,
                                                       const std::vector<Ray>& rays,

@@ -12,6 +12,7 @@
 //     (Moller-Trumbore) leak count is shown as a note, for comparison (0 points);
 //   - intersect_ray_box (stage 04) on rays aimed exactly at box edges, against the exact answer:
 //     without Ize's conservative exit factor, rounding loses boxes the ray touches.
+#include "04_box_calls.h"
 #include "06_robustness_calls.h"
 #include "grading.h"
 #include "support.h"
@@ -255,10 +256,8 @@ GRADED_TEST(kStage, Stage06Robustness, DegenerateAndParallelInputsGiveNoNaN, 2) 
 GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
   constexpr int kRays = 20000;
   Pcg32 random(606, testkit::stream_of("acne rays"));
-  int acne = 0, tested = 0;
-  Ray first;
-  glm::vec3 first_corners[3];
-  float first_t = 0.0f;
+  // Each ray leaving its triangle, with the triangle: tested in the stage server in one request.
+  std::vector<TriangleTestArguments> leaving;
   for (int r = 0; r < kRays; ++r) {
     // A large floor or wall: an axis-aligned triangle (extent `scale` in two axes) whose plane
     // is close to the world origin along the third (a floor at y = -0.004 in bunny.json).
@@ -292,23 +291,22 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
     // Leaving the surface at 3 degrees or more, to either side.
     const float cosine = glm::dot(glm::normalize(direction), start.geometric_normal);
     if (!(std::fabs(cosine) > 0.05f) || glm::length(direction) < 0.1f) continue;
-    const Ray ray = spawn_ray(start, direction);
-    ++tested;
-    const std::optional<TriangleHit> hit = intersect_ray_triangle_watertight(ray, p0, p1, p2);
-    if (!hit) continue;
-    if (++acne == 1) {
-      first = ray;
-      first_corners[0] = p0, first_corners[1] = p1, first_corners[2] = p2;
-      first_t = hit->t_hit;
-    }
+    leaving.emplace_back(spawn_ray(start, direction), p0, p1, p2);
   }
+  const std::vector<std::optional<TriangleHit>> hits = intersect_ray_triangle_watertight_each(leaving);
+  const int tested = static_cast<int>(leaving.size());
+  int acne = 0;
+  std::size_t first = 0;
+  for (std::size_t r = 0; r < hits.size(); ++r)
+    if (hits[r] && ++acne == 1) first = r;
   add_note({MessageId::note_shadow_acne, {{"acne", std::to_string(acne)}, {"rays", std::to_string(tested)}}});
   if (acne > 0) {
+    const auto& [ray, p0, p1, p2] = leaving[first];
     add_hint(MessageId::robust_shadow_acne);
     add_failure({MessageId::robust_failure_acne,
-                 {{"acne", gtest_text(acne)}, {"rays", gtest_text(tested)}, {"ray", ray_text(first)},
-                  {"p0", gtest_text(first_corners[0])}, {"p1", gtest_text(first_corners[1])},
-                  {"p2", gtest_text(first_corners[2])}, {"t", gtest_text(first_t)}}});
+                 {{"acne", gtest_text(acne)}, {"rays", gtest_text(tested)}, {"ray", ray_text(ray)},
+                  {"p0", gtest_text(p0)}, {"p1", gtest_text(p1)}, {"p2", gtest_text(p2)},
+                  {"t", gtest_text(hits[first]->t_hit)}}});
   }
 }
 
@@ -318,9 +316,8 @@ GRADED_TEST(kStage, Stage06Robustness, NoHitOnTheSurfaceTheRayStartsOn, 3) {
 GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
   constexpr int kRays = 100000;
   Pcg32 random(404, testkit::stream_of("box edge rays"));
-  int touching = 0, lost = 0;
-  Ray first;
-  Bounds3 first_box;
+  // Each ray that touches its box, with the box: tested in the stage server in one request.
+  std::vector<BoxTestArguments> touching;
   for (int r = 0; r < kRays; ++r) {
     Bounds3 box;
     box.extend(testkit::random_vec3(random, -10, 10));
@@ -348,19 +345,20 @@ GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
       t_exit = std::min(t_exit, t_far);
     }
     if (!(t_exit >= t_enter - 1e-12L * std::max(1.0L, std::fabs(t_enter)))) continue;  // a true miss: not graded here
-    ++touching;
-    if (intersect_ray_box(ray, ray_direction_inverse_of(ray), box)) continue;
-    if (++lost == 1) {
-      first = ray;
-      first_box = box;
-    }
+    touching.emplace_back(ray, ray_direction_inverse_of(ray), box);
   }
-  add_note({MessageId::note_box_edge, {{"lost", std::to_string(lost)}, {"boxes", std::to_string(touching)}}});
+  const std::vector<std::optional<float>> hits = intersect_ray_box_each(touching);
+  int lost = 0;
+  std::size_t first = 0;
+  for (std::size_t r = 0; r < hits.size(); ++r)
+    if (!hits[r] && ++lost == 1) first = r;
+  const int boxes = static_cast<int>(touching.size());
+  add_note({MessageId::note_box_edge, {{"lost", std::to_string(lost)}, {"boxes", std::to_string(boxes)}}});
   if (lost > 0) {
     add_hint(MessageId::robust_box_edge);
     add_failure({MessageId::robust_failure_box_edge,
-                 {{"lost", gtest_text(lost)}, {"rays", gtest_text(touching)}, {"ray", ray_text(first)},
-                  {"box", box_text(first_box)}}});
+                 {{"lost", gtest_text(lost)}, {"rays", gtest_text(boxes)}, {"ray", ray_text(std::get<0>(touching[first]))},
+                  {"box", box_text(std::get<2>(touching[first]))}}});
   }
 }
 

@@ -1,5 +1,6 @@
 #include "bvh_support.h"
 
+#include "04_box_calls.h"
 #include "grader_geometry.h"
 #include "grading.h"
 
@@ -248,31 +249,51 @@ class WorkProbe {
   std::uint32_t last_leaf_ = kNone;
 };
 
-// The grader's traversal: the reference's algorithm with YOUR box test (stage 04), so that
-// a box test that prunes too little (or too much) changes both works alike, and the work
-// test judges the traversal alone.
-void grader_traversal(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector, BvhTraversalStats& stats) {
-  const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
-  Ray search = ray;
-  std::vector<std::uint32_t> stack{0};
-  while (!stack.empty()) {
-    const BvhNode& node = bvh.nodes[stack.back()];
-    stack.pop_back();
+// One ray's traversal as the grader runs it: the reference's algorithm with YOUR box test
+// (stage 04), so that a box test that prunes too little (or too much) changes both works alike,
+// and the work test judges the traversal alone. It goes a box test at a time, so that the box
+// tests of many rays can go to the stage server in one request (reference_traversal_work).
+class GraderTraversal {
+ public:
+  GraderTraversal(const Bvh& bvh, const Ray& ray)
+      : bvh_(&bvh), search_(ray), ray_direction_inverse_(ray_direction_inverse_of(ray)) {}
+
+  // The node whose box is tested next (counted as visited), or nullopt when the traversal is done.
+  std::optional<std::uint32_t> next(BvhTraversalStats& stats) {
+    if (stack_.empty()) return std::nullopt;
+    const std::uint32_t node = stack_.back();
+    stack_.pop_back();
     ++stats.nodes_visited;
-    if (!intersect_ray_box(search, ray_direction_inverse, node.bounds)) continue;
-    if (node.is_leaf()) {
-      for (std::uint32_t i = node.first_index; i < node.first_index + node.primitive_count; ++i) {
-        ++stats.primitives_tested;
-        if (const std::optional<float> t = intersector.test(intersector.context, search, bvh.primitive_order[i]))
-          search.t_max = *t;
-      }
-      continue;
-    }
-    const bool second_is_near = std::signbit(ray.direction[node.split_axis % 3]);
-    stack.push_back(node.first_index + (second_is_near ? 0u : 1u));  // the far child, later
-    stack.push_back(node.first_index + (second_is_near ? 1u : 0u));  // the near child, next
+    return node;
   }
-}
+  // The arguments of the box test of `node`: the ray with t_max lowered to the closest hit so far.
+  BoxTestArguments box_test(std::uint32_t node) const {
+    return {search_, ray_direction_inverse_, bvh_->nodes[node].bounds};
+  }
+  // The box test of `node` answered: if its box is hit, a leaf's primitives are tested, an inner
+  // node's children are visited, the nearer one first.
+  void enter(std::uint32_t node, bool box_hit, const PrimitiveIntersector& intersector, BvhTraversalStats& stats) {
+    if (!box_hit) return;
+    const BvhNode& entered = bvh_->nodes[node];
+    if (entered.is_leaf()) {
+      for (std::uint32_t i = entered.first_index; i < entered.first_index + entered.primitive_count; ++i) {
+        ++stats.primitives_tested;
+        if (const std::optional<float> t = intersector.test(intersector.context, search_, bvh_->primitive_order[i]))
+          search_.t_max = *t;
+      }
+      return;
+    }
+    const bool second_is_near = std::signbit(search_.direction[entered.split_axis % 3]);
+    stack_.push_back(entered.first_index + (second_is_near ? 0u : 1u));  // the far child, later
+    stack_.push_back(entered.first_index + (second_is_near ? 1u : 0u));  // the near child, next
+  }
+
+ private:
+  const Bvh* bvh_;
+  Ray search_;
+  glm::vec3 ray_direction_inverse_;
+  std::vector<std::uint32_t> stack_{0};
+};
 
 void build_grader_node(Bvh& bvh, const std::vector<Bounds3>& bounds, std::uint32_t node_index, std::uint32_t begin,
                        std::uint32_t end, std::uint32_t max_leaf_size) {
@@ -347,11 +368,45 @@ TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const
 }
 
 TraversalWork reference_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays) {
+  // 1. Every ray's traversal at once, a step each per round, the box tests of a round in one
+  //    request (a round trip per box test cost more than all the rest of the stage). The answers
+  //    are kept, each ray's in order.
+  const PrimitiveIntersector grader_test = intersector_for(mesh);
+  std::vector<GraderTraversal> traversals;
+  traversals.reserve(rays.size());
+  for (const Ray& ray : rays) traversals.emplace_back(bvh, ray);
+  std::vector<std::vector<bool>> box_hits(rays.size());
+  std::vector<std::size_t> asking;
+  std::vector<std::uint32_t> nodes;
+  std::vector<BoxTestArguments> box_tests;
+  BvhTraversalStats uncounted;
+  for (;;) {
+    asking.clear();
+    nodes.clear();
+    box_tests.clear();
+    for (std::size_t r = 0; r < traversals.size(); ++r)
+      if (const std::optional<std::uint32_t> node = traversals[r].next(uncounted)) {
+        asking.push_back(r);
+        nodes.push_back(*node);
+        box_tests.push_back(traversals[r].box_test(*node));
+      }
+    if (asking.empty()) break;
+    const std::vector<std::optional<float>> answers = intersect_ray_box_each(box_tests);
+    for (std::size_t k = 0; k < asking.size(); ++k) {
+      box_hits[asking[k]].push_back(answers[k].has_value());
+      traversals[asking[k]].enter(nodes[k], answers[k].has_value(), grader_test, uncounted);
+    }
+  }
+  // 2. Each ray again, alone, with the probe counting its work: the same steps (the probe's
+  //    triangle test is the grader's), each box test answered as in 1.
   WorkProbe probe(bvh, mesh);
-  for (const Ray& ray : rays) {
-    probe.start_ray(ray);
+  for (std::size_t r = 0; r < rays.size(); ++r) {
+    probe.start_ray(rays[r]);
     BvhTraversalStats stats;
-    grader_traversal(bvh, ray, probe.intersector(), stats);
+    GraderTraversal traversal(bvh, rays[r]);
+    std::size_t step = 0;
+    while (const std::optional<std::uint32_t> node = traversal.next(stats))
+      traversal.enter(*node, box_hits[r].at(step++), probe.intersector(), stats);
     probe.end_ray(stats);
   }
   return probe.work;

@@ -69,7 +69,7 @@ Bvh grader_median_tree(const std::vector<Bounds3>& primitive_bounds, int max_lea
 // The student's intersect_bvh on `rays` (closest hit).
 TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays);
 // The grader's own traversal (the reference's algorithm: near child first, boxes tested with
-// t_max lowered to the closest hit so far, double-precision box test) on the same tree and rays.
+// t_max lowered to the closest hit so far) with YOUR box test (stage 04) on the same tree and rays.
 TraversalWork reference_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays);
 
 // Index arithmetic on a student's tree without wrap-around: whether nodes[first_index] and

@@ -3,7 +3,8 @@
 # index.html in headless Chromium (Debian's package) with no network (a network namespace of its
 # own), dumps the page's DOM after loading and takes a screenshot of the whole page, and has
 # CHECKER (check_report.cpp) check both against results.json.
-# Usage: [REMOVE_PICTURE=FILE] check_report.sh GRADER CHECKER WORK LANG [CHECKER_OPTIONS...]
+# Usage: [REMOVE_PICTURE=FILE] [STAGE_SERVER=PATH] check_report.sh GRADER CHECKER WORK LANG [CHECKER_OPTIONS...]
+# (STAGE_SERVER: the stage server GRADER grades, --stage-server; by default its own)
 set -euo pipefail
 grader=$1 checker=$2 work=$(realpath -m "$3") lang=$4
 shift 4
@@ -24,7 +25,7 @@ else
 fi
 rm -rf "$work"
 mkdir -p "$work"
-env -u LC_ALL -u LC_MESSAGES -u LANG -u LANGUAGE "$grader" --lang "$lang" --output "$work/grading-output" \
+env -u LC_ALL -u LC_MESSAGES -u LANG -u LANGUAGE "$grader" ${STAGE_SERVER:+--stage-server "$STAGE_SERVER"} --lang "$lang" --output "$work/grading-output" \
   --json "$work/results.json" --timeout 60 > "$work/grader.log" 2>&1 ||
   { cat "$work/grader.log"; echo "FAIL: the grader failed"; exit 1; }
 

@@ -1,10 +1,11 @@
 # Runs one grader and checks its results.json (see CMakeLists.txt here for the modes).
 cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
-# Variables: GRADER, MODE (full | zero | broken | contained | lost), EXPECT_STAGE, EXPECT_HINT (regexes joined by "&&", each of
+# Variables: GRADER (the judge), SERVER (the stage server it grades: --stage-server; none for a
+# judge's own), MODE (full | zero | broken | contained | lost), EXPECT_STAGE, EXPECT_HINT (regexes joined by "&&", each of
 # which must match), ALSO_AFFECTED
 # (optional regex of later tests that may lose points too), TIMEOUT, WORK, REFERENCE (the
 # reference data folder, which no grading may change), and for the hostile submissions:
-#   HONEST         a grader of the same code without the attack: every test must score the same
+#   HONEST         the stage server of the same code without the attack: every test must score the same
 #   EXPECT_SCORES  "stage=points;..." exact stage scores
 #   LINGER         seconds to wait after the grader exits: results.json must not change meanwhile
 # Every run also checks: a results.json (and an index.html) planted before grading does not survive, the score table
@@ -45,7 +46,13 @@ function(count_shared_memory_segments out)
   set(${out} ${count} PARENT_SCOPE)
 endfunction()
 count_shared_memory_segments(segments_before)
-execute_process(COMMAND "${GRADER}" --json "${WORK}/results.json" --output "${WORK}/images" --timeout ${TIMEOUT} --lang en
+set(server_option "")
+set(server "${GRADER}-stage-server")
+if(SERVER)
+  set(server_option --stage-server "${SERVER}")
+  set(server "${SERVER}")
+endif()
+execute_process(COMMAND "${GRADER}" ${server_option} --json "${WORK}/results.json" --output "${WORK}/images" --timeout ${TIMEOUT} --lang en
                 RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE errors)
 message("${output}")
 if(NOT status EQUAL 0)
@@ -65,7 +72,8 @@ find_program(PGREP pgrep)
 if(NOT PGREP)
   message(FATAL_ERROR "pgrep (Debian package procps, in tools/install-deps) is needed to check for left-over processes")
 endif()
-execute_process(COMMAND ${PGREP} -f "${GRADER}-stage-server" RESULT_VARIABLE pgrep_status OUTPUT_VARIABLE left_over)
+# (Anchored: this script's own command line names the server too, after -DSERVER=.)
+execute_process(COMMAND ${PGREP} -f "^${server}" RESULT_VARIABLE pgrep_status OUTPUT_VARIABLE left_over)
 if(pgrep_status EQUAL 0)
   list(APPEND problems "stage processes outlived the grader: ${left_over}")
 endif()
@@ -234,7 +242,7 @@ endif()
 if(HONEST)
   file(REMOVE_RECURSE "${WORK}/honest")
   file(MAKE_DIRECTORY "${WORK}/honest")
-  execute_process(COMMAND "${HONEST}" --json "${WORK}/honest/results.json" --output "${WORK}/honest/images" --timeout ${TIMEOUT}
+  execute_process(COMMAND "${GRADER}" --stage-server "${HONEST}" --json "${WORK}/honest/results.json" --output "${WORK}/honest/images" --timeout ${TIMEOUT}
                   RESULT_VARIABLE honest_status OUTPUT_QUIET ERROR_QUIET)
   file(READ "${WORK}/honest/results.json" honest_results)
   string(JSON honest_count LENGTH "${honest_results}" tests)
