@@ -1,9 +1,11 @@
 // Stages 05 and 05b's calls between the judge and the stage server (autograder/runner/stage_call.h):
 // the two builders, whose trees come back whole (the suites check every node), and
-// intersect_bvh. A traversal's primitive tests are either the grader's own triangle test, run in
+// intersect_bvh (one ray, or many with the grader's triangle test: intersect_bvh_each,
+// 05_bvh_calls.h). A traversal's primitive tests are either the grader's own triangle test, run in
 // the server on a copy of the mesh (a round trip per primitive would make a traversal that tests
 // every triangle take minutes), or any other intersector, called back in the judge per primitive.
 // The tree and the mesh go to the server only when they differ from what it holds.
+#include "05_bvh_calls.h"
 #include "grader_geometry.h"
 #include "stage_call.h"
 
@@ -19,6 +21,7 @@ using grading::protocol::Writer;
 constexpr grading::StageCall kBuildBvh{"build_bvh", "build_bvh"};
 constexpr grading::StageCall kBuildBvhSah{"build_bvh_sah", "build_bvh_sah"};
 constexpr grading::StageCall kIntersectBvh{"intersect_bvh", "intersect_bvh"};
+constexpr grading::StageCall kIntersectBvhEach{"intersect_bvh_each", "intersect_bvh"};
 
 }  // namespace
 
@@ -42,6 +45,11 @@ struct TraversalReply {
   std::uint64_t nodes_visited = 0, primitives_tested = 0;
 };
 
+// What the current stage server holds, for intersect_bvh and intersect_bvh_each alike.
+grading::SentList<BvhNode, BvhNodeAllocator<BvhNode>> sent_nodes;
+grading::SentList<std::uint32_t> sent_order;
+grading::SentList<Triangle> sent_triangles;
+
 }  // namespace
 
 Bvh build_bvh(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size) {
@@ -54,9 +62,6 @@ Bvh build_bvh_sah(const std::vector<Bounds3>& primitive_bounds, int max_leaf_siz
 
 std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
                                     bool any_hit, BvhTraversalStats& stats) {
-  static grading::SentList<BvhNode, BvhNodeAllocator<BvhNode>> sent_nodes;
-  static grading::SentList<std::uint32_t> sent_order;
-  static grading::SentList<Triangle> sent_triangles;
   Writer arguments;
   sent_nodes.put(arguments, bvh.nodes);
   sent_order.put(arguments, bvh.primitive_order);
@@ -92,6 +97,29 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const Primit
   return reply.hit;
 }
 
+std::vector<std::optional<BvhHit>> grading::intersect_bvh_each(const Bvh& bvh, const std::vector<Triangle>& triangles,
+                                                               const std::vector<Ray>& rays, bool any_hit) {
+  Writer arguments;
+  sent_nodes.put(arguments, bvh.nodes);
+  sent_order.put(arguments, bvh.primitive_order);
+  sent_triangles.put(arguments, triangles);
+  arguments.put_vector(rays);
+  arguments.put<std::uint8_t>(any_hit);
+  std::vector<std::optional<BvhHit>> hits = remote(
+      kIntersectBvhEach, arguments,
+      [&](Reader& in) {
+        std::vector<std::optional<BvhHit>> read;
+        read.reserve(rays.size());
+        for (std::size_t r = 0; r < rays.size(); ++r) read.push_back(in.get_optional<BvhHit>());
+        return read;
+      },
+      {}, reply_limit(rays.size() * (1 + sizeof(BvhHit))));
+  sent_nodes.returned(bvh.nodes);
+  sent_order.returned(bvh.primitive_order);
+  sent_triangles.returned(triangles);
+  return hits;
+}
+
 #else
 namespace {
 
@@ -114,9 +142,11 @@ std::optional<float> test_through_judge(void*, const Ray& ray, std::uint32_t pri
   return in.get_optional<float>();
 }
 
+// What the judge sent for earlier calls of intersect_bvh and intersect_bvh_each.
+Bvh bvh;
+std::vector<Triangle> triangles;
+
 void serve_intersect_bvh(Reader& in, Writer& out) {
-  static Bvh bvh;                          // what the judge sent for earlier calls
-  static std::vector<Triangle> triangles;
   grading::receive(in, bvh.nodes);
   grading::receive(in, bvh.primitive_order);
   const bool grader_test = in.get<std::uint8_t>() != 0;
@@ -132,11 +162,33 @@ void serve_intersect_bvh(Reader& in, Writer& out) {
   out.put<std::uint64_t>(counting.tests);
 }
 
+void serve_intersect_bvh_each(Reader& in, Writer& out) {
+  grading::receive(in, bvh.nodes);
+  grading::receive(in, bvh.primitive_order);
+  grading::receive(in, triangles);
+  const auto rays = in.get_vector<Ray>();
+  const bool any_hit = in.get<std::uint8_t>() != 0;
+  for (const std::optional<BvhHit>& hit : grading::intersect_bvh_each(bvh, triangles, rays, any_hit)) out.put_optional(hit);
+}
+
 const bool kServed = grading::serve(kBuildBvh, serve_build<&build_bvh>) &&
                      grading::serve(kBuildBvhSah, serve_build<&build_bvh_sah>) &&
-                     grading::serve(kIntersectBvh, serve_intersect_bvh);
+                     grading::serve(kIntersectBvh, serve_intersect_bvh) &&
+                     grading::serve(kIntersectBvhEach, serve_intersect_bvh_each);
 
 }  // namespace
+
+std::vector<std::optional<BvhHit>> grading::intersect_bvh_each(const Bvh& tree, const std::vector<Triangle>& mesh,
+                                                               const std::vector<Ray>& rays, bool any_hit) {
+  const PrimitiveIntersector grader_test{grading::grader_triangle_test, const_cast<std::vector<Triangle>*>(&mesh)};
+  std::vector<std::optional<BvhHit>> hits;
+  hits.reserve(rays.size());
+  for (const Ray& ray : rays) {
+    BvhTraversalStats stats;
+    hits.push_back(intersect_bvh(tree, ray, grader_test, any_hit, stats));
+  }
+  return hits;
+}
 #endif
 
 }  // namespace raylab

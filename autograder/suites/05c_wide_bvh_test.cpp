@@ -414,12 +414,13 @@ void expect_brute_force_answers(bool any_hit, bool axis_aligned, const Message& 
   for (const TestMesh& mesh : bvh_test_meshes()) {
     if (differences > 0) break;
     const Bvh4 wide = grader_collapse(grader_median_tree(mesh.bounds, kLeafSize));
-    differences += compare_traversal_with_brute_force(
-        [&](const Ray& ray) {
-          BvhTraversalStats stats;
-          return student_hit(wide, mesh, ray, any_hit, stats);
-        },
-        nullptr, mesh, rays_at(mesh, 300, seed++, axis_aligned), any_hit, what);
+    const std::vector<Ray> rays = rays_at(mesh, 300, seed++, axis_aligned);
+    std::vector<std::optional<BvhHit>> answers;
+    for (const Ray& ray : rays) {
+      BvhTraversalStats stats;
+      answers.push_back(student_hit(wide, mesh, ray, any_hit, stats));
+    }
+    differences += compare_traversal_with_brute_force(answers, nullptr, mesh, rays, any_hit, what);
   }
 }
 

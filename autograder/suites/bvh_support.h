@@ -82,10 +82,10 @@ inline bool children_in_range(const Bvh& bvh, const BvhNode& node) {
 // Returns the number of rays that differ.
 int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
                              const Message& what);
-// The same for any traversal (ray -> its answer). `boxes_on_the_way`, if given, is the binary
+// The same for any traversal's answers, one per ray. `boxes_on_the_way`, if given, is the binary
 // tree whose box tests (your stage 04) are checked when a hit is lost, to tell whose code lost it.
-int compare_traversal_with_brute_force(const std::function<std::optional<BvhHit>(const Ray&)>& traversal,
-                                       const Bvh* boxes_on_the_way, const TestMesh& mesh, const std::vector<Ray>& rays,
-                                       bool any_hit, const Message& what);
+int compare_traversal_with_brute_force(const std::vector<std::optional<BvhHit>>& answers, const Bvh* boxes_on_the_way,
+                                       const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
+                                       const Message& what);
 
 }  // namespace raylab::grading
