@@ -221,7 +221,7 @@ class Recorder : public ::testing::EmptyTestEventListener {
 
  private:
   // A text cut at 1500 characters: a failure stays readable whatever the stage code threw.
-  static std::string cut(const std::string& text) { return protocol::cut_text(text, 1500); }
+  static std::string cut(const std::string& text) { return protocol::cut_text(text, 1500, " [...]"); }
   static std::string full_name(const ::testing::TestInfo& info) {
     return std::string(info.test_suite_name()) + "." + info.name();
   }

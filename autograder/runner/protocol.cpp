@@ -108,12 +108,12 @@ std::string framed(const std::string& payload) {
   return frame;
 }
 
-std::string cut_text(std::string text, std::size_t max_bytes) {
+std::string cut_text(std::string text, std::size_t max_bytes, const char* marker) {
   if (text.size() <= max_bytes) return text;
   std::size_t end = max_bytes;
   while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;  // not inside a character
   text.resize(end);
-  return text + "...";
+  return text + marker;
 }
 
 void put_lists(Writer& out, const std::vector<std::vector<std::uint32_t>>& lists) {

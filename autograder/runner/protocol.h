@@ -155,8 +155,8 @@ bool write_frame(int fd, const std::string& payload, const std::function<bool()>
 // A payload as a frame: its 4-byte little-endian length, then itself.
 std::string framed(const std::string& payload);
 
-// A text cut to at most max_bytes, at a UTF-8 character's start, with "..." after a cut.
-std::string cut_text(std::string text, std::size_t max_bytes);
+// A text cut to at most max_bytes, at a UTF-8 character's start, with `marker` after a cut.
+std::string cut_text(std::string text, std::size_t max_bytes, const char* marker = "...");
 
 using Triangle = std::array<glm::vec3, 3>;
 
