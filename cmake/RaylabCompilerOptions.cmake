@@ -17,9 +17,10 @@ target_compile_options(raylab_options INTERFACE $<$<CXX_COMPILER_ID:GNU,Clang,Ap
 # every stage of the reference either way), and these files, full of GoogleTest and JSON
 # templates, build in about 3/4 of the time of -O3. The renderer, the stages and the benchmarks
 # keep -O3.
+# (RAYLAB_CHECKING_CODE_OPTIONS: the same for single files of other targets, framework/CMakeLists.txt.)
+set(RAYLAB_CHECKING_CODE_OPTIONS "$<$<AND:$<CONFIG:Release>,$<CXX_COMPILER_ID:GNU,Clang,AppleClang>>:-O1>")
 add_library(raylab_checking_code INTERFACE)
-target_compile_options(raylab_checking_code INTERFACE
-  $<$<AND:$<CONFIG:Release>,$<CXX_COMPILER_ID:GNU,Clang,AppleClang>>:-O1>)
+target_compile_options(raylab_checking_code INTERFACE ${RAYLAB_CHECKING_CODE_OPTIONS})
 
 if(RAYLAB_WERROR)
   target_compile_options(raylab_options INTERFACE

@@ -426,7 +426,7 @@ int compare_traversal_with_brute_force(const std::vector<std::optional<BvhHit>>&
   for (std::size_t r = 0; r < rays.size(); ++r) {
     const Ray& ray = rays[r];
     const std::optional<BvhHit> expected = brute_force_closest(mesh, ray);
-    const std::optional<BvhHit> got = answers.at(r);
+    const std::optional<BvhHit>& got = answers.at(r);
     bool ok = got.has_value() == expected.has_value();
     if (ok && got && !any_hit) ok = got->t_hit == expected->t_hit;  // same primitive test: exactly equal
     if (ok && got && any_hit) ok = got->primitive < mesh.triangles.size() && test_triangle(mesh, ray, got->primitive).has_value();

@@ -7,7 +7,6 @@
 #include "raylab/stages/05_bvh.h"
 
 #include <array>
-#include <functional>
 #include <string>
 #include <vector>
 
