@@ -50,7 +50,7 @@ struct RenderOptions {
   std::string output_path;
   int width = 0, height = 0;  // 0: the scene's
   int max_depth = -1;         // -1: the scene's
-  int threads = 0;            // 0: every core
+  int threads = 0;            // 0: one per core this process may use
   int samples_per_pixel = 1;
   std::string roulette = "1";  // the path tracer's Russian roulette: a probability, or "auto"
   std::uint64_t seed = 0;
@@ -164,7 +164,7 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
       ->check(CLI::Range(1, 16384));
   render_command->add_option("--max-depth", options.max_depth, "Bounces after the camera ray (default: the scene's, 5)")
       ->check(CLI::Range(0, 64));
-  render_command->add_option("--threads", options.threads, "Worker threads (default: every core)")
+  render_command->add_option("--threads", options.threads, "Worker threads (default: one per core this process may use)")
       ->check(CLI::Range(1, 1024));
   render_command->add_option("--spp", options.samples_per_pixel,
                              "Samples per pixel (default 1: one ray through each pixel's centre)")

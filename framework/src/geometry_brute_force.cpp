@@ -4,13 +4,14 @@
 // of how long that will take.
 #include "geometry_query.h"
 
+#include "raylab/cores.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
-#include <thread>
 
 namespace raylab {
 
@@ -49,7 +50,7 @@ std::string SceneGeometry::brute_force_estimate(const Ray& sample) const {
   const double pass_seconds = seconds / static_cast<double>(passes);
   const double pixels = static_cast<double>(scene_.camera.width) * scene_.camera.height;
   const double rays = pixels * (1.0 + static_cast<double>(scene_.lights.size()));
-  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = usable_cores();
   const double estimate = rays * pass_seconds / threads;
   if (estimate < 10.0) return "";
   // A size that would take about 5 s: both sides divided by the same factor.

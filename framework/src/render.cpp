@@ -1,5 +1,6 @@
 #include "raylab/render.h"
 
+#include "raylab/cores.h"
 #include "raylab/geometry.h"
 #include "raylab/progress.h"
 #include "raylab/stages/01_camera_rays.h"
@@ -274,7 +275,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                       });
   }
 
-  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned hardware = usable_cores();
   const int thread_count = std::max(1, std::min<int>(settings.threads > 0 ? settings.threads : static_cast<int>(hardware),
                                                       static_cast<int>(tiles.size())));
   std::unique_ptr<std::atomic<std::size_t>[]> next_tile(new std::atomic<std::size_t>[passes.size()]);

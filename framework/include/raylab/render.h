@@ -39,7 +39,7 @@ struct RenderSettings {
   bool track_variance = false;  // also give each pixel's variance of the mean (render_with_variance)
   int max_depth = 5;
   RussianRoulette roulette;  // --roulette: how the path tracer's paths end (default: no roulette)
-  int threads = 0;             // 0: every core
+  int threads = 0;             // 0: one per core this process may use (usable_cores, cores.h)
   // Progress on stderr (progress.h): off unless progress.show (raylab render: unless --quiet).
   ProgressSettings progress;
   // What to leave out (shading.h); the same image either way. Changed only to measure.
