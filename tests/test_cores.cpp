@@ -1,12 +1,15 @@
 // How many threads a render starts by default (cores.h): the cores of the process's affinity,
 // no more than its cgroup's CPU quota (v1 or v2, set on its own folder or one above), rounded up.
-// The cgroup files are faked in a folder of their own.
+// The cgroup files are faked in a folder of their own. And how many threads the address-space
+// limit has room for.
 #include "raylab/cores.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <thread>
 
@@ -89,6 +92,22 @@ TEST_F(Cores, UnreadableFilesAreNoQuota) {
   EXPECT_EQ(cores(4, "0::/job\n4:cpu:/job\nnot a line\n"), 4u);
   write("job/cpu.max", "0 100000\n");
   EXPECT_EQ(cores(4, "0::/job\n"), 4u) << "a zero quota is no quota (the kernel refuses one)";
+}
+
+TEST(ThreadsWithinAddressSpaceLimit, EachNeedsItsStackAndAnArena) {
+  constexpr std::uint64_t MiB = std::uint64_t{1} << 20;
+  EXPECT_EQ(threads_within_address_space_limit(0, 100 * MiB, 8 * MiB), std::numeric_limits<unsigned>::max())
+      << "no limit";
+  EXPECT_EQ(threads_within_address_space_limit(400 * MiB, 100 * MiB, 8 * MiB), 4u) << "300 MiB free / 72 MiB";
+  EXPECT_EQ(threads_within_address_space_limit(400 * MiB, 350 * MiB, 8 * MiB), 0u);
+  EXPECT_EQ(threads_within_address_space_limit(400 * MiB, 500 * MiB, 8 * MiB), 0u) << "over the limit already";
+}
+
+TEST(ThreadsWithinAddressSpaceLimit, ThisProcessWithoutALimitHasNoBound) {
+  rlimit limit{};
+  ASSERT_EQ(getrlimit(RLIMIT_AS, &limit), 0);
+  if (limit.rlim_cur != RLIM_INFINITY) GTEST_SKIP() << "this test runs under an address-space limit";
+  EXPECT_EQ(threads_within_address_space_limit(), std::numeric_limits<unsigned>::max());
 }
 
 TEST(UsableCores, ThisProcessHasAtLeastOneAndNoMoreThanTheMachine) {

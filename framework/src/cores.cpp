@@ -11,6 +11,8 @@
 
 #ifdef __linux__
 #include <sched.h>
+#include <sys/resource.h>
+#include <unistd.h>
 #endif
 
 namespace raylab {
@@ -98,6 +100,31 @@ unsigned usable_cores() {
   return cores;
 #else
   return std::max(1u, std::thread::hardware_concurrency());
+#endif
+}
+
+unsigned threads_within_address_space_limit(std::uint64_t limit, std::uint64_t mapped, std::uint64_t stack) {
+  constexpr std::uint64_t kArena = std::uint64_t{64} << 20;
+  if (limit == 0) return std::numeric_limits<unsigned>::max();
+  if (mapped >= limit) return 0;
+  return static_cast<unsigned>(std::min<std::uint64_t>((limit - mapped) / (stack + kArena), std::numeric_limits<unsigned>::max()));
+}
+
+unsigned threads_within_address_space_limit() {
+#ifdef __linux__
+  rlimit address_space{}, stack{};
+  if (getrlimit(RLIMIT_AS, &address_space) != 0 || address_space.rlim_cur == RLIM_INFINITY)
+    return std::numeric_limits<unsigned>::max();
+  // glibc gives a new thread RLIMIT_STACK's size, or 2 MiB when that is unlimited.
+  std::uint64_t stack_bytes = std::uint64_t{8} << 20;
+  if (getrlimit(RLIMIT_STACK, &stack) == 0)
+    stack_bytes = stack.rlim_cur == RLIM_INFINITY ? std::uint64_t{2} << 20 : static_cast<std::uint64_t>(stack.rlim_cur);
+  std::uint64_t pages = 0;  // the first figure of /proc/self/statm: the mapped size in pages
+  std::istringstream(read_text("/proc/self/statm")) >> pages;
+  return threads_within_address_space_limit(address_space.rlim_cur,
+                                            pages * static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE)), stack_bytes);
+#else
+  return std::numeric_limits<unsigned>::max();
 #endif
 }
 

@@ -17,6 +17,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -275,8 +276,9 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                       });
   }
 
-  const unsigned hardware = usable_cores();
-  const int thread_count = std::max(1, std::min<int>(settings.threads > 0 ? settings.threads : static_cast<int>(hardware),
+  // Not told: one thread per core it may use, as many as the address-space limit has room for.
+  const unsigned automatic = std::min(usable_cores(), threads_within_address_space_limit());
+  const int thread_count = std::max(1, std::min<int>(settings.threads > 0 ? settings.threads : static_cast<int>(std::min(automatic, 4096u)),
                                                       static_cast<int>(tiles.size())));
   std::unique_ptr<std::atomic<std::size_t>[]> next_tile(new std::atomic<std::size_t>[passes.size()]);
   for (std::size_t p = 0; p < passes.size(); ++p) next_tile[p] = 0;
@@ -359,10 +361,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   if (settings.progress.show) progress.emplace(settings.progress);
 
   std::vector<std::thread> threads;
-  try {
-    for (int i = 0; i < thread_count; ++i) threads.emplace_back(worker, i);
-    if (settings.on_workers_started) settings.on_workers_started();
-  } catch (...) {  // no thread to be had (std::system_error): stop the ones started, then say why
+  const auto stop_started_threads = [&] {
     stop = true;
     {
       std::lock_guard<std::mutex> lock(pass_mutex);
@@ -370,6 +369,20 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
     }
     pass_finished.notify_all();
     for (std::thread& thread : threads) thread.join();
+  };
+  try {
+    for (int i = 0; i < thread_count; ++i) threads.emplace_back(worker, i);
+  } catch (const std::system_error& error) {  // no thread to be had: stop the ones started, then say why
+    const std::size_t started = threads.size();
+    stop_started_threads();
+    throw std::runtime_error("could not start render thread " + std::to_string(started + 1) + " of " +
+                             std::to_string(thread_count) + " (" + error.what() +
+                             "): fewer --threads, or a larger memory or process limit");
+  }
+  try {
+    if (settings.on_workers_started) settings.on_workers_started();
+  } catch (...) {
+    stop_started_threads();
     throw;
   }
   if (progress) {
