@@ -290,5 +290,19 @@ TEST(SideBySideDifference, IsActualExpectedAndHeatMapInARow) {
   EXPECT_GT(std::max({changed.x, changed.y, changed.z}), 0.5f) << "heat map at the change: " << changed;
 }
 
+// The heat map shows the largest of the three channels' differences, whichever channel it is in.
+TEST(SideBySideDifference, HeatIsTheLargestChannelsDifference) {
+  const Image expected(3, 1, glm::vec3(0.0f));
+  Image actual = expected;
+  actual.at(0, 0) = glm::vec3(0.25f, 0.0f, 0.0f);
+  actual.at(1, 0) = glm::vec3(0.0f, 0.0f, 0.25f);
+  actual.at(2, 0) = glm::vec3(0.1f, 0.25f, 0.05f);
+  const Image panel = side_by_side_difference(actual, expected, 0.5f);
+  const glm::vec3 red = panel.at(6, 0), blue = panel.at(7, 0), green = panel.at(8, 0);
+  EXPECT_GT(std::max({red.x, red.y, red.z}), 0.05f) << "a difference of half the full scale is not black: " << red;
+  EXPECT_TRUE(testing::vec3_near(red, blue, 1e-5f)) << red << " and " << blue;
+  EXPECT_TRUE(testing::vec3_near(red, green, 1e-5f)) << red << " and " << green;
+}
+
 }  // namespace
 }  // namespace raylab

@@ -2,6 +2,7 @@
 
 #include "gradescope.h"
 #include "grading.h"
+#include "gtest_flags.h"
 #include "report_html.h"
 #include "stage_process.h"
 #include "results.h"

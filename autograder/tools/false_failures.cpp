@@ -7,6 +7,7 @@
 // (stages 08_direct_light, 09_path, 09b_mis and 10_microfacet.)
 // For stage 09, autograder-path-false-failures also shows the tails of its region z-scores.
 #include "grading.h"
+#include "gtest_flags.h"
 #include "support.h"
 
 #include "raylab/testkit/statistics.h"

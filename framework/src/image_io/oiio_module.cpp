@@ -189,7 +189,10 @@ std::string side_by_side_difference(const Image& actual, const Image& expected, 
   return reason_of([&]() -> std::string {
     const oiio::ImageBuf a = to_image_buf(actual), b = to_image_buf(expected);
     oiio::ImageBuf difference = oiio::ImageBufAlgo::absdiff(a, b);
-    difference = oiio::ImageBufAlgo::maxchan(difference);
+    // The largest of the three channels (ImageBufAlgo::maxchan does it from OpenImageIO 2.3.10 on).
+    namespace algo = oiio::ImageBufAlgo;
+    difference = algo::max(algo::max(algo::channels(difference, 1, {0}), algo::channels(difference, 1, {1})),
+                           algo::channels(difference, 1, {2}));
     difference = oiio::ImageBufAlgo::mul(difference, 1.0f / full_scale);
     difference = oiio::ImageBufAlgo::clamp(difference, 0.0f, 1.0f);
     difference = oiio::ImageBufAlgo::color_map(difference, 0, "inferno");
