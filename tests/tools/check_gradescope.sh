@@ -11,19 +11,52 @@
 #   a sphere that #includes the reference solution, or (as root) .incbin's the fresh cases: 0, the
 #   kit has no solutions/ after setup.sh and the build runs as a user that cannot read the cases;
 #   the course's seed appears in no output
+# and the Gradescope fields: Markdown output with a failed picture inlined, execution times, the
+# course's --visibility rules, and the leaderboard. Every run is within Gradescope's limits (768 MB
+# of memory for the whole run, one CPU), where a memory bomb (stage 03) with a fork bomb and a disk
+# filler (stage 10) lose those two stages only (and the pictures rendered with them), with no
+# process of the run killed for memory and no file left behind; each run's time and peak memory
+# are printed at the end.
 # The folder standing for /autograder is made under /tmp (every folder above it searchable), as
 # the service's is: the build's own user id must reach the kit.
-# and the Gradescope fields: Markdown output with a failed picture inlined, execution times, the
-# course's --visibility rules, and the leaderboard.
 # Usage: check_gradescope.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 source_dir=$(realpath "$1"); work=$(realpath -m "$2")
 rm -rf "$work"; mkdir -p "$work"
 root=$(mktemp -d "${TMPDIR:-/tmp}/raylab-gradescope.XXXXXX")
-trap 'rm -rf "$root"' EXIT
+# Gradescope's limits on every run_autograder below (its defaults: 768 MB of memory for the
+# container, half a CPU, 10 minutes): a memory cgroup of 768 MB where this machine lets the test
+# make one (cgroup v1 or v2, as root; else the runs are not bounded, and the test says so), one CPU
+# (taskset), and the 10 minutes (make-gradescope --minutes 10; the run is killed at 600 s).
+limit_mb=768
+memory_cgroup=""
+if [ -d /sys/fs/cgroup/memory ] && mkdir "/sys/fs/cgroup/memory/raylab-gradescope-$$" 2>/dev/null; then
+  memory_cgroup=/sys/fs/cgroup/memory/raylab-gradescope-$$
+  echo $((limit_mb * 1048576)) > "$memory_cgroup/memory.limit_in_bytes"
+elif grep -qw memory /sys/fs/cgroup/cgroup.subtree_control 2>/dev/null && mkdir "/sys/fs/cgroup/raylab-gradescope-$$" 2>/dev/null; then
+  memory_cgroup=/sys/fs/cgroup/raylab-gradescope-$$
+  echo $((limit_mb * 1048576)) > "$memory_cgroup/memory.max"
+fi
+one_cpu=(); command -v taskset >/dev/null && one_cpu=(taskset -c 0)
+cleanup() {
+  rm -rf "$root"
+  [ -z "$memory_cgroup" ] || rmdir "$memory_cgroup" 2>/dev/null || true
+}
+trap cleanup EXIT
 chmod 755 "$root"
+# The cgroup's count of processes killed for want of memory, and its peak use in MB.
+oom_kills() {
+  [ -n "$memory_cgroup" ] || { echo 0; return; }
+  # (v1 has memory.oom_control, v2 memory.events: one of the two is always missing)
+  { cat "$memory_cgroup/memory.oom_control" "$memory_cgroup/memory.events" 2>/dev/null || true; } |
+    awk '$1 == "oom_kill" {n += $2} END {print n + 0}'
+}
+peak_mb() {
+  local bytes; bytes=$({ cat "$memory_cgroup/memory.max_usage_in_bytes" "$memory_cgroup/memory.peak" 2>/dev/null || true; } | head -1)
+  echo $(( ${bytes:-0} / 1048576 ))
+}
 seed=918273645
-"$source_dir/tools/make-gradescope" --seed $seed --visibility '06_robustness=after_published' \
+"$source_dir/tools/make-gradescope" --seed $seed --minutes 10 --visibility '06_robustness=after_published' \
   --visibility '05_bvh: Bunny*=hidden' "$work" >/dev/null
 mkdir -p "$root/source" "$root/submission" "$root/results"
 (cd "$root/source" && cmake -E tar xf "$work/gradescope.zip")
@@ -35,11 +68,26 @@ stage_files=$("$kit/build/bin/autograder" --list-files)
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-# grade NAME: runs run_autograder on what is in $root/submission; prints the total.
+# grade NAME: runs run_autograder on what is in $root/submission, within the limits above; prints
+# the total. Its time (wall, and CPU on its one core) and peak memory go to $work/limits.txt.
 grade() {
   rm -rf "$root/results"; mkdir -p "$root/results"
-  bash "$root/source/run_autograder" > "$work/$1.log" 2>&1
-  [ -f "$root/results/results.json" ] || { fail "$1: no results.json"; echo -1; return; }
+  local oom_before wall user system TIMEFORMAT='%R %U %S'
+  oom_before=$(oom_kills)
+  [ ! -f "$memory_cgroup/memory.max_usage_in_bytes" ] || echo 0 > "$memory_cgroup/memory.max_usage_in_bytes"
+  { time (
+      [ -z "$memory_cgroup" ] || echo "$BASHPID" > "$memory_cgroup/cgroup.procs"
+      # Gradescope ends a run at its time limit (here the 10 minutes of --minutes 10).
+      timeout -s KILL 600 ${one_cpu[@]+"${one_cpu[@]}"} bash "$root/source/run_autograder" > "$work/$1.log" 2>&1 ||
+        [ $? != 137 ] || echo "$1: the run went past the 10 minutes: Gradescope would show no score" >> "$work/grade-failures"
+    ); } 2> "$work/$1.time"  # (no exec above: time would see nothing)
+  # (grade runs in $(...): its failures reach the count through a file)
+  [ "$(oom_kills)" = "$oom_before" ] ||
+    echo "$1: a process of the run was killed for want of memory (the container's $limit_mb MB)" | tee -a "$work/grade-failures" >&2
+  read -r wall user system < "$work/$1.time"
+  awk -v name="$1" -v wall="$wall" -v cpu="$(awk -v u="$user" -v s="$system" 'BEGIN {print u + s}')" -v peak="$(peak_mb)" \
+    'BEGIN {printf "  %-22s %6.1f s wall, %6.1f s CPU on one core (at half a CPU about %4.0f s), peak %4d MB\n", name, wall, cpu, 2 * cpu, peak}' >> "$work/limits.txt"
+  [ -f "$root/results/results.json" ] || { echo "$1: no results.json" | tee -a "$work/grade-failures" >&2; echo -1; return; }
   cp "$root/results/results.json" "$work/$1.results.json"
   python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["score"])' "$root/results/results.json"
 }
@@ -65,6 +113,11 @@ echo "a note the grader ignores" > "$root/submission/README.txt"
 score=$(grade reference); max=$(max_score "$work/reference.results.json")
 [ "$score" = "$max" ] && [ "$max" -gt 0 ] || fail "the solutions scored $score of $max"
 grep -q "ignored README.txt" "$work/reference.log" || fail "run_autograder did not say it ignored README.txt"
+# It knows the container's limits, and keeps within them (resources.sh).
+if [ -n "$memory_cgroup" ]; then
+  grep -q "run_autograder: $limit_mb MB and 1 CPU for this run: compiles 1 at a time, a stage server may use 512 MB, 600 s in all" "$work/reference.log" ||
+    fail "run_autograder did not find the container's $limit_mb MB and 1 CPU: $(grep 'for this run' "$work/reference.log")"
+fi
 # Gradescope's fields (tools/make-gradescope --visibility above): Markdown output, times, the
 # course's visibility rules, and the leaderboard from stage 05's measured work.
 python3 - "$work/reference.results.json" <<'PYTHON' || fail "the solutions' results.json lacks Gradescope's fields (above)"
@@ -116,6 +169,32 @@ test = tests["01_camera_rays: DirectionImageMatchesReference"]
 sys.exit(0 if test["score"] == 0 and "](data:image/png;base64,iVBORw0KGgo" in test["output"] else 1)
 PYTHON
 
+# A memory bomb (stage 03) that writes every page it takes, a fork bomb and a disk filler (stage
+# 10, tests/tools/gradescope_hostile/): within the container's memory and disk, costing those two
+# stages alone (and, as for any broken stage, the pictures rendered with them).
+submit_solutions_except 03_triangle/triangle.cpp
+rm -f "$root/submission/microfacet.cpp"
+cp "$source_dir/tests/tools/gradescope_hostile/triangle.cpp" "$source_dir/tests/tools/gradescope_hostile/microfacet.cpp" "$root/submission/"
+mkdir -p "$root/submission/03_triangle" && cp "$source_dir/solutions/03_triangle/"*.h "$root/submission/03_triangle/"  # stage 05's leaf test includes them
+score=$(grade hostile)
+python3 - "$work/hostile.results.json" "$source_dir/stages.json" <<'PYTHON' || fail "the memory bomb, fork bomb and disk filler cost more than stages 03 and 10 (above)"
+import json, sys
+tests = json.load(open(sys.argv[1]))["tests"]
+lost = [t["name"] for t in tests if t["score"] < t["max_score"]]
+# As for the broken camera: the picture tests of the stages that render with those two lose too.
+users = tuple(s["id"] + ":" for s in json.load(open(sys.argv[2]))["stages"]
+              if {"03_triangle", "10_microfacet"} & set(s["needs"]))
+wrong = [name for name in lost
+         if not name.startswith(("03_triangle:", "10_microfacet:")) and not ("Image" in name and name.startswith(users))]
+print("\n".join(f"lost, but its stage is correct: {name}" for name in wrong))
+memory = [t for t in tests if t["name"].startswith("03_triangle:") and "memory" in t.get("output", "")]
+if not memory: print("stage 03's memory bomb is not named")
+if not any(name.startswith("10_microfacet:") for name in lost): print("stage 10 lost nothing")
+sys.exit(1 if wrong or not memory or not any(name.startswith("10_microfacet:") for name in lost) else 0)
+PYTHON
+left=$(find /tmp /var/tmp /dev/shm "$root" -maxdepth 3 -name 'fill-*' 2>/dev/null | head -3)
+[ -z "$left" ] || { fail "the disk filler left files: $left"; find /tmp /var/tmp /dev/shm "$root" -maxdepth 3 -name 'fill-*' -delete 2>/dev/null || true; }
+
 submit_solutions_except 04_box/box.cpp
 echo "this is not C++" > "$root/submission/box.cpp"
 score=$(grade does_not_compile)
@@ -153,5 +232,12 @@ if grep -rqs "$seed" "$work" --include='*.json' --include='*.log' --include='*.h
   fail "the course's seed appears in an output: $(grep -rls "$seed" "$work" --include='*.json' --include='*.log' --include='*.html' | head -3)"
 fi
 
+[ ! -s "$work/grade-failures" ] || failures=$((failures + $(wc -l < "$work/grade-failures")))
+if [ -n "$memory_cgroup" ]; then
+  echo "check_gradescope: each run_autograder in $limit_mb MB (a memory cgroup) and on one CPU:"
+else
+  echo "check_gradescope: no memory cgroup could be made here: the runs were not held to $limit_mb MB; on one CPU:"
+fi
+cat "$work/limits.txt"
 if [ $failures -gt 0 ]; then echo "check_gradescope: $failures failures (logs in $work)"; exit 1; fi
 echo "check_gradescope: the pipeline grades the solutions $max/$max, the stubs 0, a broken camera, a compile error and copied answers right, with Gradescope's fields"
