@@ -58,6 +58,11 @@ peak_mb() {
 seed=918273645
 "$source_dir/tools/make-gradescope" --seed $seed --minutes 10 --visibility '06_robustness=after_published' \
   --visibility '05_bvh: Bunny*=hidden' "$work" >/dev/null
+# The Manual Docker folder beside the archive: the Dockerfile on Gradescope's base, and the same kit.
+for file in Dockerfile source/setup.sh source/run_autograder source/raylab/stages.json source/raylab/autograder/time-limit-seconds; do
+  [ -f "$work/docker/$file" ] || { echo "FAIL: make-gradescope wrote no docker/$file"; exit 1; }
+done
+grep -q "^FROM gradescope/autograder-base:" "$work/docker/Dockerfile" || { echo "FAIL: docker/Dockerfile is not on Gradescope's base"; exit 1; }
 mkdir -p "$root/source" "$root/submission" "$root/results"
 (cd "$root/source" && cmake -E tar xf "$work/gradescope.zip")
 export AUTOGRADER_ROOT=$root
