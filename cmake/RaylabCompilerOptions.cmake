@@ -22,6 +22,35 @@ set(RAYLAB_CHECKING_CODE_OPTIONS "$<$<AND:$<CONFIG:Release>,$<CXX_COMPILER_ID:GN
 add_library(raylab_checking_code INTERFACE)
 target_compile_options(raylab_checking_code INTERFACE ${RAYLAB_CHECKING_CODE_OPTIONS})
 
+# raylab_precompile_headers(TARGET [TESTS]): with RAYLAB_PRECOMPILE_HEADERS, TARGET's files are
+# compiled with GLM and the standard headers they use most precompiled (with TESTS, GoogleTest and
+# nlohmann-json too: the grader's and the tests' targets). Only library headers: a file still
+# has to include what it uses, which the GCC build, without this, checks.
+# raylab_reuse_precompiled_headers(TARGET): the single-file stage code targets (tests/submissions)
+# share one precompiled header, raylab_stage_code_pch's (same flags: raylab_framework and raylab_options).
+set(RAYLAB_PRECOMPILED_STANDARD_HEADERS <glm/glm.hpp> <algorithm> <cmath> <cstdint> <functional> <memory>
+    <optional> <string> <utility> <vector>)
+function(raylab_precompile_headers target)
+  if(RAYLAB_PRECOMPILE_HEADERS)
+    set(headers ${RAYLAB_PRECOMPILED_STANDARD_HEADERS})
+    if(ARGV1 STREQUAL "TESTS")
+      list(APPEND headers <gtest/gtest.h> <nlohmann/json.hpp> <map> <sstream> <filesystem>)
+    endif()
+    target_precompile_headers(${target} PRIVATE ${headers})
+  endif()
+endfunction()
+function(raylab_reuse_precompiled_headers target)
+  if(RAYLAB_PRECOMPILE_HEADERS)
+    if(NOT TARGET raylab_stage_code_pch)
+      file(WRITE ${PROJECT_BINARY_DIR}/generated/stage_code_pch.cpp "// the precompiled header's own file\n")
+      add_library(raylab_stage_code_pch OBJECT ${PROJECT_BINARY_DIR}/generated/stage_code_pch.cpp)
+      target_link_libraries(raylab_stage_code_pch PUBLIC raylab_framework PRIVATE raylab_options)
+      target_precompile_headers(raylab_stage_code_pch PRIVATE ${RAYLAB_PRECOMPILED_STANDARD_HEADERS})
+    endif()
+    target_precompile_headers(${target} REUSE_FROM raylab_stage_code_pch)
+  endif()
+endfunction()
+
 if(RAYLAB_WERROR)
   target_compile_options(raylab_options INTERFACE
     $<$<CXX_COMPILER_ID:GNU,Clang,AppleClang>:-Werror> $<$<CXX_COMPILER_ID:MSVC>:/WX>)

@@ -237,6 +237,7 @@ function(raylab_add_stage_library name root)
   # framework, so the stage objects go straight into each program.
   add_library(${name} OBJECT ${sources})
   target_link_libraries(${name} PUBLIC raylab_framework PRIVATE raylab_options)
+  raylab_precompile_headers(${name})
 endfunction()
 
 # raylab_add_program(NAME student|reference SOURCES...): one program linked with one variant.
