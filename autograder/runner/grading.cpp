@@ -165,14 +165,16 @@ class Recorder : public ::testing::EmptyTestEventListener {
     if (!result.failed()) return;
     const std::string message = written_message(result);
     not_implemented_ = not_implemented_ || message.find("is not implemented yet") != std::string::npos;
-    // add_failure's text, as GoogleTest recorded it ("Failed\n" + the English): shown in either language.
+    // A failure the suite worded (add_failure, or failure_text after a GoogleTest check): GoogleTest
+    // recorded its English after words of its own ("Failed", or "Expected equality of these
+    // values: ... Which is: ..."), which the student never sees: only the worded failure, in the
+    // run's language.
     std::vector<Message>& failures = current().failures;
     if (!failures.empty()) {
       std::string english = render(failures.front(), Language::English);
       while (!english.empty() && english.back() == '\n') english.pop_back();  // as written_message
       if (message.size() >= english.size() && message.compare(message.size() - english.size(), english.size(), english) == 0) {
-        MessageArg prefix = MessageArg::bilingual("prefix", message.substr(0, message.size() - english.size()), "");
-        messages_.push_back(readable(Message(MessageId::failure, {prefix, {"failure", failures.front()}})));
+        messages_.push_back(readable(failures.front()));
         failures.erase(failures.begin());
         return;
       }

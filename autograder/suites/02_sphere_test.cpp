@@ -41,6 +41,16 @@ bool assumed_unit_direction(const Ray& ray, const glm::vec3& center, float radiu
   return false;
 }
 
+// Whether the ray's line only touches the sphere: its distance from the centre is the radius
+// (in double; the tests' tangents are exact in float), so the discriminant is 0.
+bool touches(const Ray& ray, const glm::vec3& center, float radius) {
+  const glm::dvec3 o = glm::dvec3(ray.origin) - glm::dvec3(center), d(ray.direction);
+  const double a = glm::dot(d, d);
+  if (!(a > 0.0)) return false;
+  const glm::dvec3 perpendicular = o - (glm::dot(o, d) / a) * d;
+  return std::fabs(glm::length(perpendicular) - double(radius)) <= 1e-9 * double(radius);
+}
+
 // Names the mistake behind a wrong answer, from the answer itself.
 void diagnose(const Ray& ray, const glm::vec3& center, float radius, std::optional<float> got, std::optional<float> expected) {
   const bool origin_inside = glm::length(ray.origin - center) < radius;
@@ -60,6 +70,8 @@ void diagnose(const Ray& ray, const glm::vec3& center, float radius, std::option
       add_hint(MessageId::sphere_not_accurate);
   } else if (got && !expected) {
     add_hint(MessageId::sphere_false_hit);
+  } else if (!got && expected && touches(ray, center, radius)) {
+    add_hint(MessageId::sphere_tangent_missed);
   } else if (!got && expected) {
     add_hint(MessageId::sphere_misses);
   }
@@ -120,6 +132,9 @@ GRADED_TEST(kStage, Stage02Sphere, GrazingRays, 1) {
   const float depth = std::sqrt(1.0f - inside * inside);
   expect_sphere(make_ray({0, inside, 0}, {0, 0, -1}), {0, 0, -5}, 1.0f, 5.0f - depth);
   expect_sphere(make_ray({0, outside, 0}, {0, 0, -1}), {0, 0, -5}, 1.0f, std::nullopt);
+  // Exactly on the silhouette: the ray touches the sphere at one point (discriminant 0), which is
+  // on the surface, so it is a hit (the contract: "meets the sphere's surface").
+  expect_sphere(make_ray({0, 1, 0}, {0, 0, -1}), {0, 0, -5}, 1.0f, 5.0f);
 }
 
 GRADED_TEST(kStage, Stage02Sphere, MatchesReferenceHits, 3) {

@@ -50,6 +50,11 @@ void diagnose(const Ray& ray, std::optional<TriangleHit> got, std::optional<Tria
       add_hint(MessageId::triangle_barycentrics_wrong);
   } else if (!got && expected && back_face) {
     add_hint(MessageId::triangle_culls_back_faces);
+  } else if (!got && expected &&
+             (expected->barycentric_b1 == 0.0f || expected->barycentric_b2 == 0.0f ||
+              expected->barycentric_b1 + expected->barycentric_b2 == 1.0f)) {
+    add_hint({MessageId::triangle_edge_excluded,
+              {{"b1", gtest_text(expected->barycentric_b1)}, {"b2", gtest_text(expected->barycentric_b2)}}});
   } else if (!got && expected) {
     add_hint(MessageId::triangle_misses);
   }
@@ -98,6 +103,11 @@ GRADED_TEST(kStage, Stage03Triangle, EdgesAndVerticesCountAsInside, 2) {
   expect_triangle(make_ray({0.5f, 0.5f, 0}, {0, 0, -1}), kP0, kP1, kP2, TriangleHit{2.0f, 0.5f, 0.5f});
   expect_triangle(make_ray({0.5f, 0.0f, 0}, {0, 0, -1}), kP0, kP1, kP2, TriangleHit{2.0f, 0.5f, 0.0f});
   expect_triangle(make_ray({1.0f, 0.0f, 0}, {0, 0, -1}), kP0, kP1, kP2, TriangleHit{2.0f, 1.0f, 0.0f});
+  // Each edge and corner once, so that any one strict comparison (b1 > 0, b2 > 0, b1 + b2 < 1)
+  // misses one: the edge p0-p2 (b1 = 0), and the corners p0 and p2.
+  expect_triangle(make_ray({0.0f, 0.5f, 0}, {0, 0, -1}), kP0, kP1, kP2, TriangleHit{2.0f, 0.0f, 0.5f});
+  expect_triangle(make_ray({0.0f, 0.0f, 0}, {0, 0, -1}), kP0, kP1, kP2, TriangleHit{2.0f, 0.0f, 0.0f});
+  expect_triangle(make_ray({0.0f, 1.0f, 0}, {0, 0, -1}), kP0, kP1, kP2, TriangleHit{2.0f, 0.0f, 1.0f});
 }
 
 GRADED_TEST(kStage, Stage03Triangle, TriangleBehindTheRayIsMissed, 2) {

@@ -25,10 +25,53 @@ bool close(float got, float expected) { return std::fabs(got - expected) <= 1e-4
 // Whether a reported entry lies beyond t_max (the mistake of starting t_exit at infinity).
 bool box_beyond_t_max(const Ray& ray, std::optional<float> got) { return got && *got > ray.t_max; }
 
-void diagnose(const Ray& ray, std::optional<float> got, std::optional<float> expected) {
+// What a slab test without the swap returns: each axis's (min - o) * inverse taken as its entry
+// and (max - o) * inverse as its exit, also where the direction is negative (or -0), with NaN
+// losing every comparison. Right for directions with no negative component only.
+std::optional<float> unswapped_slab_test(const Ray& ray, const Bounds3& box) {
+  const glm::vec3 inverse = ray_direction_inverse_of(ray);
+  float t_enter = ray.t_min, t_exit = ray.t_max;
+  for (int axis = 0; axis < 3; ++axis) {
+    const float t0 = (box.min[axis] - ray.origin[axis]) * inverse[axis];
+    const float t1 = (box.max[axis] - ray.origin[axis]) * inverse[axis];
+    if (t0 > t_enter) t_enter = t0;
+    if (t1 < t_exit) t_exit = t1;
+  }
+  if (t_enter <= t_exit) return t_enter;
+  return std::nullopt;
+}
+bool has_negative_component(const glm::vec3& direction) {
+  return std::signbit(direction.x) || std::signbit(direction.y) || std::signbit(direction.z);
+}
+bool same_answer(std::optional<float> a, std::optional<float> b) {
+  return a.has_value() == b.has_value() && (!a || close(*a, *b));
+}
+
+// Where the ray's line leaves the box (in double; unbounded along the ray), or nullopt when the
+// line misses it: a box that the line crosses but that lies wholly before t_min is behind the ray.
+std::optional<double> line_exit(const Ray& ray, const Bounds3& box) {
+  double t_enter = -kInfinity, t_exit = kInfinity;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double o = ray.origin[axis], d = ray.direction[axis];
+    if (d == 0.0) {
+      if (o < box.min[axis] || o > box.max[axis]) return std::nullopt;
+      continue;
+    }
+    const double t0 = (box.min[axis] - o) / d, t1 = (box.max[axis] - o) / d;
+    t_enter = std::max(t_enter, std::min(t0, t1));
+    t_exit = std::min(t_exit, std::max(t0, t1));
+  }
+  if (t_enter > t_exit) return std::nullopt;
+  return t_exit;
+}
+
+void diagnose(const Ray& ray, const Bounds3& box, std::optional<float> got, std::optional<float> expected) {
   const bool zero_component = ray.direction.x == 0.0f || ray.direction.y == 0.0f || ray.direction.z == 0.0f;
+  const std::optional<double> exit = line_exit(ray, box);
   if (got && hint_if_not_finite("t_enter", {*got}, MessageId::box_advice_nan)) {
-  } else if (got && !expected && *got < ray.t_min) {
+  } else if (has_negative_component(ray.direction) && same_answer(got, unswapped_slab_test(ray, box))) {
+    add_hint(MessageId::box_no_swap);
+  } else if (got && !expected && (*got < ray.t_min || (exit && *exit < ray.t_min))) {
     add_hint(MessageId::box_accepts_behind);
   } else if (got && !expected && !std::isinf(ray.t_max) && box_beyond_t_max(ray, got)) {
     add_hint(MessageId::box_ignores_t_max);
@@ -54,7 +97,7 @@ void expect_box(const Ray& ray, const Bounds3& box, std::optional<float> expecte
   const std::optional<float> got = intersect_ray_box(ray, ray_direction_inverse_of(ray), box);
   const bool ok = got.has_value() == expected.has_value() && (!got || close(*got, *expected));
   if (!ok) {
-    diagnose(ray, got, expected);
+    diagnose(ray, box, got, expected);
     add_failure({MessageId::box_failure,
                  {{"ray", ray_text(ray)}, {"box", box_text(box)}, {"expected", describe(expected)},
                   {"got", describe(got)}}});
@@ -122,7 +165,7 @@ GRADED_TEST(kStage, Stage04Box, MatchesReferenceBoxes, 2) {
     const std::optional<float> got = intersect_ray_box(ray, ray_direction_inverse_of(ray), box);
     if (got.has_value() == expected.has_value() && (!got || close(*got, *expected))) continue;
     if (++failures <= 3) {
-      diagnose(ray, got, expected);
+      diagnose(ray, box, got, expected);
       add_failure({MessageId::box_failure_reference,
                    {{"id", c.at("id").dump()}, {"ray", ray_text(ray)}, {"box", box_text(box)},
                     {"expected", describe(expected)}, {"got", describe(got)}}});

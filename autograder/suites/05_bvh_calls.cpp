@@ -40,9 +40,12 @@ Bvh remote_build(const grading::StageCall& call, const std::vector<Bounds3>& pri
   });
 }
 
+// What the server says of one traversal: the hit, the traversal's own stats (nodes_visited and
+// reported_tests, what it says it did) and the primitive tests counted in the server
+// (counted_tests, for the grader's own triangle test, which runs there).
 struct TraversalReply {
   std::optional<BvhHit> hit;
-  std::uint64_t nodes_visited = 0, primitives_tested = 0;
+  std::uint64_t nodes_visited = 0, reported_tests = 0, counted_tests = 0;
 };
 
 // What the current stage server holds, for intersect_bvh and intersect_bvh_each alike.
@@ -72,28 +75,29 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const Primit
   arguments.put(ray);
   arguments.put<std::uint8_t>(any_hit);
 
-  std::uint64_t judged_tests = 0;
   const TraversalReply reply = grading::remote(
       kIntersectBvh, arguments,
       [](Reader& in) {
         TraversalReply read;
         read.hit = in.get_optional<BvhHit>();
         read.nodes_visited = in.get<std::uint64_t>();
-        read.primitives_tested = in.get<std::uint64_t>();
+        read.reported_tests = in.get<std::uint64_t>();
+        read.counted_tests = in.get<std::uint64_t>();
         return read;
       },
       [&](Reader& question, Writer& answer) {  // one primitive test of another intersector
         const Ray asked = question.get<Ray>();
         const auto primitive = question.get<std::uint32_t>();
         question.expect_end();
-        ++judged_tests;
         answer.put_optional(intersector.test(intersector.context, asked, primitive));
       });
   sent_nodes.returned(bvh.nodes);
   sent_order.returned(bvh.primitive_order);
   if (grader_test) sent_triangles.returned(*triangles);
+  // The judge's own intersector counts the calls it answered itself (the work it scores); `stats`
+  // gets what the traversal says, which the work test checks against that count.
   stats.nodes_visited += reply.nodes_visited;
-  stats.primitives_tested += grader_test ? reply.primitives_tested : judged_tests;
+  stats.primitives_tested += grader_test ? reply.counted_tests : reply.reported_tests;
   return reply.hit;
 }
 
@@ -159,6 +163,7 @@ void serve_intersect_bvh(Reader& in, Writer& out) {
   const std::optional<BvhHit> hit = intersect_bvh(bvh, ray, PrimitiveIntersector{grading::counting_test, &counting}, any_hit, stats);
   out.put_optional(hit);
   out.put<std::uint64_t>(stats.nodes_visited);
+  out.put<std::uint64_t>(stats.primitives_tested);
   out.put<std::uint64_t>(counting.tests);
 }
 

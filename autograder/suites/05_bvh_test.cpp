@@ -88,6 +88,27 @@ GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
       << failure_text({MessageId::bvh_failure_split_axis,
                  {{"axis", std::to_string(int(root.split_axis))}, {"box", box_text(root.bounds)},
                   {"longest", std::to_string(longest_node)}}});
+  // Only a node holding more than max_leaf_size primitives is split: of the nodes reachable from
+  // the root, no inner one holds kLeafSize or fewer. (Children come after their parent, as
+  // BuildsAValidTree checks; a walk that follows only such links ends on any tree.)
+  std::uint64_t split_small = 0;
+  std::size_t first_small = 0;
+  std::vector<std::size_t> stack{0};
+  while (!stack.empty()) {
+    const std::size_t index = stack.back();
+    stack.pop_back();
+    const BvhNode& node = bvh.nodes[index];
+    if (node.is_leaf() || !children_in_range(bvh, node) || node.first_index <= index) continue;
+    if (counts[index] <= static_cast<std::uint32_t>(kLeafSize) && split_small++ == 0) first_small = index;
+    stack.push_back(node.first_index);
+    stack.push_back(node.first_index + 1);
+  }
+  if (split_small > 0) {
+    add_hint({MessageId::bvh_splits_small_nodes, {{"leaf_size", std::to_string(kLeafSize)}}});
+    add_failure({MessageId::bvh_failure_small_node_split,
+                 {{"node", std::to_string(first_small)}, {"count", std::to_string(counts[first_small])},
+                  {"leaf_size", std::to_string(kLeafSize)}, {"nodes", std::to_string(split_small)}}});
+  }
 }
 
 GRADED_TEST(kStage, Stage05Bvh, ClosestHitsMatchBruteForce, 5) {

@@ -349,9 +349,13 @@ Message chi_square_reason(const testkit::ChiSquareResult& result, const std::vec
           {{"p_value", four_digits(result.p_value)}, {"level", four_digits(result.significance_level)}}};
 }
 
-// ... and its figures (the {chi_square} of a failure).
+// ... and its figures (the {chi_square} of a failure); what they mean, only with the grading's
+// first chi-square failure: a student reads it once, not once per warp.
 Message chi_square_summary(const testkit::ChiSquareResult& result) {
-  std::vector<Message> pooled, none_expected;
+  static bool explained = false;
+  std::vector<Message> pooled, none_expected, explanation;
+  if (!explained) explanation.push_back(MessageId::chi_square_explained);
+  explained = true;
   if (result.pooled_cells)
     pooled.push_back({MessageId::chi_square_pooled, {{"count", std::to_string(result.pooled_cells)}}});
   if (result.samples_where_none_expected > 0)
@@ -366,7 +370,8 @@ Message chi_square_summary(const testkit::ChiSquareResult& result) {
            {"pooled", pooled},
            {"observed", four_digits(result.observed_total)},
            {"expected", four_digits(result.expected_total)},
-           {"none_expected", none_expected}}};
+           {"none_expected", none_expected},
+           {"explained", explanation}}};
 }
 
 // ---- The histogram picture -------------------------------------------------------------------

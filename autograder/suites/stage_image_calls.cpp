@@ -1,6 +1,7 @@
 // The image test's call between the judge and the stage server (autograder/runner/stage_call.h),
 // for every stage with an image in stages.json: the stage's picture (stage_image.h), rendered by
 // the stage code in the server, its pixels sent back whole.
+#include "grader_geometry.h"
 #include "stage_call.h"
 #include "stage_image.h"
 
@@ -9,8 +10,10 @@
 #include "raylab/stage_table.h"
 #include "raylab/stages/01_camera_rays.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <string_view>
 
 namespace raylab::grading {
 namespace {
@@ -57,8 +60,20 @@ Image render_stage_image(const std::string& stage_id) {
     return image;
   }
   if (stage->image_shows == "spheres") scene.meshes.clear();
+  // The picture runs this stage's own functions and, of the earlier stages, only what the grader
+  // has no version of: its own camera rays, sphere and triangle tests (grader_geometry.h) stand in
+  // for those of stages 01-03 but the stage graded, and only stage 05's picture goes through the
+  // trees (which run stage 04's box test). So a mistake costs its own stage's picture only
+  // (stages.json: "needs" lists what is left: 05_bvh needs 04_box).
+  const auto has_function = [&](std::string_view function) {
+    return std::find(stage->functions.begin(), stage->functions.end(), function) != stage->functions.end();
+  };
   RenderSettings settings;
   settings.max_depth = scene.max_depth;
+  settings.tracing = grader_tracing();
+  if (has_function("intersect_ray_sphere")) settings.tracing.sphere = nullptr;
+  if (has_function("intersect_ray_triangle")) settings.tracing.triangle = nullptr;
+  settings.tracing.keep_trees = has_function("intersect_bvh");
   return render(scene, settings);
 }
 

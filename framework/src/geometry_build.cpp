@@ -68,7 +68,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
     part.triangle_count = static_cast<std::uint32_t>(triangles_.size()) - part.first_triangle;
   }
   if (acceleration == Acceleration::BvhAlways) brute_force_limit_ = 0;
-  if (tracing.replaces_primitive_tests()) acceleration = Acceleration::BruteForce;
+  if (tracing.replaces_primitive_tests() && !tracing.keep_trees) acceleration = Acceleration::BruteForce;
   if (acceleration != Acceleration::BruteForce) build_bvhs();
   only_one_tree_ = reference_trees_ && spheres_.empty() && meshes_.size() == 1 && !meshes_.front().bvh.nodes.empty();
   // bvh_count() is 0 when testing every primitive (brute force, or stage 05 a stub).

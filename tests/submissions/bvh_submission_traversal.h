@@ -18,6 +18,7 @@ struct TraversalMistakes {
   bool leaf_position_as_primitive = false;  // tests primitive i (the leaf position), not primitive_order[i]
   bool t_max_not_lowered = false;           // keeps the closest hit by comparison; search.t_max stays
   bool prunes_only_at_leaves = false;       // tests every node's box but enters every inner node anyway
+  bool primitives_not_counted = false;      // leaves stats.primitives_tested as it was
 };
 
 // What the traversal writes into stats.nodes_visited.
@@ -97,7 +98,7 @@ inline std::optional<BvhHit> traverse_bvh(const Bvh& bvh, const Ray& ray, const 
     depth = stack_depth[stack_size];
   }
   stats.nodes_visited += report == NodesReport::Honest ? nodes_visited : report == NodesReport::One ? 1 : path_nodes;
-  stats.primitives_tested += primitives_tested;
+  if (!mistakes.primitives_not_counted) stats.primitives_tested += primitives_tested;
   return closest;
 }
 

@@ -25,6 +25,9 @@ struct PathVariant {
   bool emission_after_diffuse = false;    // true: emission counted twice
   bool emission_at_camera_hit = true;     // false: the light black when seen directly
   bool cosine = true;                     // false: the cosine missing from the bounce weight
+  bool multiply_throughput = true;        // false: the throughput never multiplied by the bounce weight
+  float next_ray_offset = 0.0f;           // > 0: the next ray starts this far off the surface along its
+                                          // normal (GAMES101 assignment 7's EPSILON), not with spawn_ray
   bool pdf_from_bsdf_pdf = false;         // true: divides by bsdf_pdf (0 for mirrors and glass)
   bool one_surface_short = false;         // true: a loop depth < max_depth (the last surface left out)
   bool shadow_ray_hits_light = false;     // true: its own direct light, whose shadow ray runs to infinity
@@ -94,10 +97,15 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
       specular = sample->is_specular;
     }
     const float cosine = v.cosine ? std::fabs(glm::dot(normal, wi)) : 1.0f;
-    throughput *= f * (cosine / pdf);
+    if (v.multiply_throughput) throughput *= f * (cosine / pdf);
     if (throughput == glm::vec3(0.0f)) return radiance;
     previous_specular = specular;
-    ray = spawn_ray(*hit, wi);
+    if (v.next_ray_offset > 0.0f) {
+      const glm::vec3 side = glm::dot(normal, wi) > 0.0f ? normal : -normal;
+      ray = make_ray(hit->point + v.next_ray_offset * side, wi);
+    } else {
+      ray = spawn_ray(*hit, wi);
+    }
   }
 }
 

@@ -63,7 +63,8 @@ enum class TriangleTest {
 // 03b's, by TriangleTest), from whichever stage library the program links. The autograder's
 // Monte Carlo stages (08, 09) give the grader's own (autograder/suites/grader_geometry.h), so
 // that a mistake in stages 01-05 costs points only in its own stage. A geometry given its own
-// sphere or triangle test tests every primitive: the trees of stages 04-05 are stage code too.
+// sphere or triangle test tests every primitive (the trees of stages 04-05 are stage code too),
+// unless keep_trees says to trace them (the picture of stage 05's image test).
 // A tree that the reference's own programs trace instead of stage 05c's 4-wide one, with the
 // same closest hits (8 wide, its boxes tested with AVX2; written in the reference solutions, not
 // in the student release). Not a stage, and not for students: the framework only holds the
@@ -101,6 +102,9 @@ struct TracingFunctions {
   // With reference_stages, optionally: the reference's 8-wide tree (ReferenceTreeFunctions
   // above), traced instead of the 4-wide one where the CPU runs it.
   const ReferenceTreeFunctions* reference_tree = nullptr;
+  // With a sphere or triangle test given above: still trace the scene through the stage-05 trees
+  // (build_bvh, intersect_bvh and stage 04's box test) rather than test every primitive.
+  bool keep_trees = false;
   bool replaces_primitive_tests() const { return sphere != nullptr || triangle != nullptr; }
 };
 

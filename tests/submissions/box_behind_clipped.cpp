@@ -1,0 +1,24 @@
+// Grader self-test submission (stage 04_box): mistake: the slab interval is checked before it is
+// clipped to t_min, and the entry clipped afterwards, so a box wholly behind the ray is reported
+// at t_min (not before it); t_max is handled.
+#include "raylab/stages/04_box.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace raylab {
+
+std::optional<float> intersect_ray_box(const Ray& ray, const glm::vec3& ray_direction_inverse, const Bounds3& box) {
+  float t_enter = -kInfinity, t_exit = ray.t_max;
+  for (int axis = 0; axis < 3; ++axis) {
+    float t0 = (box.min[axis] - ray.origin[axis]) * ray_direction_inverse[axis];
+    float t1 = (box.max[axis] - ray.origin[axis]) * ray_direction_inverse[axis];
+    if (t0 > t1) std::swap(t0, t1);
+    if (t0 > t_enter) t_enter = t0;
+    if (t1 < t_exit) t_exit = t1;
+  }
+  if (!(t_enter <= t_exit)) return std::nullopt;
+  return std::max(t_enter, ray.t_min);
+}
+
+}  // namespace raylab
