@@ -214,9 +214,10 @@ void expect_cornell(int scene_index) {
   bool furnaces_right = true;
   for (int i = 0; i < 3 && furnaces_right; ++i) furnaces_right = furnace_right(i);
   if (!furnaces_right) return;
-  // Right furnaces: the weights along a path are right. What a furnace cannot show: a ray that
-  // hits the surface it starts on (in a furnace that is one more vertex like any other); and,
-  // in the specular box only, what happens after mirrors and glass (no furnace has them).
+  // Right furnaces: the weights along a path are right. What a furnace cannot show: a ray started
+  // too close to the surface it leaves for the box's coordinates (the furnace is a unit sphere,
+  // which a small fixed offset clears); and, in the specular box only, what happens after mirrors
+  // and glass (no furnace has them).
   if (scene_index == 0)
     add_hint({MessageId::path_ray_starts_on_surface, {}});
   else if (plain_box_passed().value_or(false))
