@@ -6,6 +6,13 @@
 #   RAYLAB_CALL_FILES         the stages' calls between judge and stage server, relative to
 #                             autograder/suites/ (autograder/runner/stage_call.h)
 #   RAYLAB_STAGE_TABLE_SOURCE a generated C++ file holding the table for raylab/stage_table.h
+#   RAYLAB_GRADER_STAGE_FILES the stage files the grader has its own correct version of, under
+#                             autograder/grader_stages/ (every stage some "grader_versions" names)
+#   RAYLAB_SERVER_SUFFIXES    one per distinct "grader_versions" list: "-with-grader-07-08" names
+#                             the stage server that links the grader's stages 07 and 08 (and the
+#                             student's, or the reference's, other stages); its files are
+#                             RAYLAB_SERVER_GRADER_FILES<suffix>
+#   RAYLAB_SERVER_SUFFIX_OF_<id> one stage's server suffix ("" for the default server)
 #
 # The stage contract in the build: every stage's functions are declared once in
 # framework/include/raylab/stages/ and defined twice, in assignments/ and solutions/, with
@@ -82,6 +89,8 @@ set(RAYLAB_STAGE_IDS "")
 set(RAYLAB_STAGE_FILES "")
 set(RAYLAB_SUITE_FILES "")
 set(RAYLAB_CALL_FILES "")
+set(RAYLAB_GRADER_STAGE_FILES "")
+set(RAYLAB_SERVER_SUFFIXES "")
 set(raylab_short_ids "")
 set(raylab_table_entries "")
 foreach(index RANGE ${raylab_last_stage})
@@ -116,6 +125,7 @@ foreach(index RANGE ${raylab_last_stage})
   raylab_table_string_list(suite "${where}: \"suite\"" stages ${index} suite)
   raylab_table_string_list(calls "${where}: \"calls\"" stages ${index} calls)
   raylab_table_string_list(needs "${where}: \"needs\"" stages ${index} needs)
+  raylab_table_string_list(grader_versions "${where}: \"grader_versions\"" stages ${index} grader_versions)
   raylab_table_get(points "${where}" stages ${index} points)
   raylab_table_get(bonus "${where}" stages ${index} bonus)
   raylab_table_type(image_type "${where}" stages ${index} image)
@@ -188,6 +198,45 @@ foreach(index RANGE ${raylab_last_stage})
       message(FATAL_ERROR "stages.json: ${where} needs ${needed}, which is not an earlier stage")
     endif()
   endforeach()
+  # "grader_versions": earlier stages whose functions, when this stage is graded, are the grader's
+  # own correct versions (autograder/grader_stages/, the same file names), so that a mistake there
+  # costs points at its own stage only. Their stage server is NAME-stage-server<suffix>.
+  set(server_suffix "")
+  set(grader_files "")
+  foreach(version IN LISTS grader_versions)
+    if(NOT version IN_LIST RAYLAB_STAGE_IDS)
+      message(FATAL_ERROR "stages.json: ${where}: \"grader_versions\" names ${version}, which is not an earlier stage")
+    endif()
+    if(version IN_LIST needs)
+      message(FATAL_ERROR "stages.json: ${where}: ${version} is in both \"needs\" and \"grader_versions\"")
+    endif()
+    string(REGEX REPLACE "_.*" "" version_short "${version}")
+    if(server_suffix STREQUAL "")
+      set(server_suffix "-with-grader")
+    endif()
+    string(APPEND server_suffix "-${version_short}")
+    foreach(file IN LISTS raylab_files_of_${version})
+      if(NOT EXISTS ${CMAKE_SOURCE_DIR}/autograder/grader_stages/${file})
+        message(FATAL_ERROR "stages.json: ${where}: \"grader_versions\" names ${version}, but the grader has no "
+                            "version of its file: autograder/grader_stages/${file} does not exist")
+      endif()
+      list(APPEND grader_files ${file})
+      if(NOT file IN_LIST RAYLAB_GRADER_STAGE_FILES)
+        list(APPEND RAYLAB_GRADER_STAGE_FILES ${file})
+      endif()
+    endforeach()
+  endforeach()
+  if(NOT server_suffix STREQUAL "" AND NOT server_suffix IN_LIST RAYLAB_SERVER_SUFFIXES)
+    list(APPEND RAYLAB_SERVER_SUFFIXES "${server_suffix}")
+    set(RAYLAB_SERVER_GRADER_FILES${server_suffix} ${grader_files})
+  endif()
+  foreach(file IN LISTS files)
+    if(file IN_LIST RAYLAB_GRADER_STAGE_FILES)
+      message(FATAL_ERROR "stages.json: ${where}: its file ${file} is also an earlier stage's that the grader replaces")
+    endif()
+  endforeach()
+  set(raylab_files_of_${id} ${files})
+  set(RAYLAB_SERVER_SUFFIX_OF_${id} "${server_suffix}")
   list(APPEND RAYLAB_STAGE_IDS ${id})
 
   # One C++ initializer per stage, in the order of StageDescription's fields.
@@ -201,6 +250,7 @@ foreach(index RANGE ${raylab_last_stage})
   raylab_cxx_literal(scene_literal "${image_scene}")
   raylab_cxx_literal(shows_literal "${image_shows}")
   raylab_cxx_literal_list(needs_literal ${needs})
+  raylab_cxx_literal(server_suffix_literal "${server_suffix}")
   if(bonus)
     set(bonus_literal true)
   else()
@@ -208,7 +258,7 @@ foreach(index RANGE ${raylab_last_stage})
   endif()
   string(APPEND raylab_table_entries
          "      {${id_literal}, ${title_literal}, ${title_zh_literal}, ${files_literal}, ${functions_literal}, ${handout_literal},\n"
-         "       ${section_literal}, ${scene_literal}, ${shows_literal}, ${needs_literal}, ${points}, ${bonus_literal}},\n")
+         "       ${section_literal}, ${scene_literal}, ${shows_literal}, ${needs_literal}, ${server_suffix_literal}, ${points}, ${bonus_literal}},\n")
 endforeach()
 
 set(RAYLAB_STAGE_TABLE_SOURCE ${CMAKE_BINARY_DIR}/generated/stage_table_data.cpp)
@@ -228,16 +278,64 @@ const std::vector<StageDescription>& stage_table() {
 ")
 message(STATUS "raylab: ${raylab_stage_count} stages from stages.json (${RAYLAB_STAGE_IDS})")
 
+# raylab_add_stage_library(NAME ROOT): the stage code under ROOT (assignments/ or solutions/),
+# one OBJECT library per stage file, NAME_<file as a C identifier> (so that a stage server can
+# link some stages' code and the grader's own versions of others: raylab_stage_objects), and NAME,
+# which links all of them. Not STATIC: the framework calls the stage functions and the stages use
+# the framework, so the stage objects go straight into each program.
 function(raylab_add_stage_library name root)
-  set(sources "")
+  set(objects "")
   foreach(file IN LISTS RAYLAB_STAGE_FILES)
-    list(APPEND sources ${root}/${file})
+    string(MAKE_C_IDENTIFIER "${file}" id)
+    add_library(${name}_${id} OBJECT ${root}/${file})
+    target_link_libraries(${name}_${id} PUBLIC raylab_framework PRIVATE raylab_options)
+    raylab_reuse_precompiled_headers(${name}_${id})
+    list(APPEND objects $<TARGET_OBJECTS:${name}_${id}>)
   endforeach()
-  # OBJECT, not STATIC: the framework calls the stage functions and the stages use the
-  # framework, so the stage objects go straight into each program.
-  add_library(${name} OBJECT ${sources})
-  target_link_libraries(${name} PUBLIC raylab_framework PRIVATE raylab_options)
-  raylab_precompile_headers(${name})
+  add_library(${name} INTERFACE)
+  target_sources(${name} INTERFACE ${objects})
+  target_link_libraries(${name} INTERFACE raylab_framework)
+endfunction()
+
+# raylab_stage_objects(OUT NAME [SUFFIX]): the per-file OBJECT libraries of the stage library NAME
+# (raylab_add_stage_library, or a list of them), each file's from the first library in the list
+# that has it (so "stages_x;raylab_stages_reference" is file x's submission on the reference);
+# with SUFFIX (one of RAYLAB_SERVER_SUFFIXES), the grader's own versions of the files it names.
+function(raylab_stage_objects out libraries)
+  set(suffix "${ARGV2}")
+  # Every library named must have a file here: a misspelt one must not fall through to the next.
+  foreach(library IN LISTS libraries)
+    set(has_one OFF)
+    foreach(file IN LISTS RAYLAB_STAGE_FILES)
+      string(MAKE_C_IDENTIFIER "${file}" id)
+      if(TARGET ${library}_${id})
+        set(has_one ON)
+      endif()
+    endforeach()
+    if(NOT has_one)
+      message(FATAL_ERROR "raylab_stage_objects: no library ${library}_<stage file as a C identifier> exists")
+    endif()
+  endforeach()
+  set(objects "")
+  foreach(file IN LISTS RAYLAB_STAGE_FILES)
+    string(MAKE_C_IDENTIFIER "${file}" id)
+    if(NOT suffix STREQUAL "" AND file IN_LIST RAYLAB_SERVER_GRADER_FILES${suffix})
+      list(APPEND objects raylab_grader_stage_${id})
+      continue()
+    endif()
+    set(found "")
+    foreach(library IN LISTS libraries)
+      if(TARGET ${library}_${id})
+        set(found ${library}_${id})
+        break()
+      endif()
+    endforeach()
+    if(found STREQUAL "")
+      message(FATAL_ERROR "raylab_stage_objects: no library of ${libraries} has ${file}")
+    endif()
+    list(APPEND objects ${found})
+  endforeach()
+  set(${out} ${objects} PARENT_SCOPE)
 endfunction()
 
 # raylab_add_program(NAME student|reference SOURCES...): one program linked with one variant.

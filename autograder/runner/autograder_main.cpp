@@ -80,6 +80,7 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   bool list_files = false;
   std::string compile_failed_log;
   std::vector<std::string> visibility_rules;
+  std::vector<std::string> servers_for;
   std::vector<std::string> stage_names;
   app.add_option("--stage", stage_names,
                  worded(MessageId::cli_stage));
@@ -100,6 +101,7 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   app.add_option("--memory-mb", options.memory_limit_mb, worded(MessageId::cli_memory))
       ->check(CLI::Range(0L, 1L << 20))->capture_default_str();
   app.add_option("--stage-server", options.server_path, worded(MessageId::cli_stage_server));
+  app.add_option("--stage-server-for", servers_for, worded(MessageId::cli_stage_server_for));
   app.add_flag("--verbose", options.verbose, worded(MessageId::cli_verbose));
   app.add_flag("--list", list, worded(MessageId::cli_list));
   app.add_flag("--list-files", list_files,
@@ -165,6 +167,16 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
       return 1;
     }
     options.stages.push_back(stage->number);
+  }
+  for (const std::string& text : servers_for) {
+    const std::size_t equals = text.find('=');
+    const StageInfo* stage = equals == std::string::npos ? nullptr : find_stage(std::string_view(text).substr(0, equals));
+    if (!stage || equals + 1 == text.size()) {
+      std::cerr << render({MessageId::cli_stage_server_for_malformed, {{"text", text}, {"stages", raylab::stage_ids_text()}}})
+                << "\n";
+      return 1;
+    }
+    options.servers_for[stage->id] = text.substr(equals + 1);
   }
   if (list) {
     for (const StageInfo& stage : stages()) {

@@ -39,6 +39,7 @@ std::vector<StageInfo>& stage_registry() {
       if (description.bonus) title_text = {MessageId::console_bonus_title, {{"title", title_text}}};
       stage.title_text = title_text;
       stage.points = description.points;
+      stage.server_suffix = std::string(description.server_suffix);
       for (std::string_view needed : description.needs)
         for (const StageInfo& earlier : rows)
           if (earlier.id == needed) stage.depends_on.push_back(earlier.number);

@@ -34,6 +34,8 @@ struct StageInfo {
   Message title_text{MessageId::verbatim};    // the title in either language ("附加题：分桶 SAH 构建")
   Message handout_text{MessageId::verbatim};  // the handout in either language ("docs/zh/05_bvh.md，第 5 节")
   std::vector<int> depends_on;   // "needs": the stages its image test renders with
+  std::string server_suffix;     // its stage server is the default one's path + this (before
+                                 // ".exe"): "-with-grader-07-08" ("grader_versions"), or ""
   int points = 0;                // what stages.json says its tests add up to
   std::function<void()> probe;   // calls the stage's function(s) once; a stub throws
 };

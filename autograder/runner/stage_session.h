@@ -53,6 +53,8 @@ class StageSession {
   static StageSession& instance();
 
   void configure(const SessionOptions& options) { options_ = options; }
+  // The stage server of the next stage (its first call starts it; end_stage stopped the last).
+  void set_server_path(const std::string& path) { options_.server_path = path; }
   const SessionOptions& options() const { return options_; }
 
   void begin_stage();

@@ -34,13 +34,26 @@ void run_stage_tests(StageResult& result) {
   [[maybe_unused]] const int failed = RUN_ALL_TESTS();
 }
 
-StageResult grade_stage(const StageInfo& stage) {
+// The stage server that grades `stage`: the one --stage-server-for names, else the default
+// server's path with the stage's suffix before ".exe" (a stage graded on the grader's own
+// versions of earlier stages, stages.json "grader_versions", has a server of its own).
+std::string server_for(const SupervisorOptions& options, const StageInfo& stage) {
+  if (const auto named = options.servers_for.find(stage.id); named != options.servers_for.end()) return named->second;
+  std::string path = options.server_path;
+  const std::string exe = ".exe";
+  const bool windows = path.size() > exe.size() && path.compare(path.size() - exe.size(), exe.size(), exe) == 0;
+  path.insert(windows ? path.size() - exe.size() : path.size(), stage.server_suffix);
+  return path;
+}
+
+StageResult grade_stage(const StageInfo& stage, const std::string& server_path) {
   StageResult result;
   result.stage = &stage;
   for (const TestInfo& test : tests())
     if (test.stage == stage.number) result.tests.push_back({test, Status::Lost, {MessageId::test_not_run}, {}, {}, 0.0, {}, {}, {}});
 
   StageSession& session = StageSession::instance();
+  session.set_server_path(server_path);
   session.begin_stage();
   session.begin_test("");
   // A stub throws NotImplemented at once: the stage is not attempted, no test runs.
@@ -118,10 +131,11 @@ int run_supervisor(const SupervisorOptions& options) {
       std::cerr << render({MessageId::cli_no_stage_number, {{"number", std::to_string(number)}}}) << "\n";
       return 1;
     }
-  if (!std::filesystem::exists(options.server_path)) {
-    std::cerr << render({MessageId::cli_server_missing, {{"path", options.server_path}}}) << "\n";
-    return 1;
-  }
+  for (const StageInfo* stage : selected)
+    if (!std::filesystem::exists(server_for(options, *stage))) {
+      std::cerr << render({MessageId::cli_server_missing, {{"path", server_for(options, *stage)}}}) << "\n";
+      return 1;
+    }
   std::filesystem::create_directories(options.output_directory);
   set_output_directory(options.output_directory);
   if (!options.reference_directory.empty()) set_reference_directory(options.reference_directory);
@@ -153,7 +167,7 @@ int run_supervisor(const SupervisorOptions& options) {
       if (complete.count(dependency) && !complete[dependency]) incomplete.push_back(dependency);
     set_incomplete_dependencies(incomplete);
     std::fprintf(stderr, "%s\n", render({MessageId::console_grading_stage, {{"stage", stage->id}}}).c_str());
-    results.push_back(grade_stage(*stage));
+    results.push_back(grade_stage(*stage, server_for(options, *stage)));
     complete[stage->number] = results.back().earned() == results.back().max();
   }
 

@@ -5,6 +5,7 @@
 
 #include "gradescope.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@ struct SupervisorOptions {
   std::string description;         // which code is graded, for the heading
   std::string description_zh;      // the same in Chinese
   std::string server_path;         // the stage server linked with that code
+  std::map<std::string, std::string> servers_for;  // stage id -> another server for that stage
+                                   // (--stage-server-for; the self-tests use it)
   std::vector<int> stages;         // empty: every stage
   std::string json_path;           // Gradescope results.json, if set
   std::vector<VisibilityRule> visibility;  // Gradescope's visibility per test (gradescope.h)

@@ -14,7 +14,6 @@
 // rounding, which a correct implementation never fails.
 #include "grading.h"
 #include "07_sampling_calls.h"
-#include "earlier_stages.h"
 #include "support.h"
 
 #include "raylab/error.h"
@@ -909,47 +908,6 @@ GRADED_TEST(kStage, Stage07Sampling, UniformTriangleFollowsIntendedDensity, 2) {
 GRADED_TEST(kStage, Stage07Sampling, UniformTrianglePdfIntegratesToOne, 1) { expect_pdf_integrates_to_one(Warp::UniformTriangle); }
 GRADED_TEST(kStage, Stage07Sampling, UniformTrianglePdfMatchesSamples, 2) { expect_pdf_matches_samples(Warp::UniformTriangle); }
 
-// Stage 07's verdict on a function, for later stages (earlier_stages.h): the checks of its tests,
-// without their failures and hints. A sampler: its samples finite, in their domain and following
-// the intended density (SamplesInDomain, FollowsIntendedDensity). A pdf: integrating to 1 (and 0
-// outside the disk), > 0 at the samples, and describing them (PdfIntegratesToOne,
-// PdfMatchesSamples), or else equal to the intended density (then the samples are wrong, not it).
-bool sampler_passes(Warp warp) {
-  const WarpData& data = data_of(warp);
-  return !data.first_non_finite && !data.first_out_of_domain && chi_square_against(data, data.expected).passed;
-}
-
-bool pdf_passes(Warp warp) {
-  const PdfData& pdf = pdf_data_of(warp);
-  const PdfComparison c = compare_pdf(warp, pdf);
-  if (warp == Warp::UniformTriangle) {
-    const TrianglePdfCases& cases = triangle_pdf_cases();
-    for (std::size_t i = 0; i < cases.values.size(); ++i)
-      if (!cases.integrates_to_one(i)) return false;
-  } else if (!(std::fabs(pdf.integral - 1.0) <= 1e-3) || c.non_finite || c.negative) {
-    return false;
-  }
-  if (warp == Warp::UniformDisk)
-    for (const float value : warp_pdfs(warp, kOutsideDisk))
-      if (value != 0.0f) return false;
-  if (c.equals_intended) return true;
-  const WarpData& data = data_of(warp);
-  return pdf_at_samples(warp, data).all_positive() && chi_square_against(data, pdf.expected).passed;
-}
-
 }  // namespace
-
-bool sampling_function_passes(const std::string& function) {
-  for (const Warp warp : kWarps) {
-    const bool sampler = function == warp_sample_function(warp);
-    if (!sampler && function != warp_pdf_function(warp)) continue;
-    try {
-      return sampler ? sampler_passes(warp) : pdf_passes(warp);
-    } catch (const NotImplemented&) {
-      return false;
-    }
-  }
-  return true;  // not a function of stage 07
-}
 
 }  // namespace raylab::grading

@@ -19,15 +19,14 @@
 //   with roulette): its spread is as huge as its mean. So each furnace's pixels must also spread
 //   no more than a correct path tracer's can (path_support.h: furnace_spread_test, by Markov's
 //   inequality from a bound on the variance of every correct variant).
-//   A failing test whose path runs a function of stage 07 or 08 that fails its own stage's tests
-//   names that function first (earlier_stages.h), and then no mistake of this stage's own.
+//   The paths sample with the grader's own stages 07 and 08 (stages.json: "grader_versions"), so
+//   a failing test here is this stage's own mistake.
 //
 // False failures: the 3 furnace t-tests, their 3 spread tests and the 2 x 64 x 3 region z-tests
 // share
 // kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected);
 // autograder-path-false-failures (autograder/tools/path_false_failures.cpp) measures it over
 // many seeds.
-#include "earlier_stages.h"
 #include "grading.h"
 #include "path_support.h"
 #include "support.h"
@@ -85,9 +84,6 @@ struct Mistake {
   // by p again and again) are left out, and a mean within 10% of the model (or 4 standard errors)
   // fits.
   bool wild_weights = false;
-  // The mistake is an earlier stage's (1 / pi missing from stage 08's lambertian_f): named also
-  // when that stage's function fails its own tests.
-  bool earlier_stage = false;
 };
 double furnace_value(const Model& model, const Furnace& f) {
   const double r = model.bounce_weight(f), d = model.direct_factor * f.albedo;
@@ -112,7 +108,9 @@ const std::vector<Mistake>& mistakes() {
       // the p it survived).
       {MessageId::path_throughput_not_multiplied, {[](const Furnace&) { return 1.0; }}},
       {MessageId::path_missing_cosine, {[](const Furnace& f) { return 2.0 * f.albedo; }}, true},
-      {MessageId::path_missing_inverse_pi, {[](const Furnace& f) { return kPiD * f.albedo; }, kPiD}, true, true},
+      // The bounce weighed with f = albedo rather than the BSDF's albedo / pi (the direct light,
+      // stage 08's estimator, stays right).
+      {MessageId::path_missing_inverse_pi, {[](const Furnace& f) { return kPiD * f.albedo; }}, true},
   };
   return models;
 }
@@ -157,23 +155,20 @@ bool furnace_right(int index) {
          furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel).passed;
 }
 
-// The hints of a failing test: the earlier stages' functions it runs that fail their own tests;
-// then the fitted models of the furnaces, but only those of an earlier stage's mistake when an
-// earlier function fails (the furnaces cannot tell this stage's mistakes from that one).
+// The hints of a failing test: the fitted models of the furnaces that fit; true when any does.
 // A mistake of wild weights is fitted on fewer furnaces and more loosely (Mistake), so it is named
 // only when no mistake of finite variance fits: the missing cosine's 2 a is the never-multiplied
 // throughput's 1 at albedo 0.5, which only the low-albedo furnace (with roulette) tells apart.
-bool hint_mistakes(const std::vector<std::string>& earlier_functions) {
-  const bool earlier_fails = hint_failing_earlier_functions(kStage, earlier_functions);
-  bool tame_fits = false;
+bool hint_mistakes() {
+  bool tame_fits = false, any = false;
   for (const bool wild : {false, true})
     for (const Mistake& mistake : mistakes())
-      if (mistake.wild_weights == wild && !(wild && tame_fits) && (mistake.earlier_stage || !earlier_fails) &&
-          fits(mistake)) {
+      if (mistake.wild_weights == wild && !(wild && tame_fits) && fits(mistake)) {
         add_hint({mistake.hint, {}});
         tame_fits = tame_fits || !wild;
+        any = true;
       }
-  return earlier_fails;
+  return any;
 }
 
 void expect_furnace(int index) {
@@ -188,7 +183,7 @@ void expect_furnace(int index) {
   if (result.passed && spread.passed) return;
   if (!result.passed) add_furnace_failure(index, result);
   if (!spread.passed) add_furnace_spread_failure(index, spread, exact, kLevel);
-  hint_mistakes(kFurnaceFunctions);
+  hint_mistakes();
 }
 
 GRADED_TEST(kStage, Stage09Path, FurnaceWithoutRoulette, 8) { expect_furnace(0); }
@@ -210,7 +205,7 @@ void expect_cornell(int scene_index) {
   if (scene_index == 0) plain_box_passed() = passed;
   if (!test || passed) return;
   // The furnaces name the mistake when they can.
-  if (hint_mistakes(kCornellFunctions)) return;
+  if (hint_mistakes()) return;
   bool furnaces_right = true;
   for (int i = 0; i < 3 && furnaces_right; ++i) furnaces_right = furnace_right(i);
   if (!furnaces_right) return;

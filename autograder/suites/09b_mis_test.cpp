@@ -6,7 +6,8 @@
 //   chosen rays in a small test scene (a floor under a quad light, or under a point light) with a
 //   constant sampler, so the judge knows the light point and the BSDF direction each path takes.
 //   The judge computes both samples itself, with the framework's sample_li, bsdf_sample_f, pdf_li
-//   and bsdf_pdf (which call your stages 07 and 08, as your path does), and the value a correct
+//   and bsdf_pdf (which call the grader's own stages 07 and 08, as your path does here: stages.json,
+//   "grader_versions"), and the value a correct
 //   MIS path tracer returns: each sample's contribution times its power-heuristic weight. The
 //   models of the common mistakes (no MIS, the balance heuristic, an area density in the weight,
 //   the emission unweighted, a weighted point light, a weighted last vertex) are fitted to every
@@ -21,7 +22,6 @@
 // exact tests have tolerances that a correct implementation never exceeds.
 // autograder-false-failures --stage 09b_mis measures it.
 #include "09b_mis_calls.h"
-#include "earlier_stages.h"
 #include "grader_geometry.h"
 #include "grading.h"
 #include "path_support.h"
@@ -49,8 +49,7 @@ namespace {
 constexpr const char* kStage = "09b_mis";
 const double kLevel = mis_test_level();
 
-// Not attempted only when both functions are the stub: a stub of stage 07 or 08 that the path
-// samples with costs the tests, which name that stage.
+// Not attempted only when both functions are the stub.
 const bool kRegistered = register_stage(kStage, [] {
   throw_if_every_function_is_a_stub(
       kStage, {[] { (void)power_heuristic(1, 1.0f, 1, 1.0f); },
@@ -200,8 +199,8 @@ std::vector<MisScriptedPath> scripted_paths(int max_depth) {
 
 // What a path of the test scenes is made of, computed by the judge: the light sample at the floor
 // point and the light the BSDF sample finds, each before its weight, with the densities the
-// weights compare. Computed with the framework's light and BSDF sampling, which call the student's
-// stages 07 and 08 (as the student's path does): this stage is judged on its weights only.
+// weights compare. Computed with the framework's light and BSDF sampling, which call the grader's
+// own stages 07 and 08 (as the student's path does here): this stage is judged on its weights only.
 struct PathParts {
   glm::vec3 light{0.0f};  // f L |cos| / pdf of the light sample (0: none, or blocked)
   bool light_is_delta = false;
@@ -407,7 +406,7 @@ void expect_furnace(int index) {
   if (result.passed && spread.passed) return;
   if (!result.passed) add_furnace_failure(index, result);
   if (!spread.passed) add_furnace_spread_failure(index, spread, exact, kLevel);
-  if (!hint_failing_earlier_functions(kStage, kFurnaceFunctions)) hint_biased();
+  hint_biased();
 }
 
 GRADED_TEST(kStage, Stage09bMis, FurnaceWithoutRoulette, 2) { expect_furnace(0); }
@@ -417,7 +416,7 @@ void expect_cornell(int scene_index) {
   const std::optional<RegionTest> test =
       expect_cornell_matches_reference(kStage, scene_index, true, test_seed(210 + static_cast<std::uint64_t>(scene_index)),
                                        kLevel, true);
-  if (test && test->failures > 0 && !hint_failing_earlier_functions(kStage, kCornellFunctions)) hint_biased();
+  if (test && test->failures > 0) hint_biased();
 }
 
 GRADED_TEST(kStage, Stage09bMis, CornellBoxImageMatchesReference, 3) { expect_cornell(0); }

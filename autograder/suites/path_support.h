@@ -108,16 +108,6 @@ void add_furnace_spread_failure(int index, const FurnaceSpreadResult& result, do
 // Adds the failure and the hint for `count` of `total` pixels not finite.
 void add_not_finite(std::size_t count, std::size_t total);
 
-// The functions of stages 07 and 08 that a path tracer runs through the framework
-// (earlier_stages.h): in the furnaces (a sphere light) and in the Cornell boxes (a quad light: two
-// triangles), for the diffuse BSDF, its samples and the light's samples.
-inline const std::vector<std::string> kFurnaceFunctions = {"lambertian_f", "area_pdf_to_solid_angle",
-                                                           "sample_cosine_hemisphere", "cosine_hemisphere_pdf",
-                                                           "sample_uniform_sphere", "uniform_sphere_pdf"};
-inline const std::vector<std::string> kCornellFunctions = {"lambertian_f", "area_pdf_to_solid_angle",
-                                                           "sample_cosine_hemisphere", "cosine_hemisphere_pdf",
-                                                           "sample_uniform_triangle", "uniform_triangle_pdf"};
-
 // The stage's statistical tests: 3 furnace t-tests, their 3 spread tests and the region z-tests
 // of both boxes.
 constexpr int kPathStatisticalTests = 3 + 3 + 2 * kRegionTestsPerScene;

@@ -1,6 +1,5 @@
 #include "support.h"
 
-#include "earlier_stages.h"
 
 #include "grading.h"
 
@@ -47,18 +46,6 @@ void throw_if_every_function_is_a_stub(const char* stage_id, std::initializer_li
     }
   }
   if (stubs == calls.size() && first) throw *first;
-}
-
-bool hint_failing_earlier_functions(const char* current, const std::vector<std::string>& functions) {
-  bool any = false;
-  for (const std::string& name : functions) {
-    const bool stage08 = name == "lambertian_f" || name == "area_pdf_to_solid_angle";
-    if (stage08 ? direct_light_function_passes(name) : sampling_function_passes(name)) continue;
-    add_hint({MessageId::earlier_function_fails,
-              {{"stage", stage08 ? "08_direct_light" : "07_sampling"}, {"function", name}, {"current", current}}});
-    any = true;
-  }
-  return any;
 }
 
 bool hint_if_not_finite(const std::string& what, std::initializer_list<float> results, const Message& advice) {

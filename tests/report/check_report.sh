@@ -4,7 +4,8 @@
 # own), dumps the page's DOM after loading and takes a screenshot of the whole page, and has
 # CHECKER (check_report.cpp) check both against results.json.
 # Usage: [REMOVE_PICTURE=FILE] [STAGE_SERVER=PATH] check_report.sh GRADER CHECKER WORK LANG [CHECKER_OPTIONS...]
-# (STAGE_SERVER: the stage server GRADER grades, --stage-server; by default its own)
+# (STAGE_SERVER: the stage server GRADER grades, --stage-server; by default its own. STAGE_SERVERS_FOR:
+# "stage=path ...", each a --stage-server-for)
 set -euo pipefail
 grader=$1 checker=$2 work=$(realpath -m "$3") lang=$4
 shift 4
@@ -25,7 +26,10 @@ else
 fi
 rm -rf "$work"
 mkdir -p "$work"
-env -u LC_ALL -u LC_MESSAGES -u LANG -u LANGUAGE "$grader" ${STAGE_SERVER:+--stage-server "$STAGE_SERVER"} --lang "$lang" --output "$work/grading-output" \
+servers=()
+[ -z "${STAGE_SERVER:-}" ] || servers+=(--stage-server "$STAGE_SERVER")
+for stage_server in ${STAGE_SERVERS_FOR:-}; do servers+=(--stage-server-for "$stage_server"); done
+env -u LC_ALL -u LC_MESSAGES -u LANG -u LANGUAGE "$grader" ${servers[@]+"${servers[@]}"} --lang "$lang" --output "$work/grading-output" \
   --json "$work/results.json" --timeout 60 > "$work/grader.log" 2>&1 ||
   { cat "$work/grader.log"; echo "FAIL: the grader failed"; exit 1; }
 

@@ -1,7 +1,8 @@
 # Runs one grader and checks its results.json (see CMakeLists.txt here for the modes).
 cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
 # Variables: GRADER (the judge), SERVER (the stage server it grades: --stage-server; none for a
-# judge's own), MODE (full | zero | broken | contained | lost), EXPECT_STAGE, EXPECT_HINT (regexes joined by "&&", each of
+# judge's own), SERVERS_FOR ("stage=path;...": --stage-server-for, the stages graded with a
+# reference server; HONEST_SERVERS_FOR the same for HONEST), MODE (full | zero | broken | contained | lost), EXPECT_STAGE, EXPECT_HINT (regexes joined by "&&", each of
 # which must match), ALSO_AFFECTED
 # (optional regex of later tests that may lose points too), TIMEOUT, WORK, REFERENCE (the
 # reference data folder, which no grading may change), and for the hostile submissions:
@@ -76,6 +77,15 @@ if(SERVER)
   set(server_option --stage-server "${SERVER}")
   set(server "${SERVER}")
 endif()
+# The stages graded with the reference's stage servers (CMakeLists.txt: the submission's code is not
+# in them, or cannot change their stages' grades).
+foreach(stage_server IN LISTS SERVERS_FOR)
+  list(APPEND server_option --stage-server-for "${stage_server}")
+endforeach()
+set(honest_server_options "")
+foreach(stage_server IN LISTS HONEST_SERVERS_FOR)
+  list(APPEND honest_server_options --stage-server-for "${stage_server}")
+endforeach()
 execute_process(COMMAND "${GRADER}" ${server_option} ${stage_options} --json "${WORK}/results.json" --output "${WORK}/images" --timeout ${TIMEOUT} --lang en
                 RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE errors)
 message("${output}")
@@ -259,7 +269,7 @@ endif()
 if(HONEST)
   file(REMOVE_RECURSE "${WORK}/honest")
   file(MAKE_DIRECTORY "${WORK}/honest")
-  execute_process(COMMAND "${GRADER}" --stage-server "${HONEST}" ${stage_options} --json "${WORK}/honest/results.json" --output "${WORK}/honest/images" --timeout ${TIMEOUT}
+  execute_process(COMMAND "${GRADER}" --stage-server "${HONEST}" ${honest_server_options} ${stage_options} --json "${WORK}/honest/results.json" --output "${WORK}/honest/images" --timeout ${TIMEOUT}
                   RESULT_VARIABLE honest_status OUTPUT_QUIET ERROR_QUIET)
   file(READ "${WORK}/honest/results.json" honest_results)
   string(JSON honest_count LENGTH "${honest_results}" tests)

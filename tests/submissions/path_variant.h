@@ -25,6 +25,7 @@ struct PathVariant {
   bool emission_after_diffuse = false;    // true: emission counted twice
   bool emission_at_camera_hit = true;     // false: the light black when seen directly
   bool cosine = true;                     // false: the cosine missing from the bounce weight
+  bool f_is_albedo = false;               // true: a diffuse bounce weighed with f = the albedo (1 / pi missing)
   bool multiply_throughput = true;        // false: the throughput never multiplied by the bounce weight
   float next_ray_offset = 0.0f;           // > 0: the next ray starts this far off the surface along its
                                           // normal (GAMES101 assignment 7's EPSILON), not with spawn_ray
@@ -91,7 +92,7 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
     } else {
       const std::optional<BsdfSample> sample = bsdf_sample_f(bsdf, normal, wo, u_lobe, u);
       if (!sample) return radiance;
-      f = sample->f;
+      f = v.f_is_albedo && !sample->is_specular ? bsdf.albedo : sample->f;
       wi = sample->wi;
       pdf = v.pdf_from_bsdf_pdf ? bsdf_pdf(bsdf, normal, wo, wi) : sample->pdf;
       specular = sample->is_specular;

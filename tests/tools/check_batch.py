@@ -5,13 +5,14 @@
   no_compile   a box.cpp that is not C++                          "build failed", 0, the errors in build.log
   hostile      hostile_forges_results.cpp as its camera: forges results.json, overwrites the reference
                data, prints a fake score table                    exactly what "broken" scores
-and per student only the stage files are compiled and one stage server linked (the framework and
-the judge are built once), a symbolic link in a submission is not followed, and the gradebook
+and per student only the stage files are compiled and the judge's stage servers linked (the
+framework and the judge are built once), a symbolic link in a submission is not followed, and the gradebook
 (CSV and JSON) says all of it.
 Usage: check_batch.py SOURCE_DIR BUILD_DIR WORK_DIR"""
 import csv
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -108,11 +109,16 @@ if "error" not in read(os.path.join(out, "students", "no_compile", "build.log"))
 correct_log = read(os.path.join(out, "students", "correct", "build.log"))
 if "ignored notes.txt" not in correct_log or "ignored 01_camera_rays/secret.h (a symbolic link" not in correct_log:
     problems.append("correct's build.log does not say notes.txt and the link secret.h were ignored")
-# Per student: one compile per stage file and one link, nothing of the framework.
+# Per student: one compile per stage file and one link per stage server of the judge (its
+# autograder-stage-server and the -with-grader-... servers of the stages graded on the grader's own
+# versions of earlier stages), nothing of the framework.
+servers = [n for n in os.listdir(os.path.join(build, "bin")) if re.fullmatch(r"autograder-stage-server(-with-grader[-0-9a-z]*)?", n)]
 for name in ("correct", "broken", "hostile"):
     commands = [line for line in read(os.path.join(out, "students", name, "build.log")).splitlines() if line.startswith("$ ")]
-    if len(commands) != len(files) + 1 or any("framework/src" in c for c in commands):
-        problems.append(f"{name}: {len(commands)} build commands, expected {len(files)} stage files and 1 link")
+    linked = sorted(os.path.basename(c.split(" -o ")[-1].split()[0]) for c in commands if " -o " in c and c.split(" -o ")[-1].split()[0].find("/bin/") >= 0)
+    if len(commands) != len(files) + len(servers) or any("framework/src" in c for c in commands) or linked != sorted(servers):
+        problems.append(f"{name}: {len(commands)} build commands linking {linked}, expected {len(files)} stage files and "
+                        f"one link for each of {sorted(servers)}")
     for report in ("results.json", "grader.log", "output"):
         if not os.path.exists(os.path.join(out, "students", name, report)):
             problems.append(f"{name}: no {report}")
