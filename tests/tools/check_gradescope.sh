@@ -68,10 +68,13 @@ mkdir -p "$root/source" "$root/submission" "$root/results"
 export AUTOGRADER_ROOT=$root
 bash "$root/source/setup.sh" > "$work/setup.log" 2>&1 || { tail -20 "$work/setup.log"; echo "FAIL: setup.sh"; exit 1; }
 kit=$root/source/raylab
-[ ! -e "$kit/solutions" ] && [ ! -e "$kit/autograder/course-seed" ] || echo "FAIL: solutions/ or the seed is still in the kit after setup.sh"
 stage_files=$("$kit/build/bin/autograder" --list-files)
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+[ ! -e "$kit/solutions" ] && [ ! -e "$kit/autograder/course-seed" ] || fail "solutions/ or the seed is still in the kit after setup.sh"
+# Nothing compiled from solutions/ is left in the build either (its objects are the answers too).
+compiled=$(find "$kit/build" -path '*/solutions/*' | head -3)
+[ -z "$compiled" ] || fail "setup.sh left objects of solutions/ in the kit's build: $compiled"
 
 # grade NAME: runs run_autograder on what is in $root/submission, within the limits above; prints
 # the total. Its time (wall, and CPU on its one core) and peak memory go to $work/limits.txt.

@@ -21,7 +21,7 @@ cmake --build build --target autograder-regenerate
 rm -rf "$private"
 mkdir -m 700 "$private"
 build/bin/autograder-regenerate --seed "$(cat autograder/course-seed)" --output "$private/cases" >/dev/null
-rm -rf solutions autograder/course-seed build/bin/autograder-regenerate build/CMakeFiles/raylab_stages_reference.dir
+rm -rf solutions autograder/course-seed build/bin/autograder-regenerate build/CMakeFiles/raylab_stages_reference*.dir
 cmake -S . -B build >/dev/null  # the student variant now
 cmake --build build --target autograder autograder-stage-server
 rm -rf assignments.stubs && cp -a assignments assignments.stubs  # run_autograder starts from these
