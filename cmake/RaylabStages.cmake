@@ -297,8 +297,8 @@ function(raylab_add_stage_library name root)
   target_link_libraries(${name} INTERFACE raylab_framework)
 endfunction()
 
-# raylab_stage_objects(OUT NAME [SUFFIX]): the per-file OBJECT libraries of the stage library NAME
-# (raylab_add_stage_library, or a list of them), each file's from the first library in the list
+# raylab_stage_objects(OUT LIBRARIES [SUFFIX]): the per-file OBJECT libraries of the stage library
+# LIBRARIES (raylab_add_stage_library, or a list of them), each file's from the first library in the list
 # that has it (so "stages_x;raylab_stages_reference" is file x's submission on the reference);
 # with SUFFIX (one of RAYLAB_SERVER_SUFFIXES), the grader's own versions of the files it names.
 function(raylab_stage_objects out libraries)

@@ -192,7 +192,7 @@ class Recorder : public ::testing::EmptyTestEventListener {
         described = {"what", worded};
         if (worded.id == MessageId::stage_not_implemented) {
           // A stub: of this test's stage, the sentence that says what to write; of an earlier stage
-          // that the test runs (stage 07's warps under stage 08's estimator), the test is blocked
+          // that the test runs (stage 04's box test under stage 05's traversal), the test is blocked
           // by it until it is written.
           const std::string stub_stage = argument_text(worded, "stage");
           if (stub_stage == stage_id_ || stage_id_.empty()) {

@@ -116,8 +116,8 @@ struct TestRecord {
   std::vector<Message> hints;
   std::vector<Message> notes;
   std::vector<ImageComparison> images;
-  // The stub was an earlier stage's ("07_sampling"), which the test runs (stage 08's estimator
-  // samples lights with stage 07's warps), and the function it ran into: the test is blocked by
+  // The stub was an earlier stage's ("04_box"), which the test runs (stage 05's traversal calls
+  // stage 04's box test: stages.json "needs"), and the function it ran into: the test is blocked by
   // that stage, not failed by its own ("" when the stub, if any, is the test's own stage's).
   std::string blocked_by, blocked_function;
 };
