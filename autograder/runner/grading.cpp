@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <set>
 #include <stdexcept>
 
 namespace raylab::grading {
@@ -40,9 +39,6 @@ std::vector<StageInfo>& stage_registry() {
       stage.title_text = title_text;
       stage.points = description.points;
       stage.server_suffix = std::string(description.server_suffix);
-      for (std::string_view needed : description.needs)
-        for (const StageInfo& earlier : rows)
-          if (earlier.id == needed) stage.depends_on.push_back(earlier.number);
       rows.push_back(stage);
     }
     return rows;
@@ -81,10 +77,6 @@ std::string& output_directory_storage() {
 std::string& reference_directory_storage() {
   static std::string directory = RAYLAB_REFERENCE_DIR;
   return directory;
-}
-std::set<int>& incomplete_dependencies() {
-  static std::set<int> stages;
-  return stages;
 }
 
 // A value that is not a number reads as what it is in every failure text, hint and note of
@@ -192,8 +184,8 @@ class Recorder : public ::testing::EmptyTestEventListener {
         described = {"what", worded};
         if (worded.id == MessageId::stage_not_implemented) {
           // A stub: of this test's stage, the sentence that says what to write; of an earlier stage
-          // that the test runs (stage 04's box test under stage 05's traversal), the test is blocked
-          // by it until it is written.
+          // whose function the test runs (stage 06 grades the rounding of stage 02's sphere and
+          // stage 04's box test), the test is blocked by it until it is written.
           const std::string stub_stage = argument_text(worded, "stage");
           if (stub_stage == stage_id_ || stage_id_.empty()) {
             messages_.push_back(readable(worded));
@@ -343,22 +335,6 @@ void install_recorder(std::function<void(const std::string&)> on_test_start,
                       std::function<void(const TestRecord&)> on_test_end) {
   ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
   listeners.Append(new Recorder(std::move(on_test_start), std::move(on_test_end)));
-}
-
-void set_incomplete_dependencies(const std::vector<int>& stage_numbers) {
-  incomplete_dependencies() = std::set<int>(stage_numbers.begin(), stage_numbers.end());
-}
-
-bool dependency_incomplete(int stage_number) { return incomplete_dependencies().count(stage_number) > 0; }
-
-void hint_about_dependencies(const std::string& stage_id) {
-  const StageInfo* stage = find_stage(std::string_view(stage_id));
-  if (!stage) return;
-  for (int earlier : stage->depends_on)
-    if (dependency_incomplete(earlier)) {
-      const StageInfo* dependency = find_stage(earlier);
-      add_hint({MessageId::dependency_incomplete, {{"stage", dependency ? dependency->id : std::to_string(earlier)}}});
-    }
 }
 
 }  // namespace raylab::grading

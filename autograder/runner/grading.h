@@ -33,7 +33,6 @@ struct StageInfo {
   std::string handout_file_zh;   // "docs/zh/05_bvh.md", its Chinese twin
   Message title_text{MessageId::verbatim};    // the title in either language ("附加题：分桶 SAH 构建")
   Message handout_text{MessageId::verbatim};  // the handout in either language ("docs/zh/05_bvh.md，第 5 节")
-  std::vector<int> depends_on;   // "needs": the stages its image test renders with
   std::string server_suffix;     // its stage server is the default one's path + this (before
                                  // ".exe"): "-with-grader-07-08" ("grader_versions"), or ""
   int points = 0;                // what stages.json says its tests add up to
@@ -116,21 +115,15 @@ struct TestRecord {
   std::vector<Message> hints;
   std::vector<Message> notes;
   std::vector<ImageComparison> images;
-  // The stub was an earlier stage's ("04_box"), which the test runs (stage 05's traversal calls
-  // stage 04's box test: stages.json "needs"), and the function it ran into: the test is blocked by
-  // that stage, not failed by its own ("" when the stub, if any, is the test's own stage's).
+  // The stub was an earlier stage's ("04_box"), whose function the test runs (stage 06 grades the
+  // rounding of stage 04's box test), and the function it ran into: the test is blocked by that
+  // stage, not failed by its own ("" when the stub, if any, is the test's own stage's).
   std::string blocked_by, blocked_function;
 };
 // The judge: calls on_test_start before each test and on_test_end after it.
 void install_recorder(std::function<void(const std::string&)> on_test_start,
                       std::function<void(const TestRecord&)> on_test_end);
 
-// The verdict of a stage's earlier stages, set by the judge before the stage's tests, so that an
-// image test can say "this picture uses your stage 1, which is not complete".
-void set_incomplete_dependencies(const std::vector<int>& stage_numbers);
-bool dependency_incomplete(int stage_number);
-// For an image test: hint naming earlier stages that are incomplete, if any.
-void hint_about_dependencies(const std::string& stage_id);
 
 }  // namespace raylab::grading
 

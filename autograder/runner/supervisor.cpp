@@ -17,7 +17,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <optional>
 
 namespace raylab::grading {
@@ -160,15 +159,9 @@ int run_supervisor(const SupervisorOptions& options) {
   delete listeners.Release(listeners.default_result_printer());
 
   std::vector<StageResult> results;
-  std::map<int, bool> complete;  // stage number -> full marks
   for (const StageInfo* stage : selected) {
-    std::vector<int> incomplete;
-    for (int dependency : stage->depends_on)
-      if (complete.count(dependency) && !complete[dependency]) incomplete.push_back(dependency);
-    set_incomplete_dependencies(incomplete);
     std::fprintf(stderr, "%s\n", render({MessageId::console_grading_stage, {{"stage", stage->id}}}).c_str());
     results.push_back(grade_stage(*stage, server_for(options, *stage)));
-    complete[stage->number] = results.back().earned() == results.back().max();
   }
 
   std::fflush(stderr);

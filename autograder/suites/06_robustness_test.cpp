@@ -25,6 +25,7 @@
 #include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/04_box.h"
 #include "raylab/testkit/leaks.h"
+#include "raylab/testkit/oracles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,9 +75,31 @@ Ray make_ray(glm::vec3 origin, glm::vec3 direction) {
   return ray;
 }
 
+// Whether a sphere answer is the exact one for its float inputs, to kSphereRelativeTolerance;
+// `error` (out) is its relative error when both are hits.
+bool sphere_answer_right(const std::optional<float>& got, const std::optional<long double>& exact, double* error = nullptr) {
+  if (got.has_value() != exact.has_value()) return false;
+  if (!got) return true;
+  const double relative = std::fabs(double(*got) - double(*exact)) / std::fabs(double(*exact));
+  if (error) *error = std::isfinite(relative) ? relative : 1e30;
+  return relative <= kSphereRelativeTolerance;
+}
+
+// The well-conditioned twin of a case: the same sphere and the same direction vector, the ray's
+// line at the same distance from the centre (so the same hit or miss), but started 3 radii before
+// the centre instead of far away or on the surface. Stage 02's contract decides it without any
+// rounding trouble, so a wrong answer there is a mistake stage 02 grades, not a lack of precision;
+// such cases are not judged here (a mistake costs points at its own stage only).
+Ray well_conditioned_twin(const Ray& ray, const glm::vec3& center, float radius) {
+  const glm::dvec3 direction = glm::normalize(glm::dvec3(ray.direction));
+  const glm::dvec3 from_center = glm::dvec3(ray.origin) - glm::dvec3(center);
+  const glm::dvec3 across = from_center - glm::dot(from_center, direction) * direction;
+  return make_ray(glm::vec3(glm::dvec3(center) + across - 3.0 * double(radius) * direction), ray.direction);
+}
+
 void check_sphere_cases(const std::string& kind) {
   const nlohmann::json data = load_reference_cases("06_robustness");
-  int checked = 0, failures = 0;
+  int checked = 0, failures = 0, not_judged = 0, hits_judged = 0;
   double worst = 0.0;
   for (const nlohmann::json& c : data.at("cases")) {
     if (c.at("kind") != kind) continue;
@@ -86,13 +109,20 @@ void check_sphere_cases(const std::string& kind) {
     const float radius = c.at("radius").get<float>();
     const bool expected_hit = !c.at("t_exact").is_null();
     const double expected_t = expected_hit ? c.at("t_exact").get<double>() : 0.0;
-    const std::optional<float> got = intersect_ray_sphere(ray, center, radius);
-    bool ok = got.has_value() == expected_hit;
-    if (ok && got) {
-      const double error = std::fabs(double(*got) - expected_t) / std::fabs(expected_t);
-      worst = std::max(worst, std::isfinite(error) ? error : 1e30);
-      ok = error <= kSphereRelativeTolerance;
+    // The twin first: judged only where it is right (a near-tangent twin, which a correct float
+    // kernel may decide either way, judges nothing either).
+    const Ray twin = well_conditioned_twin(ray, center, radius);
+    long double twin_margin = 0;
+    const std::optional<long double> twin_exact = testkit::exact_sphere_hit(twin, center, radius, &twin_margin);
+    if (twin_margin < 1e-3L || !sphere_answer_right(intersect_ray_sphere(twin, center, radius), twin_exact)) {
+      ++not_judged;
+      continue;
     }
+    hits_judged += expected_hit;
+    const std::optional<float> got = intersect_ray_sphere(ray, center, radius);
+    double error = 0.0;
+    const bool ok = sphere_answer_right(got, expected_hit ? std::optional<long double>(expected_t) : std::nullopt, &error);
+    worst = std::max(worst, error);
     if (ok) continue;
     if (++failures <= 3) {
       const Message expected = expected_hit ? Message(MessageId::value_t, {{"t", std::to_string(expected_t)}})
@@ -106,10 +136,19 @@ void check_sphere_cases(const std::string& kind) {
   if (failures > 0) add_hint(kCancellationHint);
   char worst_text[32];
   std::snprintf(worst_text, sizeof worst_text, "%.2e", worst);
-  add_note({MessageId::note_sphere_error, {{"kind", kind}, {"worst", worst_text}, {"count", std::to_string(checked)}}});
+  add_note({MessageId::note_sphere_error,
+            {{"kind", kind}, {"worst", worst_text}, {"count", std::to_string(checked - not_judged)}}});
+  if (not_judged > 0)
+    add_note({MessageId::note_sphere_not_judged, {{"count", std::to_string(not_judged)}, {"of", std::to_string(checked)}}});
+  // A sphere that finds no hit of the well-conditioned twins leaves nothing to judge here, and
+  // earns nothing, as a stub does (docs/instructors.md, "Each stage graded on its own").
+  if (hits_judged == 0) {
+    add_failure({MessageId::robust_failure_sphere_nothing_judged, {{"kind", kind}}});
+    return;
+  }
   EXPECT_EQ(failures, 0)
       << failure_text({MessageId::robust_failure_spheres_wrong,
-                 {{"failures", std::to_string(failures)}, {"count", std::to_string(checked)}, {"kind", kind},
+                 {{"failures", std::to_string(failures)}, {"count", std::to_string(checked - not_judged)}, {"kind", kind},
                   {"seed", seed_shown(data)}}});
 }
 
@@ -347,17 +386,40 @@ GRADED_TEST(kStage, Stage06Robustness, BoxTestKeepsBoxesTheRayTouches, 3) {
     if (!(t_exit >= t_enter - 1e-12L * std::max(1.0L, std::fabs(t_enter)))) continue;  // a true miss: not graded here
     touching.emplace_back(ray, ray_direction_inverse_of(ray), box);
   }
+  // Each ray's well-conditioned twin: the same ray and a box grown by a tenth of its size on every
+  // side, through whose inside the ray passes (the edge point is well inside it), so that stage
+  // 04's contract decides it without any rounding trouble. A ray whose twin your box test misses
+  // shows a mistake that stage 04 grades (a missing swap, say), not a lack of precision: it is not
+  // judged here (a mistake costs points at its own stage only).
+  std::vector<BoxTestArguments> twins = touching;
+  for (BoxTestArguments& twin : twins) {
+    Bounds3& box = std::get<2>(twin);
+    const glm::vec3 margin = glm::max(0.1f * (box.max - box.min), glm::vec3(0.01f));
+    box = Bounds3{box.min - margin, box.max + margin};
+  }
+  const std::vector<std::optional<float>> twin_hits = intersect_ray_box_each(twins);
   const std::vector<std::optional<float>> hits = intersect_ray_box_each(touching);
-  int lost = 0;
+  int lost = 0, judged = 0;
   std::size_t first = 0;
-  for (std::size_t r = 0; r < hits.size(); ++r)
+  for (std::size_t r = 0; r < hits.size(); ++r) {
+    if (!twin_hits[r]) continue;
+    ++judged;
     if (!hits[r] && ++lost == 1) first = r;
+  }
   const int boxes = static_cast<int>(touching.size());
-  add_note({MessageId::note_box_edge, {{"lost", std::to_string(lost)}, {"boxes", std::to_string(boxes)}}});
+  add_note({MessageId::note_box_edge, {{"lost", std::to_string(lost)}, {"boxes", std::to_string(judged)}}});
+  if (judged < boxes)
+    add_note({MessageId::note_box_not_judged, {{"count", std::to_string(boxes - judged)}, {"of", std::to_string(boxes)}}});
+  // A box test that keeps none of the twins leaves nothing to judge here, and earns nothing, as a
+  // stub does (docs/instructors.md, "Each stage graded on its own").
+  if (judged == 0) {
+    add_failure(MessageId::robust_failure_box_nothing_judged);
+    return;
+  }
   if (lost > 0) {
     add_hint(MessageId::robust_box_edge);
     add_failure({MessageId::robust_failure_box_edge,
-                 {{"lost", gtest_text(lost)}, {"rays", gtest_text(boxes)}, {"ray", ray_text(std::get<0>(touching[first]))},
+                 {{"lost", gtest_text(lost)}, {"rays", gtest_text(judged)}, {"ray", ray_text(std::get<0>(touching[first]))},
                   {"box", box_text(std::get<2>(touching[first]))}}});
   }
 }

@@ -68,7 +68,8 @@ Bvh grader_median_tree(const std::vector<Bounds3>& primitive_bounds, int max_lea
 // The student's intersect_bvh on `rays` (closest hit).
 TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays);
 // The grader's own traversal (the reference's algorithm: near child first, boxes tested with
-// t_max lowered to the closest hit so far) with YOUR box test (stage 04) on the same tree and rays.
+// t_max lowered to the closest hit so far) with the stage server's box test (the one your
+// intersect_bvh calls: the grader's own at stage 05) on the same tree and rays.
 TraversalWork reference_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays);
 
 // Index arithmetic on a student's tree without wrap-around: whether nodes[first_index] and
@@ -81,9 +82,9 @@ inline bool children_in_range(const Bvh& bvh, const BvhNode& node) {
 // Returns the number of rays that differ.
 int compare_with_brute_force(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
                              const Message& what);
-// The same for any traversal's answers, one per ray. `boxes_on_the_way`, if given, is the binary
-// tree whose box tests (your stage 04) are checked when a hit is lost, to tell whose code lost it.
-int compare_traversal_with_brute_force(const std::vector<std::optional<BvhHit>>& answers, const Bvh* boxes_on_the_way,
+// The same for any traversal's answers, one per ray. With graders_box_test, the traversal ran
+// the grader's own box test, so a hit it loses is the traversal's doing (the hint says so).
+int compare_traversal_with_brute_force(const std::vector<std::optional<BvhHit>>& answers, bool graders_box_test,
                                        const TestMesh& mesh, const std::vector<Ray>& rays, bool any_hit,
                                        const Message& what);
 

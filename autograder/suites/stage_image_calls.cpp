@@ -60,11 +60,10 @@ Image render_stage_image(const std::string& stage_id) {
     return image;
   }
   if (stage->image_shows == "spheres") scene.meshes.clear();
-  // The picture runs this stage's own functions and, of the earlier stages, only what the grader
-  // has no version of: its own camera rays, sphere and triangle tests (grader_geometry.h) stand in
-  // for those of stages 01-03 but the stage graded, and only stage 05's picture goes through the
-  // trees (which run stage 04's box test). So a mistake costs its own stage's picture only
-  // (stages.json: "needs" lists what is left: 05_bvh needs 04_box).
+  // The picture runs this stage's own functions and the grader's for the rest: its own camera
+  // rays, sphere and triangle tests (grader_geometry.h) stand in for those of stages 01-03 but the
+  // stage graded, and only stage 05's picture goes through the trees, whose box test is then the
+  // grader's own (stages.json: "grader_versions"). So a mistake costs its own stage's picture only.
   const auto has_function = [&](std::string_view function) {
     return std::find(stage->functions.begin(), stage->functions.end(), function) != stage->functions.end();
   };

@@ -1,4 +1,5 @@
 // Grader self-test submission (stage 04_box): mistake: no clipping to t_min, so boxes behind the ray count
+#include "raylab/math.h"
 #include "raylab/stages/04_box.h"
 
 #include <algorithm>
@@ -13,6 +14,7 @@ std::optional<float> intersect_ray_box(const Ray& ray, const glm::vec3& ray_dire
     float t1 = (box.max[axis] - ray.origin[axis]) * ray_direction_inverse[axis];
     if (t0 > t1) std::swap(t0, t1);
     if (t0 > t_enter) t_enter = t0;
+    t1 *= 1.0f + 2.0f * gamma_bound(3);  // Ize's conservative exit (docs/04_box.md, section 4)
     if (t1 < t_exit) t_exit = t1;
   }
   if (t_enter <= t_exit) return t_enter;

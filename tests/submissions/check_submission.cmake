@@ -48,8 +48,7 @@ function(count_shared_memory_segments out)
 endfunction()
 count_shared_memory_segments(segments_before)
 set(server_option "")
-# The stage table (stages.json): which stages each stage's image test renders with (needs_of_ID,
-# for the checks below), and with FROM_EXPECT_STAGE the stages to grade: EXPECT_STAGE and the
+# The stage table (stages.json): with FROM_EXPECT_STAGE, the stages to grade: EXPECT_STAGE and the
 # ones after it. Whether the earlier stages keep full marks is then checked once per stage file,
 # by its first broken self-test, which grades every stage (CMakeLists.txt here): a mistake in a
 # stage function can reach an earlier stage only through a call of that function from it.
@@ -61,15 +60,6 @@ foreach(i RANGE ${last_stage})
   string(JSON id GET "${stage_table}" stages ${i} id)
   if(FROM_EXPECT_STAGE AND NOT id STRLESS EXPECT_STAGE)
     list(APPEND stage_options --stage ${id})
-  endif()
-  string(JSON need_count LENGTH "${stage_table}" stages ${i} needs)
-  set(needs_of_${id} "")
-  if(need_count GREATER 0)
-    math(EXPR last_need "${need_count} - 1")
-    foreach(j RANGE ${last_need})
-      string(JSON needed GET "${stage_table}" stages ${i} needs ${j})
-      list(APPEND needs_of_${id} "${needed}")
-    endforeach()
   endif()
 endforeach()
 set(server "${GRADER}-stage-server")
@@ -180,10 +170,10 @@ foreach(i RANGE ${last})
   endif()
   math(EXPR earned_${stage} "${earned_${stage}} + ${score}")
   math(EXPR max_${stage} "${max_${stage}} + ${max_score}")
-  # A stage after the broken one may lose its image test if it renders with the broken stage
-  # (stages.json: "needs"), nothing else.
+  # A stage after the broken one loses nothing (it is graded with the grader's own versions of
+  # the stages it builds on), but for ALSO_AFFECTED.
   set(expected_loss FALSE)
-  if((name MATCHES "Image" AND EXPECT_STAGE IN_LIST needs_of_${stage}) OR (ALSO_AFFECTED AND name MATCHES "${ALSO_AFFECTED}"))
+  if(ALSO_AFFECTED AND name MATCHES "${ALSO_AFFECTED}")
     set(expected_loss TRUE)
   endif()
   if((MODE STREQUAL "broken" OR MODE STREQUAL "contained") AND stage STRGREATER EXPECT_STAGE AND NOT expected_loss

@@ -1,7 +1,8 @@
-// Hostile: the reference box test, plus a static initialiser that calls exit(0) when the
+// Hostile: the reference triangle test, plus a static initialiser that calls exit(0) when the
 // program starts: no stage function ever answers, so every stage scores 0, each with the
-// reason "exited (status 0)", and the grader itself finishes normally.
-#include "../../solutions/04_box/box.cpp"
+// reason "exited (status 0)", and the grader itself finishes normally. (A triangle file: every
+// stage server links it, as none grades with the grader's own triangle test.)
+#include "../../solutions/03_triangle/triangle.cpp"
 
 #include <cstdlib>
 

@@ -1,20 +1,16 @@
 // Grader self-test submission (stage 02_sphere): mistake: a = 1 assumed
-#include "raylab/stages/02_sphere.h"
+#include "sphere_variant.h"
 
-#include <cmath>
+#include "raylab/stages/02_sphere.h"
 
 namespace raylab {
 
 std::optional<float> intersect_ray_sphere(const Ray& ray, const glm::vec3& sphere_center, float sphere_radius) {
-  const glm::vec3 oc = ray.origin - sphere_center;
-  const float b = 2.0f * glm::dot(oc, ray.direction);
-  const float c = glm::dot(oc, oc) - sphere_radius * sphere_radius;
-  const float discriminant = b * b - 4.0f * c;
-  if (discriminant < 0.0f) return std::nullopt;
-  const float t_near = (-b - std::sqrt(discriminant)) / 2.0f;
-  const float t_far = (-b + std::sqrt(discriminant)) / 2.0f;
-  if (t_near > ray.t_min && t_near < ray.t_max) return t_near;
-  if (t_far > ray.t_min && t_far < ray.t_max) return t_far;
+  const submission::SphereRoots roots =
+      submission::robust_sphere_roots(ray, sphere_center, sphere_radius, /*unit_direction=*/true);
+  if (roots.discriminant < 0.0f) return std::nullopt;
+  if (roots.t_near > ray.t_min && roots.t_near < ray.t_max) return roots.t_near;
+  if (roots.t_far > ray.t_min && roots.t_far < ray.t_max) return roots.t_far;
   return std::nullopt;
 }
 

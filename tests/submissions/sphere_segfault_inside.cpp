@@ -1,25 +1,19 @@
 // Grader self-test submission (stage 02_sphere): crashes (null pointer write) whenever the origin is inside the sphere
-#include "raylab/stages/02_sphere.h"
+#include "sphere_variant.h"
 
-#include <cmath>
+#include "raylab/stages/02_sphere.h"
 
 namespace raylab {
 
 std::optional<float> intersect_ray_sphere(const Ray& ray, const glm::vec3& sphere_center, float sphere_radius) {
-  const glm::vec3 oc = ray.origin - sphere_center;
-  const float a = glm::dot(ray.direction, ray.direction);
-  const float b = 2.0f * glm::dot(oc, ray.direction);
-  const float c = glm::dot(oc, oc) - sphere_radius * sphere_radius;
-  const float discriminant = b * b - 4.0f * a * c;
-  if (discriminant < 0.0f) return std::nullopt;
-  const float t_near = (-b - std::sqrt(discriminant)) / (2.0f * a);
-  const float t_far = (-b + std::sqrt(discriminant)) / (2.0f * a);
-  if (t_near < 0.0f && t_far > 0.0f) {
+  const submission::SphereRoots roots = submission::robust_sphere_roots(ray, sphere_center, sphere_radius);
+  if (roots.discriminant < 0.0f) return std::nullopt;
+  if (roots.t_near < 0.0f && roots.t_far > 0.0f) {
     volatile int* nowhere = nullptr;
     *nowhere = 1;  // the deliberate crash
   }
-  if (t_near > ray.t_min && t_near < ray.t_max) return t_near;
-  if (t_far > ray.t_min && t_far < ray.t_max) return t_far;
+  if (roots.t_near > ray.t_min && roots.t_near < ray.t_max) return roots.t_near;
+  if (roots.t_far > ray.t_min && roots.t_far < ray.t_max) return roots.t_far;
   return std::nullopt;
 }
 

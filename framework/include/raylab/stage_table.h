@@ -21,7 +21,6 @@ struct StageDescription {
   std::string_view image_scene;              // the scene of its image test, or empty: none
   std::string_view image_shows;              // what that picture shows: "ray_directions",
                                              // "spheres" or "everything"
-  std::vector<std::string_view> needs;       // the stages its image test renders with
   std::string_view server_suffix;            // "-with-grader-07-08": its stage server links the
                                              // grader's own stages 07 and 08 ("grader_versions"),
                                              // or empty: the one that links every stage's code
