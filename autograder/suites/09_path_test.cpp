@@ -4,7 +4,7 @@
 // path_render) and returns each pixel's mean and variance of the mean; the judge decides.
 //   Furnaces (scenes/furnace.json, a sphere seen from inside, emitting 1 with albedo a): every
 //   pixel's expectation is known exactly, sum over the vertices a path reaches of a^k (see
-//   furnace_model). A t-test of the pixel means against it (forgiving 0.1%: kFurnaceTolerance),
+//   path_models.h). A t-test of the pixel means against it (forgiving 0.1%: kFurnaceTolerance),
 //   at three (albedo, roulette probability, max depth). When a test fails, models of the common
 //   mistakes (roulette not divided by p, emission counted twice, the light black when seen
 //   directly, the cosine or 1 / pi missing, no direct light at all: a shadow ray that hits the
@@ -28,6 +28,7 @@
 // autograder-path-false-failures (autograder/tools/path_false_failures.cpp) measures it over
 // many seeds.
 #include "grading.h"
+#include "path_models.h"
 #include "path_support.h"
 #include "support.h"
 
@@ -50,7 +51,6 @@ namespace raylab::grading {
 namespace {
 
 constexpr const char* kStage = "09_path";
-constexpr double kPiD = 3.14159265358979323846;
 const double kLevel = path_test_level();
 
 // Not attempted when path_radiance is the stub (it runs on the grader's own stages 07 and 08,
@@ -63,62 +63,6 @@ const bool kRegistered = register_stage(kStage, [] {
 
 // ---- Furnaces ------------------------------------------------------------------------------
 
-// What a path tracer that makes a mistake computes in a furnace of emission 1: the camera's
-// hit counts `first_emission`, every vertex k = 0..max_depth + depth_offset (reached with weight r^k) adds its
-// direct light d, and vertices after the first add `later_emission` each.
-struct Model {
-  std::function<double(const Furnace&)> bounce_weight;  // r
-  double direct_factor = 1.0;                            // d = direct_factor * a
-  double first_emission = 1.0, later_emission = 0.0;
-  int depth_offset = 0;  // -1: the vertex at depth == max_depth left out
-};
-// A common mistake, as what it changes in the correct model (so that two mistakes made together
-// are the two changes, in the order of the list).
-struct Mistake {
-  MessageId hint;
-  std::function<void(Model&)> change;
-  // Mistakes whose weights explode: the cosine missing weighs a bounce by a / cos(theta), of
-  // infinite variance; 1 / pi missing by pi a > 1. Their furnaces with roulette (weights divided
-  // by p again and again) are left out, and a mean within 10% of the model (or 4 standard errors)
-  // fits.
-  bool wild_weights = false;
-};
-double furnace_value(const Model& model, const Furnace& f) {
-  const double r = model.bounce_weight(f), d = model.direct_factor * f.albedo;
-  double sum = model.first_emission, reach = 1.0;
-  for (int k = 0; k <= f.max_depth + model.depth_offset; ++k) {
-    sum += reach * d + (k > 0 ? reach * model.later_emission : 0.0);
-    reach *= r;
-  }
-  return sum;
-}
-const Model kCorrect{[](const Furnace& f) { return f.albedo; }};
-// The bounce weight times `factor(f)`.
-std::function<void(Model&)> bounce_weight_times(std::function<double(const Furnace&)> factor) {
-  return [factor](Model& m) {
-    m.bounce_weight = [inner = m.bounce_weight, factor](const Furnace& f) { return inner(f) * factor(f); };
-  };
-}
-const std::vector<Mistake>& mistakes() {
-  static const std::vector<Mistake> models = {
-      // The throughput never multiplied: every vertex is reached with weight 1 (roulette divides by
-      // the p it survived). First: the other changes of the bounce weight apply to this one.
-      {MessageId::path_throughput_not_multiplied, [](Model& m) { m.bounce_weight = [](const Furnace&) { return 1.0; }; }},
-      {MessageId::path_roulette_not_divided, bounce_weight_times([](const Furnace& f) { return f.roulette; })},
-      {MessageId::path_emission_twice, [](Model& m) { m.later_emission = 1.0; }},
-      {MessageId::path_light_black, [](Model& m) { m.first_emission = 0.0; }},
-      {MessageId::path_one_surface_short, [](Model& m) { m.depth_offset = -1; }},
-      // No direct light at any vertex (a shadow ray that hits the light itself is always blocked):
-      // every pixel is the emission the camera sees, exactly 1.
-      {MessageId::path_no_direct_light, [](Model& m) { m.direct_factor = 0.0; }},
-      {MessageId::path_missing_cosine, bounce_weight_times([](const Furnace&) { return 2.0; }), true},
-      // The bounce weighed with f = albedo rather than the BSDF's albedo / pi (the direct light,
-      // stage 08's estimator, stays right).
-      {MessageId::path_missing_inverse_pi, bounce_weight_times([](const Furnace&) { return kPiD; }), true},
-  };
-  return models;
-}
-
 const FurnaceRender& furnace_render(int index) {
   static std::map<std::pair<int, std::uint64_t>, FurnaceRender> cache;  // by (furnace, seed)
   const std::uint64_t seed = test_seed(100 + static_cast<std::uint64_t>(index));
@@ -127,21 +71,18 @@ const FurnaceRender& furnace_render(int index) {
   return cache.emplace(std::make_pair(index, seed), render_furnace(index, seed, false)).first->second;
 }
 
-bool fits(const Model& model, int index) {
+bool fits(const PathModel& model, int index) {
   const FurnaceRender& render = furnace_render(index);
   if (render.not_finite || render.pixel_means.size() < 2) return false;
   return furnace_mean_test(render.pixel_means, furnace_value(model, kFurnaces[index]), kLevel).passed;
 }
 
 // Whether the furnaces fit the correct model changed by `made` (one mistake, or two together).
-bool fits(const std::vector<const Mistake*>& made) {
-  Model model = kCorrect;
+bool fits(const std::vector<const PathMistake*>& made) {
+  const PathModel model = path_model_with(made);
   bool wild = false;
-  for (const Mistake* mistake : made) {
-    mistake->change(model);
-    wild = wild || mistake->wild_weights;
-  }
-  for (int i = 0; i < 3; ++i) {
+  for (const PathMistake* mistake : made) wild = wild || mistake->wild_weights;
+  for (int i = 0; i < kFurnaceCount; ++i) {
     if (!wild) {
       if (!fits(model, i)) return false;
       continue;
@@ -161,30 +102,28 @@ bool fits(const std::vector<const Mistake*>& made) {
 bool furnace_right(int index) {
   const FurnaceRender& render = furnace_render(index);
   if (render.not_finite || render.pixel_means.size() < 2) return false;
-  const double exact = furnace_value(kCorrect, kFurnaces[index]);
+  const double exact = furnace_value(correct_path_model(), kFurnaces[index]);
   return furnace_exact_test(render.pixel_means, kFurnaces[index], exact, kLevel).passed &&
          furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel).passed;
 }
 
 // The hints of a failing test: the fitted models of the furnaces that fit; true when any does.
-// A mistake of wild weights is fitted on fewer furnaces and more loosely (Mistake), so it is named
-// only when no mistake of finite variance fits: the missing cosine's 2 a is the never-multiplied
-// throughput's 1 at albedo 0.5, which only the low-albedo furnace (with roulette) tells apart.
-// When no single mistake fits, two made together: named (both) when exactly one pair fits, tame
-// pairs before pairs with wild weights (two pairs that fit alike cannot be told apart).
+// Tame models (finite variance: a t-test of every furnace) before wild ones (fitted on fewer
+// furnaces and more loosely: PathMistake), and within each, one mistake before two made together:
+// a pair is named (both) when no single mistake fits and exactly one pair does (two pairs that fit
+// alike cannot be told apart). So an exact fit of two tame mistakes is not mistaken for a loose fit
+// of one wild one.
 bool hint_mistakes() {
-  bool tame_fits = false, any = false;
-  for (const bool wild : {false, true})
-    for (const Mistake& mistake : mistakes())
-      if (mistake.wild_weights == wild && !(wild && tame_fits) && fits({&mistake})) {
+  const std::vector<PathMistake>& all = path_mistakes();
+  for (const bool wild : {false, true}) {
+    bool any = false;
+    for (const PathMistake& mistake : all)
+      if (mistake.wild_weights == wild && fits({&mistake})) {
         add_hint({mistake.hint, {}});
-        tame_fits = tame_fits || !wild;
         any = true;
       }
-  if (any) return true;
-  const std::vector<Mistake>& all = mistakes();
-  for (const bool wild : {false, true}) {
-    std::vector<std::pair<const Mistake*, const Mistake*>> fitting;
+    if (any) return true;
+    std::vector<std::pair<const PathMistake*, const PathMistake*>> fitting;
     for (std::size_t i = 0; i < all.size(); ++i)
       for (std::size_t j = i + 1; j < all.size(); ++j)
         if ((all[i].wild_weights || all[j].wild_weights) == wild && fits({&all[i], &all[j]}))
@@ -205,7 +144,7 @@ void expect_furnace(int index) {
     add_not_finite(render.not_finite, render.pixel_count());
     return;
   }
-  const double exact = furnace_value(kCorrect, kFurnaces[index]);
+  const double exact = furnace_value(correct_path_model(), kFurnaces[index]);
   const testkit::MeanTestResult result = furnace_exact_test(render.pixel_means, kFurnaces[index], exact, kLevel);
   const FurnaceSpreadResult spread = furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel);
   if (result.passed && spread.passed) return;

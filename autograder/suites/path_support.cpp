@@ -24,12 +24,6 @@ PathRenderRequest furnace_request(int index, std::uint64_t seed) {
   return request;
 }
 
-double furnace_exact(const Furnace& furnace) {
-  double sum = 0, term = 1;
-  for (int k = 0; k <= furnace.max_depth + 1; ++k, term *= furnace.albedo) sum += term;
-  return sum;
-}
-
 FurnaceRender render_furnace(int index, std::uint64_t seed, bool mis) {
   PathRenderRequest request = furnace_request(index, seed);
   request.mis = mis ? 1 : 0;

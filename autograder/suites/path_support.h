@@ -5,6 +5,7 @@
 #pragma once
 
 #include "09_path_calls.h"
+#include "path_models.h"
 
 #include "raylab/image.h"
 #include "raylab/testkit/statistics.h"
@@ -37,20 +38,13 @@ inline PathRenderRequest cornell_request(int samples_per_pixel, std::uint64_t se
   return request;
 }
 
-// The furnaces (scenes/furnace.json, a sphere seen from inside, with every albedo set to
-// `albedo`), each rendered 32x32 at 4 spp: each pixel's mean is one value of the t-test. In a
-// sphere, sampling the light by area gives every point the same estimate, so the values vary only
-// by the BSDF's samples and the roulette: a distribution with light tails, which a t-test judges at
-// its stated rate. (A cube's edges give estimates of unbounded variance: over 1,568 seeds the
-// t-statistics of the reference averaged -0.85, and 3% fell below -4.)
-struct Furnace {
-  double albedo, roulette;
-  int max_depth;
-};
-constexpr Furnace kFurnaces[] = {{0.5, 1.0, 5}, {0.5, 0.5, 20}, {0.3, 0.8, 20}};
+// The furnaces (path_models.h: kFurnaces), each rendered 32x32 at 4 spp: each pixel's mean is one
+// value of the t-test. In a sphere, sampling the light by area gives every point the same
+// estimate, so the values vary only by the BSDF's samples and the roulette: a distribution with
+// light tails, which a t-test judges at its stated rate. (A cube's edges give estimates of
+// unbounded variance: over 1,568 seeds the t-statistics of the reference averaged -0.85, and 3%
+// fell below -4.)
 PathRenderRequest furnace_request(int index, std::uint64_t seed);
-// A furnace's exact pixel value (emission 1): sum of a^k for k = 0 .. max_depth + 1.
-double furnace_exact(const Furnace& furnace);
 
 // A furnace render: its finite pixel means (the red channel; the furnace is grey) and how many
 // pixels were not finite. `mis`: path_radiance_mis (stage 09b) instead of path_radiance.
