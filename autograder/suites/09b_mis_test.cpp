@@ -258,41 +258,53 @@ PathParts parts_of(const Scene& scene, const SceneGeometry& geometry, const Ligh
   return parts;
 }
 
-// A correct path tracer, and the common mistakes: how each weighs the two samples.
-enum class Model { Correct, NoMis, Balance, AreaPdf, EmissionTwice, DeltaWeighted, LastVertexWeighted };
+// How a path tracer weighs the two samples: the correct one, changed by the common mistakes, each
+// a flag, so that two mistakes made together are both flags.
+struct MisModel {
+  bool no_mis = false;                // the light sample alone, weight 1
+  bool balance = false;               // the balance heuristic f / (f + g)
+  bool area_pdf = false;              // the light's density per unit area in the BSDF sample's weight (or in both)
+  bool emission_twice = false;        // the BSDF sample's emission with weight 1
+  bool delta_weighted = false;        // a point light's sample weighted like an area light's
+  bool last_vertex_weighted = false;  // the light sample at the last vertex weighted, no BSDF sample following
+};
+MisModel both(const MisModel& a, const MisModel& b) {
+  return {a.no_mis || b.no_mis, a.balance || b.balance, a.area_pdf || b.area_pdf,
+          a.emission_twice || b.emission_twice, a.delta_weighted || b.delta_weighted,
+          a.last_vertex_weighted || b.last_vertex_weighted};
+}
 
 double balance(double f, double g) { return f + g > 0.0 ? f / (f + g) : 0.0; }
 
-// The values `model` may give for the path (a mistake can be made in more than one way).
-std::vector<glm::dvec3> model_values(const PathParts& p, Model model) {
-  const glm::dvec3 light(p.light), bsdf(p.bsdf);
-  const bool light_alone = p.light_is_delta || !p.bsdf_follows;  // no BSDF sample can make it
-  const double w_light = light_alone ? 1.0 : exact_power(1, p.light_pdf, 1, p.bsdf_pdf_of_light);
-  const double w_bsdf = exact_power(1, p.bsdf_pdf, 1, p.light_pdf_of_bsdf);
-  switch (model) {
-    case Model::Correct: return {w_light * light + w_bsdf * bsdf};
-    case Model::NoMis: return {light};
-    case Model::Balance:
-      return {(light_alone ? 1.0 : balance(p.light_pdf, p.bsdf_pdf_of_light)) * light +
-              balance(p.bsdf_pdf, p.light_pdf_of_bsdf) * bsdf};
-    case Model::AreaPdf: {
-      // The light's density per unit area in the BSDF sample's weight, or in both.
-      const double w_bsdf_area = exact_power(1, p.bsdf_pdf, 1, p.light_pdf_area_of_bsdf);
-      const double w_light_area = light_alone ? 1.0 : exact_power(1, p.light_pdf_area, 1, p.bsdf_pdf_of_light);
-      return {w_light * light + w_bsdf_area * bsdf, w_light_area * light + w_bsdf_area * bsdf};
-    }
-    case Model::EmissionTwice: return {w_light * light + bsdf, light + bsdf};
-    case Model::DeltaWeighted: {
-      if (!p.light_is_delta) return {w_light * light + w_bsdf * bsdf};
+// The values `model` may give for the path (a mistake can be made in more than one way): every
+// weight of the light sample it may use, with every weight of the BSDF sample.
+std::vector<glm::dvec3> model_values(const PathParts& p, const MisModel& model) {
+  const auto heuristic = [&](double f, double g) { return model.balance ? balance(f, g) : exact_power(1, f, 1, g); };
+  std::vector<double> light_weights, bsdf_weights;
+  if (model.no_mis) {
+    light_weights = {1.0};
+    bsdf_weights = {0.0};
+  } else {
+    if (p.light_is_delta) {
       // Weighted with the sample's pdf (1 by convention) or with pdf_li (0 for a point light).
-      return {exact_power(1, p.light_pdf, 1, p.bsdf_pdf_of_light) * light + w_bsdf * bsdf, w_bsdf * bsdf};
+      light_weights = model.delta_weighted ? std::vector<double>{heuristic(p.light_pdf, p.bsdf_pdf_of_light), 0.0}
+                                           : std::vector<double>{1.0};
+    } else if (!p.bsdf_follows) {
+      light_weights = {model.last_vertex_weighted ? heuristic(p.light_pdf, p.bsdf_pdf_of_light) : 1.0};
+    } else {
+      light_weights = {heuristic(p.light_pdf, p.bsdf_pdf_of_light)};
+      if (model.area_pdf) light_weights.push_back(heuristic(p.light_pdf_area, p.bsdf_pdf_of_light));
     }
-    case Model::LastVertexWeighted: {
-      const double w = p.light_is_delta ? 1.0 : exact_power(1, p.light_pdf, 1, p.bsdf_pdf_of_light);
-      return {w * light + w_bsdf * bsdf};
-    }
+    if (model.emission_twice) light_weights.push_back(1.0);
+    bsdf_weights = {model.emission_twice ? 1.0
+                    : model.area_pdf     ? heuristic(p.bsdf_pdf, p.light_pdf_area_of_bsdf)
+                                         : heuristic(p.bsdf_pdf, p.light_pdf_of_bsdf)};
   }
-  return {};
+  const glm::dvec3 light(p.light), bsdf(p.bsdf);
+  std::vector<glm::dvec3> values;
+  for (const double w_light : light_weights)
+    for (const double w_bsdf : bsdf_weights) values.push_back(w_light * light + w_bsdf * bsdf);
+  return values;
 }
 
 bool close(const glm::vec3& got, const glm::dvec3& expected) {
@@ -301,7 +313,7 @@ bool close(const glm::vec3& got, const glm::dvec3& expected) {
   return true;
 }
 
-bool fits(const std::vector<glm::vec3>& got, const std::vector<PathParts>& parts, Model model) {
+bool fits(const std::vector<glm::vec3>& got, const std::vector<PathParts>& parts, const MisModel& model) {
   for (std::size_t i = 0; i < got.size(); ++i) {
     bool any = false;
     for (const glm::dvec3& value : model_values(parts[i], model)) any = any || close(got[i], value);
@@ -316,10 +328,32 @@ struct SceneName {
   MessageArg arg() const { return MessageArg::bilingual("what", english, chinese); }
 };
 
+// The common mistakes, each as the flag of MisModel it sets, with its hint.
+struct MisMistake {
+  MisModel model;
+  MessageId hint;
+};
+MisModel with_flag(bool MisModel::*flag) {
+  MisModel model;
+  model.*flag = true;
+  return model;
+}
+const std::vector<MisMistake>& mis_mistakes() {
+  static const std::vector<MisMistake> mistakes = {
+      {with_flag(&MisModel::no_mis), MessageId::mis_no_mis},
+      {with_flag(&MisModel::balance), MessageId::mis_balance_weights},
+      {with_flag(&MisModel::area_pdf), MessageId::mis_area_pdf_in_weight},
+      {with_flag(&MisModel::emission_twice), MessageId::mis_emission_twice},
+      {with_flag(&MisModel::delta_weighted), MessageId::mis_delta_weighted},
+      {with_flag(&MisModel::last_vertex_weighted), MessageId::mis_last_vertex_weighted},
+  };
+  return mistakes;
+}
+
 // Traces the paths with the student's path_radiance_mis and compares every value with the judge's;
-// names the first that differs and the mistakes whose model explains every value.
-void expect_scripted(const SceneName& what, const MisScene& test_scene, const std::vector<MisScriptedPath>& paths,
-                     const std::vector<std::pair<Model, MessageId>>& mistakes) {
+// names the first that differs and the mistakes whose model explains every value: one, or when
+// no single one does and exactly one pair does, two made together.
+void expect_scripted(const SceneName& what, const MisScene& test_scene, const std::vector<MisScriptedPath>& paths) {
   const std::vector<glm::vec3> got = mis_scripted_paths(test_scene, paths);
   const Scene scene = scene_of(test_scene);
   const SceneGeometry geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, grader_tracing());
@@ -335,7 +369,7 @@ void expect_scripted(const SceneName& what, const MisScene& test_scene, const st
   }
   std::size_t wrong = got.size();
   for (std::size_t i = 0; i < got.size() && wrong == got.size(); ++i)
-    if (!close(got[i], model_values(parts[i], Model::Correct)[0])) wrong = i;
+    if (!close(got[i], model_values(parts[i], MisModel{})[0])) wrong = i;
   if (wrong == got.size()) return;
   const MisScriptedPath& path = paths[wrong];
   const PathParts& p = parts[wrong];
@@ -346,7 +380,7 @@ void expect_scripted(const SceneName& what, const MisScene& test_scene, const st
                 {"u1", gtest_text(path.u1)},
                 {"u2", gtest_text(path.u2)},
                 {"depth", std::to_string(path.max_depth)},
-                {"expected", gtest_text(glm::vec3(model_values(p, Model::Correct)[0]))},
+                {"expected", gtest_text(glm::vec3(model_values(p, MisModel{})[0]))},
                 {"got", gtest_text(got[wrong])},
                 {"light", gtest_text(p.light)},
                 {"light_pdf", gtest_text(p.light_pdf)},
@@ -354,40 +388,42 @@ void expect_scripted(const SceneName& what, const MisScene& test_scene, const st
                 {"bsdf", gtest_text(p.bsdf)},
                 {"bsdf_pdf", gtest_text(p.bsdf_pdf)},
                 {"bsdf_light_pdf", gtest_text(p.light_pdf_of_bsdf)}}});
+  const std::vector<MisMistake>& mistakes = mis_mistakes();
   bool named = false;
-  for (const auto& [model, hint] : mistakes)
-    if (fits(got, parts, model)) {
-      add_hint({hint, {}});
+  for (const MisMistake& mistake : mistakes)
+    if (fits(got, parts, mistake.model)) {
+      add_hint({mistake.hint, {}});
       named = true;
     }
-  if (!named) add_hint({MessageId::mis_weights_unexplained, {}});
+  if (named) return;
+  std::vector<std::pair<const MisMistake*, const MisMistake*>> fitting;
+  for (std::size_t i = 0; i < mistakes.size(); ++i)
+    for (std::size_t j = i + 1; j < mistakes.size(); ++j)
+      if (fits(got, parts, both(mistakes[i].model, mistakes[j].model))) fitting.emplace_back(&mistakes[i], &mistakes[j]);
+  if (fitting.size() == 1) {
+    add_hint({MessageId::mis_two_mistakes, {}});
+    add_hint({fitting[0].first->hint, {}});
+    add_hint({fitting[0].second->hint, {}});
+    return;
+  }
+  add_hint({MessageId::mis_weights_unexplained, {}});
 }
-
-const std::vector<std::pair<Model, MessageId>> kWeightMistakes = {
-    {Model::NoMis, MessageId::mis_no_mis},
-    {Model::Balance, MessageId::mis_balance_weights},
-    {Model::AreaPdf, MessageId::mis_area_pdf_in_weight},
-    {Model::EmissionTwice, MessageId::mis_emission_twice},
-};
 
 GRADED_TEST(kStage, Stage09bMis, LightAndBsdfSamplesWeighted, 8) {
   // A floor under a quad light: every path's light sample, and its BSDF sample when that hits the
   // light, must count with their power-heuristic weights.
-  expect_scripted({"a floor under a quad light", "四边形光源下的地面"}, quad_light_scene(), scripted_paths(2),
-                  kWeightMistakes);
+  expect_scripted({"a floor under a quad light", "四边形光源下的地面"}, quad_light_scene(), scripted_paths(2));
 }
 
 GRADED_TEST(kStage, Stage09bMis, PointLightKeepsWeightOne, 3) {
   // No direction hits a point: its light sample is the only way to find it, weight 1.
-  expect_scripted({"a floor under a point light", "点光源下的地面"}, point_light_scene(), scripted_paths(2),
-                  {{Model::DeltaWeighted, MessageId::mis_delta_weighted}});
+  expect_scripted({"a floor under a point light", "点光源下的地面"}, point_light_scene(), scripted_paths(2));
 }
 
 GRADED_TEST(kStage, Stage09bMis, LastVertexKeepsWeightOne, 2) {
   // max_depth 0: no BSDF sample follows the camera's hit, so its light sample has weight 1.
   expect_scripted({"a floor under a quad light, max depth 0", "四边形光源下的地面，最大深度 0"}, quad_light_scene(),
-                  scripted_paths(0),
-                  {{Model::LastVertexWeighted, MessageId::mis_last_vertex_weighted}});
+                  scripted_paths(0));
 }
 
 // ---- Unbiased: furnaces and Cornell boxes ---------------------------------------------------
