@@ -4,7 +4,8 @@ cmake_minimum_required(VERSION 3.19)  # string(JSON), IN_LIST
 # judge's own), SERVERS_FOR ("stage=path;...": --stage-server-for, the stages graded with a
 # reference server; HONEST_SERVERS_FOR the same for HONEST), MODE (full | zero | broken | contained | lost), EXPECT_STAGE, EXPECT_HINT (regexes joined by "&&", each of
 # which must match), ALSO_AFFECTED
-# (optional regex of later tests that may lose points too), TIMEOUT, WORK, REFERENCE (the
+# (optional regex of later tests that may lose points too), GRADED_STAGES (the stages to grade;
+# empty: every one), TIMEOUT, WORK, REFERENCE (the
 # reference data folder, which no grading may change), and for the hostile submissions:
 #   HONEST         the stage server of the same code without the attack: every test must score the same
 #   EXPECT_SCORES  "stage=points;..." exact stage scores
@@ -48,19 +49,13 @@ function(count_shared_memory_segments out)
 endfunction()
 count_shared_memory_segments(segments_before)
 set(server_option "")
-# The stage table (stages.json): with FROM_EXPECT_STAGE, the stages to grade: EXPECT_STAGE and the
-# ones after it. Whether the earlier stages keep full marks is then checked once per stage file,
-# by its first broken self-test, which grades every stage (CMakeLists.txt here): a mistake in a
-# stage function can reach an earlier stage only through a call of that function from it.
+# GRADED_STAGES: the stages to grade, or empty: every stage. Whether the other stages keep full
+# marks is checked once per stage file, by its first broken self-test, which grades every stage
+# (CMakeLists.txt here): a mistake in a stage function reaches another stage only through a call
+# of that function, which only the stages of its file and their "also_runs" make.
 set(stage_options "")
-file(READ "${CMAKE_CURRENT_LIST_DIR}/../../stages.json" stage_table)
-string(JSON stage_count LENGTH "${stage_table}" stages)
-math(EXPR last_stage "${stage_count} - 1")
-foreach(i RANGE ${last_stage})
-  string(JSON id GET "${stage_table}" stages ${i} id)
-  if(FROM_EXPECT_STAGE AND NOT id STRLESS EXPECT_STAGE)
-    list(APPEND stage_options --stage ${id})
-  endif()
+foreach(id IN LISTS GRADED_STAGES)
+  list(APPEND stage_options --stage ${id})
 endforeach()
 set(server "${GRADER}-stage-server")
 if(SERVER)
