@@ -4,6 +4,9 @@
 // both passes none of the furnace tests that one of them fails (issue: "mistakes made together
 // are named together"). The one pair left out is not a mistake: emission counted at every vertex
 // with no direct light is path tracing without next-event estimation, which is unbiased.
+//   Likewise stage 08's estimator tests against the estimator's modelled mistakes
+// (autograder/suites/direct_models.h): DirectModels.
+#include "direct_models.h"
 #include "path_models.h"
 
 #include <gtest/gtest.h>
@@ -106,6 +109,58 @@ TEST(PathModels, EveryPairDiffersFromEveryOtherModel) {
           << "the models " << names_of(models[m]) << " and " << names_of(models[n]) << " agree in every furnace";
     }
   EXPECT_LE(masked, 5);  // no direct light with each of the 5 mistakes of the bounce weight and depth
+}
+
+// ---- Stage 08: the one-sample estimator -----------------------------------------------------
+
+// The estimator's models in a test with `lights` lights: each mistake alone, and each pair made
+// together (the product of their factors), with their names.
+struct DirectModel {
+  std::string names;
+  double factor;
+};
+std::vector<DirectModel> direct_models(int lights) {
+  const std::vector<DirectMistake>& all = direct_mistakes();
+  std::vector<DirectModel> models;
+  for (const DirectMistake& mistake : all) models.push_back({mistake.name, mistake.factor(lights)});
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j)
+      models.push_back({std::string(all[i].name) + " + " + all[j].name, all[i].factor(lights) * all[j].factor(lights)});
+  return models;
+}
+
+// What an estimator test surely tells apart: its mean tests have standard errors of about 1% of
+// the mean (20,000 samples), so 20% is far outside them.
+constexpr double kDirectDetectable = 0.2;
+
+// The models that an estimator test with `lights` lights cannot tell from the right answer.
+std::vector<std::string> direct_models_near_right(int lights) {
+  std::vector<std::string> near;
+  for (const DirectModel& model : direct_models(lights))
+    if (!(std::fabs(model.factor - 1.0) >= kDirectDetectable)) near.push_back(model.names);
+  return near;
+}
+
+TEST(DirectModels, EveryMistakeAndPairFailsEveryEstimatorTest) {
+  // So no pair passes an estimator test that either of its mistakes fails.
+  for (const int lights : kDirectEstimatorLights)
+    for (const std::string& names : direct_models_near_right(lights))
+      ADD_FAILURE() << "with " << lights << " lights, '" << names << "' is within " << kDirectDetectable
+                    << " of the right answer";
+  // The check itself: with three lights, the choice not divided by and 1 / pi missing give
+  // pi / 3 = 1.047 (why EstimatorSeveralLights has four).
+  EXPECT_EQ(direct_models_near_right(3).size(), 1u);
+}
+
+TEST(DirectModels, EveryModelDiffersFromEveryOtherInEachEstimatorTest) {
+  // So the fit names one model, whichever test fails.
+  for (const int lights : kDirectEstimatorLights) {
+    const std::vector<DirectModel> models = direct_models(lights);
+    for (std::size_t m = 0; m < models.size(); ++m)
+      for (std::size_t n = m + 1; n < models.size(); ++n)
+        EXPECT_GE(std::fabs(models[m].factor / models[n].factor - 1.0), kDirectDetectable)
+            << "with " << lights << " lights, '" << models[m].names << "' and '" << models[n].names << "' agree";
+  }
 }
 
 }  // namespace

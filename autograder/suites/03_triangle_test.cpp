@@ -44,10 +44,16 @@ void diagnose(const Ray& ray, std::optional<TriangleHit> got, std::optional<Tria
   } else if (got && expected) {
     if (close(got->barycentric_b1, expected->barycentric_b2) && close(got->barycentric_b2, expected->barycentric_b1))
       add_hint(MessageId::triangle_barycentrics_swapped);
+    else if (!close(got->t_hit, expected->t_hit) && glm::length(ray.direction) != 1.0f &&
+             close(got->t_hit, expected->t_hit * glm::length(ray.direction)))
+      add_hint(MessageId::triangle_assumes_unit_direction);  // t along the normalised direction
     else if (!close(got->t_hit, expected->t_hit))
       add_hint(MessageId::triangle_t_wrong);
     else
       add_hint(MessageId::triangle_barycentrics_wrong);
+  } else if (!got && expected && glm::length(ray.direction) != 1.0f &&
+             !(expected->t_hit * glm::length(ray.direction) < ray.t_max)) {
+    add_hint(MessageId::triangle_assumes_unit_direction);  // its t along the normalised direction is past t_max
   } else if (!got && expected && back_face) {
     add_hint(MessageId::triangle_culls_back_faces);
   } else if (!got && expected &&

@@ -40,6 +40,7 @@ std::optional<float> unswapped_slab_test(const Ray& ray, const Bounds3& box) {
   if (t_enter <= t_exit) return t_enter;
   return std::nullopt;
 }
+bool is_flat(const Bounds3& box) { return box.min.x == box.max.x || box.min.y == box.max.y || box.min.z == box.max.z; }
 bool has_negative_component(const glm::vec3& direction) {
   return std::signbit(direction.x) || std::signbit(direction.y) || std::signbit(direction.z);
 }
@@ -77,12 +78,18 @@ void diagnose(const Ray& ray, const Bounds3& box, std::optional<float> got, std:
     add_hint(MessageId::box_ignores_t_max);
   } else if (got && !expected) {
     add_hint(MessageId::box_false_hit);
+  } else if (!got && expected && is_flat(box)) {
+    add_hint(MessageId::box_flat_missed);
   } else if (!got && expected && zero_component) {
     add_hint(MessageId::box_misses_zero_component);
   } else if (!got && expected) {
     add_hint(MessageId::box_misses);
   } else if (got && expected && *got < ray.t_min - 1e-6f) {
     add_hint(MessageId::box_entry_not_clipped);
+  } else if (got && expected && glm::length(ray.direction) != 1.0f &&
+             close(*got, *expected * glm::length(ray.direction))) {
+    add_hint({MessageId::box_assumes_unit_direction,  // t along the normalised direction
+              {{"length", gtest_text(glm::length(ray.direction))}}});
   } else if (got && expected) {
     add_hint(MessageId::box_entry_wrong);
   }

@@ -355,7 +355,7 @@ GRADED_TEST(kStage, Stage05cWideBvh, BoxTestNeverLosesAHit, 4) {
   }
   const std::vector<Box4Answer> answers = box4_answers(rays, nodes);
   int failures = 0;
-  bool lost_zero_component = false, empty_slot_reported = false;
+  bool lost_zero_component = false, empty_slot_reported = false, beyond_t_max = false;
   for (std::size_t i = 0; i < cases.size() && failures < 3; ++i) {
     const Ray& ray = cases[i].ray;
     const Bvh4Node& node = cases[i].node;
@@ -385,6 +385,9 @@ GRADED_TEST(kStage, Stage05cWideBvh, BoxTestNeverLosesAHit, 4) {
       if (!exact_entry(ray, box, 1e-5)) {
         ++failures;
         add_failure({MessageId::wide_failure_box_false, {{"where", where}, {"box", box_text(box)}}});
+        Ray unbounded = ray;
+        unbounded.t_max = kInfinity;
+        if (!std::isinf(ray.t_max) && exact_entry(unbounded, box)) beyond_t_max = true;
         continue;
       }
       if (!entry) continue;  // within rounding of the box: its entry distance is anyone's guess
@@ -399,6 +402,7 @@ GRADED_TEST(kStage, Stage05cWideBvh, BoxTestNeverLosesAHit, 4) {
     }
   }
   if (lost_zero_component) add_hint(MessageId::wide_box_zero_component);
+  if (beyond_t_max) add_hint(MessageId::wide_box_beyond_t_max);
 }
 
 // ---- The traversal ---------------------------------------------------------------------------

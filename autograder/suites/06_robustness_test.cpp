@@ -163,7 +163,8 @@ bool close(float got, float expected) { return std::fabs(got - expected) <= 1e-4
 GRADED_TEST(kStage, Stage06Robustness, WatertightMatchesStage03Answers, 3) {
   // The same contract as stage 03: the same hits, t and barycentrics on stage 03's cases.
   const nlohmann::json data = load_reference_cases("03_triangle");
-  int failures = 0;
+  int failures = 0, misses[2] = {0, 0};
+  bool normalised = false;
   for (const nlohmann::json& c : data.at("cases")) {
     Ray ray = make_ray(vec3_from_json(c.at("origin")), vec3_from_json(c.at("direction")));
     ray.t_min = c.at("t_min").get<float>();
@@ -176,15 +177,27 @@ GRADED_TEST(kStage, Stage06Robustness, WatertightMatchesStage03Answers, 3) {
       ok = close(got->t_hit, c["hit"].at(0).get<float>()) && close(got->barycentric_b1, c["hit"].at(1).get<float>()) &&
            close(got->barycentric_b2, c["hit"].at(2).get<float>());
     if (ok) continue;
-    if (got && expected && close(got->barycentric_b1, c["hit"].at(2).get<float>()) &&
-        close(got->barycentric_b2, c["hit"].at(1).get<float>()))
-      add_hint(MessageId::robust_barycentrics_swapped);
-    else if (got && expected && close(got->t_hit, c["hit"].at(0).get<float>()))
-      add_hint(MessageId::robust_barycentrics_wrong);
-    else if (!got && expected)
-      add_hint(MessageId::robust_misses);
-    else if (got && !expected)
-      add_hint(MessageId::robust_false_hits);
+    // (Stage 03's hints where the mistake is one that stage 03 names too.)
+    const float length = glm::length(ray.direction);
+    const float expected_t = expected ? c["hit"].at(0).get<float>() : 0.0f;
+    const bool facing_along = glm::dot(glm::cross(p1 - p0, p2 - p0), ray.direction) > 0.0f;  // by its winding
+    const bool t_normalised = length != 1.0f && got && expected && close(got->t_hit, expected_t * length);
+    normalised = normalised || t_normalised;  // (its misses come from comparing t_max with such a t)
+    if (!got && expected) {
+      ++misses[facing_along ? 1 : 0];  // named after the loop: culling when every miss faces one way
+    } else if (failures < 3) {         // a hint for each failure shown
+      if (t_normalised)
+        add_hint(MessageId::triangle_assumes_unit_direction);  // t along the normalised direction
+      else if (got && !expected && !(got->t_hit < ray.t_max))
+        add_hint({MessageId::triangle_ignores_t_max, {{"t", std::to_string(got->t_hit)}}});
+      else if (got && expected && close(got->barycentric_b1, c["hit"].at(2).get<float>()) &&
+               close(got->barycentric_b2, c["hit"].at(1).get<float>()))
+        add_hint(MessageId::robust_barycentrics_swapped);
+      else if (got && expected && close(got->t_hit, expected_t))
+        add_hint(MessageId::robust_barycentrics_wrong);
+      else if (got && !expected)
+        add_hint(MessageId::robust_false_hits);
+    }
     if (++failures <= 3) {
       const MessageArg got_text = got ? MessageArg("got", stream_text(*got)) : MessageArg("got", Message(MessageId::value_no_hit));
       const MessageArg expected_text = expected ? MessageArg("expected", c.at("hit").dump())
@@ -194,6 +207,8 @@ GRADED_TEST(kStage, Stage06Robustness, WatertightMatchesStage03Answers, 3) {
                     {"p2", gtest_text(p2)}, expected_text, got_text}});
     }
   }
+  if (misses[0] + misses[1] > 0 && !normalised)
+    add_hint(misses[0] == 0 || misses[1] == 0 ? MessageId::triangle_culls_back_faces : MessageId::robust_misses);
   EXPECT_EQ(failures, 0)
       << failure_text({MessageId::robust_failure_stage03_count,
                  {{"failures", std::to_string(failures)}, {"count", std::to_string(data.at("cases").size())}}});
@@ -247,7 +262,12 @@ GRADED_TEST(kStage, Stage06Robustness, NoRayLeaksThroughClosedMeshes, 6) {
     add_note({MessageId::note_watertight_leaks,
               {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kRays)}}});
     if (leaks > 0) {
-      add_hint(MessageId::robust_leaks);
+      // Rounding at shared edges leaks a few rays in a thousand at most; half of them or more is a
+      // test that misses whole triangles (from behind: culling).
+      if (2 * leaks >= static_cast<std::uint64_t>(kRays))
+        add_hint({MessageId::robust_leaks_most, {{"leaks", std::to_string(leaks)}, {"rays", std::to_string(kRays)}}});
+      else
+        add_hint(MessageId::robust_leaks);
       add_failure({MessageId::robust_failure_leaks,
                    {{"mesh", mesh.name}, {"leaks", std::to_string(leaks)}, {"rays", std::to_string(kRays)},
                     {"ray", ray_text(first_leak)}}});

@@ -19,12 +19,15 @@
 //   with roulette): its spread is as huge as its mean. So each furnace's pixels must also spread
 //   no more than a correct path tracer's can (path_support.h: furnace_spread_test, by Markov's
 //   inequality from a bound on the variance of every correct variant).
+//   And code that does no work earns nothing: a furnace with roulette also fails when too few of
+//   its paths end early with little light, as Russian roulette makes a correct path tracer's
+//   (path_support.h: furnace_short_paths_test, an exact binomial bound). A constant, or a path
+//   tracer that never plays the roulette, fails it.
 //   The paths sample with the grader's own stages 07 and 08 (stages.json: "grader_versions"), so
 //   a failing test here is this stage's own mistake.
 //
-// False failures: the 3 furnace t-tests, their 3 spread tests and the 2 x 64 x 3 region z-tests
-// share
-// kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected);
+// False failures: the 3 furnace t-tests, their 3 spread tests, the 2 tests of short paths and the
+// 2 x 64 x 3 region z-tests share kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected);
 // autograder-path-false-failures (autograder/tools/path_false_failures.cpp) measures it over
 // many seeds.
 #include "grading.h"
@@ -97,14 +100,29 @@ bool fits(const std::vector<const PathMistake*>& made) {
   return true;
 }
 
-// A furnace is right when its pixels pass both the t-test of their mean and the test of their
-// spread (path_support.h: furnace_spread_test).
+// The test of short paths (path_support.h: furnace_short_paths_test) of a furnace with roulette;
+// nullopt for the one without.
+const std::optional<ShortPathsResult>& furnace_short_paths(int index) {
+  static std::map<std::pair<int, std::uint64_t>, std::optional<ShortPathsResult>> cache;  // by (furnace, seed)
+  const std::uint64_t seed = test_seed(300 + static_cast<std::uint64_t>(index));
+  const auto found = cache.find({index, seed});
+  if (found != cache.end()) return found->second;
+  std::optional<ShortPathsResult> result;
+  if (kFurnaces[index].roulette < 1.0)
+    result = furnace_short_paths_test(render_furnace_paths(index, seed, false), kFurnaces[index], kLevel);
+  return cache.emplace(std::make_pair(index, seed), result).first->second;
+}
+
+// A furnace is right when its pixels pass the t-test of their mean, the test of their spread
+// (path_support.h: furnace_spread_test) and, with roulette, the test of short paths.
 bool furnace_right(int index) {
   const FurnaceRender& render = furnace_render(index);
   if (render.not_finite || render.pixel_means.size() < 2) return false;
-  const double exact = furnace_value(correct_path_model(), kFurnaces[index]);
+  const double exact = furnace_exact(kFurnaces[index]);
+  const std::optional<ShortPathsResult>& short_paths = furnace_short_paths(index);
   return furnace_exact_test(render.pixel_means, kFurnaces[index], exact, kLevel).passed &&
-         furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel).passed;
+         furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel).passed &&
+         (!short_paths || short_paths->passed);
 }
 
 // The hints of a failing test: the fitted models of the furnaces that fit; true when any does.
@@ -144,13 +162,15 @@ void expect_furnace(int index) {
     add_not_finite(render.not_finite, render.pixel_count());
     return;
   }
-  const double exact = furnace_value(correct_path_model(), kFurnaces[index]);
+  const double exact = furnace_exact(kFurnaces[index]);
   const testkit::MeanTestResult result = furnace_exact_test(render.pixel_means, kFurnaces[index], exact, kLevel);
   const FurnaceSpreadResult spread = furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel);
-  if (result.passed && spread.passed) return;
+  const std::optional<ShortPathsResult>& short_paths = furnace_short_paths(index);
+  if (result.passed && spread.passed && (!short_paths || short_paths->passed)) return;
   if (!result.passed) add_furnace_failure(index, result);
   if (!spread.passed) add_furnace_spread_failure(index, spread, exact, kLevel);
-  hint_mistakes();
+  if (short_paths && !short_paths->passed) add_furnace_short_paths_failure(index, *short_paths, kLevel);
+  if (!result.passed || !spread.passed) hint_mistakes();
 }
 
 GRADED_TEST(kStage, Stage09Path, FurnaceWithoutRoulette, 8) { expect_furnace(0); }

@@ -16,8 +16,8 @@
 //   z-tested region by region against stage 09's converged reference (path_support.h), as in
 //   stage 09: an ordinary path tracer without MIS passes these and loses the scripted tests.
 //
-// False failures: the 2 furnace t-tests, their 2 spread tests (path_support.h) and the 2 x 64 x 3
-// region z-tests share
+// False failures: the 2 furnace t-tests, their 2 spread tests, the test of short paths of the
+// furnace with roulette (path_support.h) and the 2 x 64 x 3 region z-tests share
 // kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected: mis_test_level()); the
 // exact tests have tolerances that a correct implementation never exceeds.
 // autograder-false-failures --stage 09b_mis measures it.
@@ -439,10 +439,15 @@ void expect_furnace(int index) {
   const double exact = furnace_exact(kFurnaces[index]);
   const testkit::MeanTestResult result = furnace_exact_test(render.pixel_means, kFurnaces[index], exact, kLevel);
   const FurnaceSpreadResult spread = furnace_spread_test(render.pixel_means, kFurnaces[index], exact, kLevel);
-  if (result.passed && spread.passed) return;
+  std::optional<ShortPathsResult> short_paths;
+  if (kFurnaces[index].roulette < 1.0)
+    short_paths = furnace_short_paths_test(
+        render_furnace_paths(index, test_seed(220 + static_cast<std::uint64_t>(index)), true), kFurnaces[index], kLevel);
+  if (result.passed && spread.passed && (!short_paths || short_paths->passed)) return;
   if (!result.passed) add_furnace_failure(index, result);
   if (!spread.passed) add_furnace_spread_failure(index, spread, exact, kLevel);
-  hint_biased();
+  if (short_paths && !short_paths->passed) add_furnace_short_paths_failure(index, *short_paths, kLevel);
+  if (!result.passed || !spread.passed) hint_biased();
 }
 
 GRADED_TEST(kStage, Stage09bMis, FurnaceWithoutRoulette, 2) { expect_furnace(0); }

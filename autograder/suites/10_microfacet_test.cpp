@@ -236,6 +236,12 @@ GRADED_TEST(kStage, Stage10Microfacet, SmithG1, 4) {
     add_hint({MessageId::microfacet_g1_no_masking, {section(3)}});
     return;
   }
+  if (std::all_of(cases.begin(), cases.end(), [](const ValueCase& k) {
+        return k.vector.z <= 0.0f || close(k.got, 0.5 * smith_g1(k.vector.z, k.alpha), 1e-3);
+      })) {
+    add_hint({MessageId::microfacet_g1_half, {section(3)}});
+    return;
+  }
   for (const bool tan_squared : {true, false})
     for (const AlphaUse use : {AlphaUse::AsIs, AlphaUse::SquaredFirst, AlphaUse::SquareRoot}) {
       if (tan_squared && use == AlphaUse::AsIs) continue;
@@ -489,6 +495,7 @@ bool samples_in_domain(const char* function, const std::vector<glm::vec3>& sampl
     }
   }
   if (bad == 0) return true;
+  if (reason == MessageId::microfacet_reason_below) add_hint({MessageId::microfacet_half_vector_below, {section(5)}});
   add_failure({MessageId::microfacet_samples_outside,
                {{"function", function}, {"count", std::to_string(bad)}, {"total", std::to_string(samples.size())},
                 {"u", text(glm::vec3(inputs[first], 0.0f))}, {"sample", text(samples[first])}, {"reason", Message(reason)}}});

@@ -14,13 +14,9 @@ std::function<void(PathModel&)> bounce_weight_times(std::function<double(const F
 
 }  // namespace
 
-double furnace_exact(const Furnace& furnace) {
-  double sum = 0, term = 1;
-  for (int k = 0; k <= furnace.max_depth + 1; ++k, term *= furnace.albedo) sum += term;
-  return sum;
-}
-
 PathModel correct_path_model() { return PathModel{[](const Furnace& f) { return f.albedo; }}; }
+
+double furnace_exact(const Furnace& furnace) { return furnace_value(correct_path_model(), furnace); }
 
 double furnace_value(const PathModel& model, const Furnace& furnace) {
   const double r = model.bounce_weight(furnace), d = model.direct_factor * furnace.albedo;

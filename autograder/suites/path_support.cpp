@@ -102,6 +102,59 @@ void add_furnace_spread_failure(int index, const FurnaceSpreadResult& result, do
                 {"level", gtest_text(level)}}});
 }
 
+FurnaceRender render_furnace_paths(int index, std::uint64_t seed, bool mis) {
+  PathRenderRequest request = furnace_request(index, seed);
+  request.width = request.height = kShortPathsSide;
+  request.samples_per_pixel = 1;
+  request.mis = mis ? 1 : 0;
+  const PathRenderResult result = path_render("scenes/furnace.json", request);
+  FurnaceRender render;
+  for (const glm::vec3& v : result.mean.pixels()) {
+    if (!is_finite(v)) ++render.not_finite;
+    else render.pixel_means.push_back(v.x);
+  }
+  return render;
+}
+
+double short_path_limit(const Furnace& furnace) {
+  const double a = furnace.albedo;
+  return 0.5 * (1.0 + a + a * a + furnace_exact(furnace));
+}
+
+double short_path_least_share(const Furnace& furnace) {
+  const double t = (short_path_limit(furnace) - 1.0) / furnace.albedo;
+  return (1.0 - furnace.roulette) * (1.0 - 1.0 / t);
+}
+
+ShortPathsResult furnace_short_paths_test(const FurnaceRender& paths, const Furnace& furnace, double level) {
+  ShortPathsResult result;
+  result.limit = short_path_limit(furnace);
+  result.least_share = short_path_least_share(furnace);
+  result.paths = static_cast<long long>(paths.pixel_count());
+  for (const double v : paths.pixel_means) result.short_paths += v <= result.limit;
+  if (result.paths == 0) return result;
+  // P(K <= k) for K ~ Binomial(n, q) is P(n - K >= n - k), n - K ~ Binomial(n, 1 - q).
+  result.p_value = testkit::binomial_upper_tail(result.paths - result.short_paths, result.paths, 1.0 - result.least_share);
+  result.passed = result.p_value >= level;
+  return result;
+}
+
+void add_furnace_short_paths_failure(int index, const ShortPathsResult& result, double level) {
+  const Furnace& f = kFurnaces[index];
+  add_failure({MessageId::path_failure_furnace_short_paths,
+               {{"albedo", gtest_text(f.albedo)},
+                {"roulette", gtest_text(f.roulette)},
+                {"depth", std::to_string(f.max_depth)},
+                {"count", std::to_string(result.short_paths)},
+                {"total", std::to_string(result.paths)},
+                {"limit", gtest_text(result.limit)},
+                {"share", gtest_text(result.least_share)},
+                {"least", std::to_string(std::llround(result.least_share * static_cast<double>(result.paths)))},
+                {"p_value", gtest_text(result.p_value)},
+                {"level", gtest_text(level)}}});
+  add_hint({MessageId::path_roulette_not_played, {{"roulette", gtest_text(f.roulette)}}});
+}
+
 void add_not_finite(std::size_t count, std::size_t total) {
   add_failure({MessageId::path_failure_not_finite, {{"count", std::to_string(count)}, {"total", std::to_string(total)}}});
   add_hint({MessageId::path_not_finite, {{"count", std::to_string(count)}, {"total", std::to_string(total)}}});

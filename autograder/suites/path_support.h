@@ -99,16 +99,46 @@ FurnaceSpreadResult furnace_spread_test(const std::vector<double>& pixel_means, 
                                         double level);
 // Adds the failure of furnace `index`'s spread test.
 void add_furnace_spread_failure(int index, const FurnaceSpreadResult& result, double expected, double level);
+// No points without work: a correct path tracer's values cannot all lie near the furnace's answer.
+// Russian roulette (the contract: go on with probability p = context.continue_probability(depth,
+// throughput), from the camera ray's hit on) ends a share 1 - p of the paths at the first surface,
+// each with the emission 1 and that surface's direct light D, which is never negative and is a on
+// average (with MIS, its two weighted samples together). So a path's value is at most
+// h = 1 + t a with a chance of at least q = (1 - p)(1 - 1 / t) (Markov's inequality on D),
+// whatever the path tracer samples. h lies halfway between 1 + a + a^2 (a path that ends at the
+// second surface after a cosine-weighted bounce, where a roulette by the throughput, which never
+// stops a path at the first, ends most: path_throughput_roulette) and the exact answer.
+//   The test renders the furnace at 1 sample per pixel, one path per pixel, and counts the paths
+// whose value is at most h. That count is at least Binomial(paths, q), so the test fails a correct
+// path tracer with a chance of at most `level` (an exact binomial tail, no approximation). A
+// constant (the answer returned without tracing anything) and a path tracer that never plays the
+// roulette have no such paths. Only the furnaces with roulette (p < 1) are tested: without it, a
+// correct path tracer with cosine-weighted bounces is nearly noiseless in a sphere.
+constexpr int kShortPathsSide = 64;  // pixels, each side: 4,096 paths
+FurnaceRender render_furnace_paths(int index, std::uint64_t seed, bool mis);
+double short_path_limit(const Furnace& furnace);        // h
+double short_path_least_share(const Furnace& furnace);  // q
+struct ShortPathsResult {
+  bool passed = true;
+  long long short_paths = 0, paths = 0;
+  double limit = 0, least_share = 0;
+  double p_value = 1;  // P(Binomial(paths, least_share) <= short_paths)
+};
+// `paths.not_finite` count as paths that are not short.
+ShortPathsResult furnace_short_paths_test(const FurnaceRender& paths, const Furnace& furnace, double level);
+// Adds the failure of furnace `index`'s test of short paths and its hint.
+void add_furnace_short_paths_failure(int index, const ShortPathsResult& result, double level);
+
 // Adds the failure and the hint for `count` of `total` pixels not finite.
 void add_not_finite(std::size_t count, std::size_t total);
 
-// The stage's statistical tests: 3 furnace t-tests, their 3 spread tests and the region z-tests
-// of both boxes.
-constexpr int kPathStatisticalTests = 3 + 3 + 2 * kRegionTestsPerScene;
+// The stage's statistical tests: 3 furnace t-tests, their 3 spread tests, the 2 tests of short
+// paths (the furnaces with roulette) and the region z-tests of both boxes.
+constexpr int kPathStatisticalTests = 3 + 3 + 2 + 2 * kRegionTestsPerScene;
 double path_test_level();  // each test's level: the stage's 1 in 1,000, Sidak-corrected
-// Stage 09b's: 2 furnace t-tests (kFurnaces[0] and [1]), their 2 spread tests and the region
-// z-tests of both boxes.
-constexpr int kMisStatisticalTests = 2 + 2 + 2 * kRegionTestsPerScene;
+// Stage 09b's: 2 furnace t-tests (kFurnaces[0] and [1]), their 2 spread tests, the test of short
+// paths of kFurnaces[1] and the region z-tests of both boxes.
+constexpr int kMisStatisticalTests = 2 + 2 + 1 + 2 * kRegionTestsPerScene;
 double mis_test_level();
 
 // The region z-tests of a Cornell render: per 4x4 region and channel, z = (yours - reference) /

@@ -1,5 +1,5 @@
 // Measures how often stage 09's statistical tests fail the reference solution by bad luck: the
-// furnace t-tests, their spread tests and the Cornell region z-tests of
+// furnace t-tests, their spread tests, the tests of short paths and the Cornell region z-tests of
 // autograder/suites/09_path_test.cpp, with the same settings and the same reference data,
 // rendered with N seeds other than the graded one. The design rate is 1 in 1,000 for the whole stage; also prints how many single region
 // tests pass |z| = 3 and 4, and how many furnace t-statistics pass |t| = 3 and 4, against the
@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -51,6 +52,9 @@ int main(int argc, char** argv) {
   long long furnace_beyond_3[3] = {0, 0, 0}, furnace_beyond_4[3] = {0, 0, 0};
   // The spread tests: each furnace's largest mean squared deviation as a share of its limit.
   double furnace_spread_share[3] = {0, 0, 0};
+  // The tests of short paths (the furnaces with roulette): the fewest short paths, as a share of
+  // the paths, against the least share the test assumes, and the smallest p-value.
+  double fewest_short_share[3] = {1, 1, 1}, smallest_short_p[3] = {1, 1, 1};
   for (int seed = 1; seed <= seeds; ++seed) {
     bool failed = false;
     for (int f = 0; f < 3; ++f) {
@@ -62,6 +66,17 @@ int main(int argc, char** argv) {
       if (render.not_finite || !test.passed || !spread.passed) {
         ++furnace_failures;
         failed = true;
+      }
+      if (kFurnaces[f].roulette < 1.0) {
+        const ShortPathsResult short_paths =
+            furnace_short_paths_test(render_furnace_paths(f, 3000017ull * seed + f, false), kFurnaces[f], level);
+        fewest_short_share[f] = std::min(fewest_short_share[f], static_cast<double>(short_paths.short_paths) /
+                                                                     static_cast<double>(short_paths.paths));
+        smallest_short_p[f] = std::min(smallest_short_p[f], short_paths.p_value);
+        if (!short_paths.passed && !(render.not_finite || !test.passed || !spread.passed)) {
+          ++furnace_failures;
+          failed = true;
+        }
       }
       furnace_deviation[f].add((test.mean - exact) / exact);
       if (test.standard_error > 0) {
@@ -90,13 +105,13 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "\n");
   const double normal_3 = 2.0 * (1.0 - testkit::normal_cdf(3.0)), normal_4 = 2.0 * (1.0 - testkit::normal_cdf(4.0));
   if (furnaces_only) {
-    std::printf("09_path furnaces of the reference over %d seeds: %lld of %d failed their t-test or spread test (level %.3g each)\n", seeds,
+    std::printf("09_path furnaces of the reference over %d seeds: %lld of %d failed their t-test, spread test or test of short paths (level %.3g each)\n", seeds,
                 furnace_failures, 3 * seeds, level);
   } else {
     std::printf("09_path false failures of the reference over %d seeds: %lld gradings failed (design: at most %.4g "
                 "per grading, %.3g expected)\n",
                 seeds, stage_failures, testkit::kGraderFalseFailureRate, testkit::kGraderFalseFailureRate * seeds);
-    std::printf("  furnace t-tests or spread tests failed: %lld of %d; region z-tests failed: %lld of %lld (level %.3g each)\n",
+    std::printf("  furnace t-tests, spread tests or tests of short paths failed: %lld of %d; region z-tests failed: %lld of %lld (level %.3g each)\n",
                 furnace_failures, 3 * seeds, region_failures, region_tests, level);
     std::printf("  region |z| > 3: %lld of %lld (normal: %.1f); |z| > 4: %lld (normal: %.2f)\n", beyond_3, region_tests,
                 normal_3 * static_cast<double>(region_tests), beyond_4, normal_4 * static_cast<double>(region_tests));
@@ -109,6 +124,11 @@ int main(int argc, char** argv) {
                 furnace_t[f].mean(), std::sqrt(furnace_t[f].variance()), furnace_beyond_3[f], furnace_t[f].count(),
                 normal_3 * count, furnace_beyond_4[f], normal_4 * count);
     std::printf("    spread test: the largest mean squared deviation was %.3g of its limit\n", furnace_spread_share[f]);
+    if (kFurnaces[f].roulette < 1.0)
+      std::printf("    short paths (at most %.4g): the fewest were %.3g of the paths (the test assumes at least %.3g); "
+                  "smallest p-value %.3g\n",
+                  short_path_limit(kFurnaces[f]), fewest_short_share[f], short_path_least_share(kFurnaces[f]),
+                  smallest_short_p[f]);
   }
   return 0;
 }

@@ -19,6 +19,8 @@ struct TraversalMistakes {
   bool t_max_not_lowered = false;           // keeps the closest hit by comparison; search.t_max stays
   bool prunes_only_at_leaves = false;       // tests every node's box but enters every inner node anyway
   bool primitives_not_counted = false;      // leaves stats.primitives_tested as it was
+  bool any_hit_at_leaf_box = false;         // any_hit: stops at the first leaf whose box the ray hits and
+                                            // returns its first primitive, hit or not
 };
 
 // What the traversal writes into stats.nodes_visited.
@@ -58,7 +60,12 @@ inline std::optional<BvhHit> traverse_bvh(const Bvh& bvh, const Ray& ray, const 
     const BvhNode& node = nodes[node_index];
     ++nodes_visited;
     path_counted[depth] = false;
-    const bool box_hit = intersect_ray_box(search, ray_direction_inverse, node.bounds).has_value();
+    const std::optional<float> box_t = intersect_ray_box(search, ray_direction_inverse, node.bounds);
+    const bool box_hit = box_t.has_value();
+    if (box_hit && any_hit && mistakes.any_hit_at_leaf_box && node.is_leaf()) {
+      closest = BvhHit{*box_t, primitive_order[node.first_index]};
+      break;
+    }
     if (box_hit || (mistakes.prunes_only_at_leaves && !node.is_leaf())) {
       if (!node.is_leaf()) {
         // The second child is the nearer one when the ray runs towards -split_axis.

@@ -45,6 +45,11 @@ struct DirectVariant {
   bool divide_by_choice = true;    // false: the light's sample not divided by the probability of choosing it
   bool shadow_ray = true;          // false: no shadow ray, light passes through everything
   bool shadow_ray_stops = true;    // false: the shadow ray a unit direction, t_max left at infinity
+  bool f_is_albedo = false;        // true: the estimator's own f = the albedo, not bsdf_f (1 / pi missing)
+  bool intensity_grey = false;     // point_light_intensity: every channel from the red one's power
+  bool irradiance_squared = true;  // false: point_light_irradiance I cos / d, the distance not squared
+  bool irradiance_behind_zero = true;  // false: point_light_irradiance negative for a light behind the surface
+  bool light_from_behind = false;  // the estimator weighs a light sample behind the surface by |cos| (lit)
   // Correct variants.
   bool lights_by_power = false;    // the light chosen with probability proportional to its power
 };
@@ -95,6 +100,8 @@ inline std::optional<DirectSample> unblocked_light_sample(const RenderContext& c
   if (!light) return std::nullopt;
   sample.light = *light;
   sample.f = bsdf_f(bsdf, hit.geometric_normal, wo, light->direction);
+  if (v.f_is_albedo && sample.f != glm::vec3(0.0f)) sample.f = bsdf.albedo;
+  if (v.light_from_behind && sample.f == glm::vec3(0.0f)) sample.f = bsdf.albedo / kPi;  // f without its side test
   if (sample.f == glm::vec3(0.0f)) return std::nullopt;
   if (!v.shadow_ray) return sample;
   Ray shadow;
@@ -138,16 +145,21 @@ inline constexpr DirectVariant kDirectVariant = [] {
 
 glm::vec3 point_light_intensity(const glm::vec3& power) {
   if (submission::kDirectVariant.intensity_over_pi) return power / kPi;
+  if (submission::kDirectVariant.intensity_grey) return glm::vec3(power.x / (4.0f * kPi));
   return reference_point_light_intensity(power);
 }
 
 glm::vec3 point_light_irradiance(const glm::vec3& intensity, const glm::vec3& light_position, const glm::vec3& point,
                                  const glm::vec3& normal) {
-  if (submission::kDirectVariant.irradiance_cosine)
+  const submission::DirectVariant& v = submission::kDirectVariant;
+  if (v.irradiance_cosine && v.irradiance_squared && v.irradiance_behind_zero)
     return reference_point_light_irradiance(intensity, light_position, point, normal);
   const glm::vec3 to_light = light_position - point;
-  if (glm::dot(normal, to_light) <= 0.0f) return glm::vec3(0.0f);
-  return intensity / glm::dot(to_light, to_light);
+  const float distance = glm::length(to_light);
+  const float cosine = glm::dot(normal, to_light) / distance;
+  if (v.irradiance_behind_zero && cosine <= 0.0f) return glm::vec3(0.0f);
+  const float falloff = v.irradiance_squared ? distance * distance : distance;
+  return intensity * ((v.irradiance_cosine ? cosine : 1.0f) / falloff);
 }
 
 glm::vec3 lambertian_f(const glm::vec3& albedo) {

@@ -18,6 +18,10 @@ struct MicrofacetVariant {
   bool f_fresnel_at_normal = false;     // Schlick's Fresnel at wi.z instead of dot(wi, h)
   bool half_vector_no_sqrt = false;     // tan(theta) = alpha u / (1 - u)
   bool pdf_no_jacobian = false;         // microfacet_pdf = the half vector's density
+  bool horizon_checks = true;           // false: D, G1, f and both densities never return 0 below the surface
+  bool g1_tan_not_squared = false;      // G1 = 2 / (1 + sqrt(1 + alpha^2 tan(theta)))
+  bool g1_no_factor_two = false;        // G1 = 1 / (1 + sqrt(1 + alpha^2 tan^2(theta))): 1/2 along the normal
+  bool half_vector_below = false;       // the half vector's z negated (below the surface)
 };
 
 inline MicrofacetVariant microfacet_variant() {
@@ -33,22 +37,25 @@ namespace raylab {
 float ggx_distribution(const glm::vec3& half_vector, float alpha) {
   const submission::MicrofacetVariant v = submission::microfacet_variant();
   const float c = half_vector.z;
-  if (!(c > 0.0f)) return 0.0f;
+  if (v.horizon_checks && !(c > 0.0f)) return 0.0f;
   const float a = v.d_alpha_squared_first ? alpha * alpha : alpha;
   const float a2 = a * a, k = (a2 - 1.0f) * c * c + 1.0f;
   return a2 / ((v.d_no_inverse_pi ? 1.0f : 3.14159265f) * k * k);
 }
 
 float ggx_smith_g1(const glm::vec3& direction, float alpha) {
+  const submission::MicrofacetVariant v = submission::microfacet_variant();
   const float c = direction.z;
-  if (!(c > 0.0f)) return 0.0f;
+  if (v.horizon_checks && !(c > 0.0f)) return 0.0f;
   const float c2 = std::min(1.0f, c * c);
-  return 2.0f / (1.0f + std::sqrt(1.0f + alpha * alpha * (1.0f - c2) / c2));
+  const float tan2 = (1.0f - c2) / c2;
+  return (v.g1_no_factor_two ? 1.0f : 2.0f) /
+         (1.0f + std::sqrt(1.0f + alpha * alpha * (v.g1_tan_not_squared ? std::sqrt(tan2) : tan2)));
 }
 
 glm::vec3 microfacet_f(const glm::vec3& wo, const glm::vec3& wi, float alpha, const glm::vec3& specular_color) {
   const submission::MicrofacetVariant v = submission::microfacet_variant();
-  if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return glm::vec3(0.0f);
+  if (v.horizon_checks && (!(wo.z > 0.0f) || !(wi.z > 0.0f))) return glm::vec3(0.0f);
   const glm::vec3 h = glm::normalize(wo + wi);
   const float m = 1.0f - std::clamp(v.f_fresnel_at_normal ? wi.z : glm::dot(wi, h), 0.0f, 1.0f);
   const glm::vec3 fresnel = specular_color + (glm::vec3(1.0f) - specular_color) * (m * m * m * m * m);
@@ -63,11 +70,12 @@ glm::vec3 sample_ggx_half_vector(glm::vec2 uniform_random, float alpha) {
   const float cos_theta = 1.0f / std::sqrt(1.0f + tan2);
   const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
   const float phi = 6.28318531f * uniform_random.y;
-  return glm::vec3(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta);
+  return glm::vec3(sin_theta * std::cos(phi), sin_theta * std::sin(phi), v.half_vector_below ? -cos_theta : cos_theta);
 }
 
 float ggx_half_vector_pdf(const glm::vec3& half_vector, float alpha) {
-  return half_vector.z > 0.0f ? ggx_distribution(half_vector, alpha) * half_vector.z : 0.0f;
+  const submission::MicrofacetVariant v = submission::microfacet_variant();
+  return half_vector.z > 0.0f || !v.horizon_checks ? ggx_distribution(half_vector, alpha) * half_vector.z : 0.0f;
 }
 
 glm::vec3 sample_microfacet_wi(const glm::vec3& wo, glm::vec2 uniform_random, float alpha) {
@@ -77,7 +85,7 @@ glm::vec3 sample_microfacet_wi(const glm::vec3& wo, glm::vec2 uniform_random, fl
 
 float microfacet_pdf(const glm::vec3& wo, const glm::vec3& wi, float alpha) {
   const submission::MicrofacetVariant v = submission::microfacet_variant();
-  if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return 0.0f;
+  if (v.horizon_checks && (!(wo.z > 0.0f) || !(wi.z > 0.0f))) return 0.0f;
   const glm::vec3 h = glm::normalize(wo + wi);
   return ggx_half_vector_pdf(h, alpha) / (v.pdf_no_jacobian ? 1.0f : 4.0f * std::fabs(glm::dot(wo, h)));
 }

@@ -33,6 +33,8 @@ struct PathVariant {
   bool one_surface_short = false;         // true: a loop depth < max_depth (the last surface left out)
   bool shadow_ray_hits_light = false;     // true: its own direct light, whose shadow ray runs to infinity
                                           // (a unit direction, t_max infinite) and so hits the light itself
+  bool play_roulette = true;              // false: no Russian roulette (every path goes on to max_depth)
+  bool emission_after_specular = true;    // false: no emission counted after a mirror or glass bounce
   // Correct variants.
   bool uniform_hemisphere = false;        // diffuse bounces sampled uniformly (pdf 1 / (2 pi))
   bool throughput_roulette = false;       // roulette by the throughput, p = min(1, max channel)
@@ -62,7 +64,7 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
     const glm::vec3 emitted = emitted_radiance(material, *hit, ray.direction);
     if (depth == 0) {
       if (v.emission_at_camera_hit) radiance += throughput * emitted;
-    } else if (previous_specular || v.emission_after_diffuse) {
+    } else if ((previous_specular && v.emission_after_specular) || v.emission_after_diffuse) {
       radiance += throughput * emitted;
     }
     const Bsdf bsdf = bsdf_of(material, diffuse_color_at(material, *hit));
@@ -73,7 +75,7 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
     if (depth >= context.max_depth) return radiance;
     float p = context.continue_probability(depth, throughput);
     if (v.throughput_roulette) p = std::min(1.0f, std::max({throughput.x, throughput.y, throughput.z, 0.05f}));
-    if (p < 1.0f) {
+    if (p < 1.0f && v.play_roulette) {
       if (sampler.get_1d() >= p) return radiance;
       if (v.divide_by_roulette) throughput /= p;
     }

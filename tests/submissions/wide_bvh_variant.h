@@ -19,6 +19,14 @@ struct WideBvhVariant {
   bool nan_loses_the_box = false;    // max(enter, 0 * infinity) taken as NaN: the box is lost
   bool min_max_slabs_unmasked = false;  // slabs by min/max of the two planes, empty slots not masked
   bool far_first_no_pruning = false;  // children visited farthest first, nothing skipped beyond a hit
+  bool order_reversed = false;       // the wide tree's primitive_order reversed (the leaves' ranges kept)
+  bool empty_slots_zero_boxes = false;  // unused slots get the box [0, 0] instead of empty_bvh4_node()'s
+  bool boxes_shrunk = false;         // every slot's box shrunk by a tenth of its size on x
+  bool leaf_root_dropped = false;    // a binary tree of one leaf gives a wide root with no child
+  bool empty_tree_gets_a_node = false;  // an empty binary tree gives one empty wide node
+  bool box4_ignores_t_max = false;   // intersect_ray_box4 exits at infinity, not at ray.t_max
+  bool entry_is_exit = false;        // entry_distances[i] is where the ray leaves the box
+  bool nodes_not_counted = false;    // stats.nodes_visited never incremented
   // Correct variants.
   bool two_levels = false;  // the collapse takes the grandchildren of both children, no surface areas
 };
@@ -41,7 +49,7 @@ std::uint32_t collapse_node(const Bvh& binary, std::uint32_t index, Bvh4& wide) 
   std::vector<std::uint32_t> children;
   const BvhNode& node = binary.nodes[index];
   if (node.is_leaf()) {
-    children = {index};
+    if (!v.leaf_root_dropped) children = {index};
   } else if (v.no_collapse) {
     children = {node.first_index, node.first_index + 1};
   } else if (v.two_levels) {
@@ -69,11 +77,17 @@ std::uint32_t collapse_node(const Bvh& binary, std::uint32_t index, Bvh4& wide) 
     }
   }
   wide.nodes[at].child_count = static_cast<std::uint8_t>(children.size());
+  if (v.empty_slots_zero_boxes)
+    for (std::size_t i = children.size(); i < kBvh4Width; ++i) {
+      Bvh4Node& slot = wide.nodes[at];
+      slot.min_x[i] = slot.min_y[i] = slot.min_z[i] = slot.max_x[i] = slot.max_y[i] = slot.max_z[i] = 0.0f;
+    }
   for (std::size_t i = 0; i < children.size(); ++i) {
     const BvhNode& child = binary.nodes[children[i]];
     Bvh4Node& slot = wide.nodes[at];
     slot.min_x[i] = child.bounds.min.x, slot.min_y[i] = child.bounds.min.y, slot.min_z[i] = child.bounds.min.z;
     slot.max_x[i] = child.bounds.max.x, slot.max_y[i] = child.bounds.max.y, slot.max_z[i] = child.bounds.max.z;
+    if (v.boxes_shrunk) slot.max_x[i] -= 0.1f * (child.bounds.max.x - child.bounds.min.x);
     if (child.is_leaf()) {
       wide.nodes[at].child[i] = child.first_index;
       wide.nodes[at].primitive_count[i] = child.primitive_count;
@@ -88,9 +102,14 @@ std::uint32_t collapse_node(const Bvh& binary, std::uint32_t index, Bvh4& wide) 
 }  // namespace
 
 Bvh4 collapse_bvh4(const Bvh& binary) {
+  const submission::WideBvhVariant v = submission::wide_bvh_variant();
   Bvh4 wide;
-  if (binary.nodes.empty()) return wide;
+  if (binary.nodes.empty()) {
+    if (v.empty_tree_gets_a_node) wide.nodes.push_back(empty_bvh4_node());
+    return wide;
+  }
   wide.primitive_order = binary.primitive_order;
+  if (v.order_reversed) std::reverse(wide.primitive_order.begin(), wide.primitive_order.end());
   collapse_node(binary, 0, wide);
   return wide;
 }
@@ -102,7 +121,7 @@ unsigned intersect_ray_box4(const Ray& ray, const glm::vec3& ray_direction_inver
   const int slots = v.min_max_slabs_unmasked ? kBvh4Width : node.child_count;
   for (int i = 0; i < slots; ++i) {
     const Bounds3 box = node.child_bounds(i);
-    float enter = ray.t_min, exit = ray.t_max;
+    float enter = ray.t_min, exit = v.box4_ignores_t_max ? kInfinity : ray.t_max;
     for (int axis = 0; axis < 3; ++axis) {
       const float inverse = ray_direction_inverse[axis];
       float near_t, far_t;
@@ -124,7 +143,7 @@ unsigned intersect_ray_box4(const Ray& ray, const glm::vec3& ray_direction_inver
         if (far_t < exit) exit = far_t;
       }
     }
-    entry_distances[i] = enter;
+    entry_distances[i] = v.entry_is_exit ? exit : enter;
     if (enter <= exit) mask |= 1u << i;
   }
   return mask;
@@ -145,7 +164,7 @@ std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const Prim
     const Bvh4Node& node = bvh.nodes[index];
     float entries[kBvh4Width];
     const unsigned mask = intersect_ray_box4(v.far_first_no_pruning ? ray : search, inverse, node, entries);
-    ++stats.nodes_visited;
+    if (!v.nodes_not_counted) ++stats.nodes_visited;
     std::vector<std::pair<float, int>> hit;
     for (int i = 0; i < node.child_count; ++i)
       if (mask & (1u << i)) hit.push_back({entries[i], i});
