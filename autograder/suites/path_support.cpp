@@ -24,8 +24,10 @@ PathRenderRequest furnace_request(int index, std::uint64_t seed) {
   return request;
 }
 
-FurnaceRender render_furnace(int index, std::uint64_t seed, bool mis) {
-  PathRenderRequest request = furnace_request(index, seed);
+namespace {
+
+// The furnace rendered as `request` asks: its finite pixel means (red) and the count of the others.
+FurnaceRender furnace_pixels(PathRenderRequest request, bool mis) {
   request.mis = mis ? 1 : 0;
   const PathRenderResult result = path_render("scenes/furnace.json", request);
   FurnaceRender render;
@@ -34,6 +36,12 @@ FurnaceRender render_furnace(int index, std::uint64_t seed, bool mis) {
     else render.pixel_means.push_back(v.x);
   }
   return render;
+}
+
+}  // namespace
+
+FurnaceRender render_furnace(int index, std::uint64_t seed, bool mis) {
+  return furnace_pixels(furnace_request(index, seed), mis);
 }
 
 testkit::MeanTestResult furnace_mean_test(const std::vector<double>& pixel_means, double expected, double level,
@@ -105,15 +113,8 @@ void add_furnace_spread_failure(int index, const FurnaceSpreadResult& result, do
 FurnaceRender render_furnace_paths(int index, std::uint64_t seed, bool mis) {
   PathRenderRequest request = furnace_request(index, seed);
   request.width = request.height = kShortPathsSide;
-  request.samples_per_pixel = 1;
-  request.mis = mis ? 1 : 0;
-  const PathRenderResult result = path_render("scenes/furnace.json", request);
-  FurnaceRender render;
-  for (const glm::vec3& v : result.mean.pixels()) {
-    if (!is_finite(v)) ++render.not_finite;
-    else render.pixel_means.push_back(v.x);
-  }
-  return render;
+  request.samples_per_pixel = 1;  // one path per pixel
+  return furnace_pixels(request, mis);
 }
 
 double short_path_limit(const Furnace& furnace) {
