@@ -55,6 +55,8 @@ bool touches(const Ray& ray, const glm::vec3& center, float radius) {
 void diagnose(const Ray& ray, const glm::vec3& center, float radius, std::optional<float> got, std::optional<float> expected) {
   const bool origin_inside = glm::length(ray.origin - center) < radius;
   if (got && hint_if_not_finite("t", {*got}, MessageId::sphere_advice_negative_discriminant)) {
+  } else if (got && (*got == ray.t_min || *got == ray.t_max)) {
+    add_hint({MessageId::interval_end_counted, {{"t", std::to_string(*got)}, {"end", *got == ray.t_min ? "t_min" : "t_max"}}});
   } else if (got && !(*got > ray.t_min)) {
     add_hint({MessageId::sphere_hit_behind, {{"t", std::to_string(*got)}}});
   } else if (got && !(*got < ray.t_max)) {
@@ -124,6 +126,9 @@ GRADED_TEST(kStage, Stage02Sphere, RespectsTMinAndTMax, 3) {
   expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}, 4.5f), {0, 0, -5}, 1.0f, 6.0f);               // near one before t_min
   expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}, 0.0f, 5.0f), {0, 0, -5}, 1.0f, 4.0f);
   expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}, 6.5f), {0, 0, -5}, 1.0f, std::nullopt);       // both before t_min
+  // Both ends excluded: a root exactly at t_min or t_max does not count (4 and 6 are exact in float).
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}, 4.0f), {0, 0, -5}, 1.0f, 6.0f);
+  expect_sphere(make_ray({0, 0, 0}, {0, 0, -1}, 0.0f, 4.0f), {0, 0, -5}, 1.0f, std::nullopt);
 }
 
 GRADED_TEST(kStage, Stage02Sphere, GrazingRays, 1) {

@@ -31,6 +31,9 @@ void diagnose(const Ray& ray, std::optional<TriangleHit> got, std::optional<Tria
   if (got && (hint_if_not_finite("t_hit", {got->t_hit}, kZeroDeterminant) ||
               hint_if_not_finite("barycentric_b1", {got->barycentric_b1}, kZeroDeterminant) ||
               hint_if_not_finite("barycentric_b2", {got->barycentric_b2}, kZeroDeterminant))) {
+  } else if (got && (got->t_hit == ray.t_min || got->t_hit == ray.t_max)) {
+    add_hint({MessageId::interval_end_counted,
+              {{"t", std::to_string(got->t_hit)}, {"end", got->t_hit == ray.t_min ? "t_min" : "t_max"}}});
   } else if (got && !(got->t_hit > ray.t_min)) {
     add_hint({MessageId::triangle_hit_behind, {{"t", std::to_string(got->t_hit)}}});
   } else if (got && !(got->t_hit < ray.t_max)) {
@@ -124,6 +127,9 @@ GRADED_TEST(kStage, Stage03Triangle, RespectsTMinAndTMax, 2) {
   expect_triangle(make_ray({0.2f, 0.3f, 0}, {0, 0, -1}, 0.0f, 1.5f), kP0, kP1, kP2, std::nullopt);
   expect_triangle(make_ray({0.2f, 0.3f, 0}, {0, 0, -1}, 2.5f), kP0, kP1, kP2, std::nullopt);
   expect_triangle(make_ray({0.2f, 0.3f, 0}, {0, 0, -1}, 1.5f, 2.5f), kP0, kP1, kP2, TriangleHit{2.0f, 0.2f, 0.3f});
+  // Both ends excluded: a hit exactly at t_min or t_max does not count (t = 2 is exact in float).
+  expect_triangle(make_ray({0.2f, 0.3f, 0}, {0, 0, -1}, 2.0f), kP0, kP1, kP2, std::nullopt);
+  expect_triangle(make_ray({0.2f, 0.3f, 0}, {0, 0, -1}, 0.0f, 2.0f), kP0, kP1, kP2, std::nullopt);
 }
 
 GRADED_TEST(kStage, Stage03Triangle, ParallelRaysAndDegenerateTriangles, 2) {

@@ -78,6 +78,8 @@ void diagnose(const Ray& ray, const Bounds3& box, std::optional<float> got, std:
     add_hint(MessageId::box_ignores_t_max);
   } else if (got && !expected) {
     add_hint(MessageId::box_false_hit);
+  } else if (!got && expected && (*expected == ray.t_max || line_exit(ray, box) == std::optional<double>(ray.t_min))) {
+    add_hint(MessageId::box_end_excluded);
   } else if (!got && expected && is_flat(box)) {
     add_hint(MessageId::box_flat_missed);
   } else if (!got && expected && zero_component) {
@@ -137,6 +139,9 @@ GRADED_TEST(kStage, Stage04Box, RespectsTMinAndTMax, 2) {
   expect_box(make_ray({0, 0, -5}, {0, 0, 1}, 0.0f, 3.0f), kUnitBox, std::nullopt);  // ends before the box
   expect_box(make_ray({0, 0, -5}, {0, 0, 1}, 6.5f), kUnitBox, std::nullopt);        // starts after it
   expect_box(make_ray({0, 0, -5}, {0, 0, 1}, 5.0f, 8.0f), kUnitBox, 5.0f);          // starts inside it
+  // Both ends included: a box entered exactly at t_max, or left exactly at t_min, is hit.
+  expect_box(make_ray({0, 0, -5}, {0, 0, 1}, 0.0f, 4.0f), kUnitBox, 4.0f);
+  expect_box(make_ray({0, 0, -5}, {0, 0, 1}, 6.0f), kUnitBox, 6.0f);
 }
 
 GRADED_TEST(kStage, Stage04Box, ZeroDirectionComponents, 3) {

@@ -14,6 +14,7 @@ namespace raylab::submission {
 struct TriangleVariant {
   bool check_t_max = true;             // false: hits beyond t_max accepted
   bool normalise_direction = false;    // true: t measured along the normalised direction
+  bool ends_included = false;          // true: t >= t_min and t <= t_max count
 };
 
 inline std::optional<TriangleHit> triangle_variant(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1,
@@ -26,8 +27,9 @@ inline std::optional<TriangleHit> triangle_variant(const Ray& ray, const glm::ve
   const float t = glm::dot(s2, edge_02) / det;
   const float b1 = glm::dot(s1, s) / det;
   const float b2 = glm::dot(s2, direction) / det;
-  if (b1 < 0.0f || b2 < 0.0f || b1 + b2 > 1.0f || !(t > ray.t_min)) return std::nullopt;
-  if (v.check_t_max && !(t < ray.t_max)) return std::nullopt;
+  if (b1 < 0.0f || b2 < 0.0f || b1 + b2 > 1.0f) return std::nullopt;
+  if (v.ends_included ? !(t >= ray.t_min) : !(t > ray.t_min)) return std::nullopt;
+  if (v.check_t_max && (v.ends_included ? !(t <= ray.t_max) : !(t < ray.t_max))) return std::nullopt;
   return TriangleHit{t, b1, b2};
 }
 
