@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 namespace raylab::grading {
 namespace {
@@ -24,6 +25,26 @@ const bool kBonusRegistered = register_stage(kBonusStage, [] { (void)build_bvh_s
 using Builder = Bvh (*)(const std::vector<Bounds3>&, int);
 
 void expect_valid_trees(Builder build, const char* builder_name) {
+  // No primitives: an empty tree. A max_leaf_size above kBvhMaxLeafSize (primitive_count is 16
+  // bits): std::invalid_argument (not 0 or less, which a builder without the check could split
+  // forever).
+  const Bvh empty = build({}, kLeafSize);
+  if (!empty.nodes.empty() || !empty.primitive_order.empty()) {
+    add_failure({MessageId::bvh_failure_empty_input,
+                 {{"builder", builder_name}, {"nodes", std::to_string(empty.nodes.size())}}});
+    add_hint(MessageId::bvh_empty_input);
+  }
+  bool thrown = false;
+  try {
+    (void)build(kProbeBoxes, kBvhMaxLeafSize + 1);
+  } catch (const std::invalid_argument&) {
+    thrown = true;
+  }
+  if (!thrown) {
+    add_failure({MessageId::bvh_failure_leaf_size_accepted,
+                 {{"builder", builder_name}, {"size", std::to_string(kBvhMaxLeafSize + 1)}}});
+    add_hint({MessageId::bvh_leaf_size_not_checked, {{"largest", std::to_string(kBvhMaxLeafSize)}}});
+  }
   bool hinted = false;
   for (const TestMesh& mesh : bvh_test_meshes()) {
     const Bvh bvh = build(mesh.bounds, kLeafSize);
