@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <exception>
 #include <stdexcept>
 
 namespace raylab::grading {
@@ -60,7 +61,7 @@ std::vector<TestInfo>& test_registry() {
 }
 
 struct CurrentTest {
-  std::vector<Message> hints, notes;
+  std::vector<Message> hints, notes, hints_if_lost;
   std::vector<ImageComparison> images;
   std::vector<Message> failures;  // add_failure's, in order, until the listener has seen each
   std::vector<Message> thrown;    // exception_text's: the exceptions the judge threw in the test
@@ -211,7 +212,8 @@ class Recorder : public ::testing::EmptyTestEventListener {
 
   void OnTestEnd(const ::testing::TestInfo& info) override {
     on_end_(TestRecord{full_name(info), info.result()->Passed(), not_implemented_, messages_, readable(current().hints),
-                       readable(current().notes), current().images, blocked_by_, blocked_function_});
+                       readable(current().notes), current().images, blocked_by_, blocked_function_,
+                       readable(current().hints_if_lost)});
   }
 
  private:
@@ -299,6 +301,12 @@ void add_hint(const Message& hint) {
 }
 
 void add_note(const Message& note) { current().notes.push_back(note); }
+
+HintIfLost::HintIfLost(const Message& hint) { current().hints_if_lost.push_back(hint); }
+// (A lost call throws StageLost through it: then the hint stays for the test's end to show.)
+HintIfLost::~HintIfLost() {
+  if (std::uncaught_exceptions() == 0 && !current().hints_if_lost.empty()) current().hints_if_lost.pop_back();
+}
 
 void add_image(const ImageComparison& images) { current().images.push_back(images); }
 

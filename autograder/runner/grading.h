@@ -66,6 +66,17 @@ const std::vector<TestInfo>& tests();
 // Inside a test: a hint for the student, shown with the failure (deduplicated). A hint is an entry
 // of messages.def: add_hint({MessageId::sphere_hit_behind, {{"t", std::to_string(t)}}}).
 void add_hint(const Message& hint);
+// Inside a test, while it lives: the hint to show if the stage is lost (a crash, a time-out) during
+// the calls it covers. A lost test shows only why it was lost; the judge knows which case it was
+// running, which the student's crashed code cannot say:
+//   { const HintIfLost hint(MessageId::direct_estimate_no_lights); samples = direct_light_samples(...); }
+class HintIfLost {
+ public:
+  explicit HintIfLost(const Message& hint);
+  ~HintIfLost();
+  HintIfLost(const HintIfLost&) = delete;
+  HintIfLost& operator=(const HintIfLost&) = delete;
+};
 // Inside a test: a failure whose text is an entry of messages.def. GoogleTest records it in English;
 // the judge shows it in this run's language. (A plain GoogleTest failure is shown as it is.)
 void add_failure(const Message& failure);
@@ -119,6 +130,7 @@ struct TestRecord {
   // rounding of stage 04's box test), and the function it ran into: the test is blocked by that
   // stage, not failed by its own ("" when the stub, if any, is the test's own stage's).
   std::string blocked_by, blocked_function;
+  std::vector<Message> hints_if_lost;  // HintIfLost's, of the calls running when the test ended
 };
 // The judge: calls on_test_start before each test and on_test_end after it.
 void install_recorder(std::function<void(const std::string&)> on_test_start,

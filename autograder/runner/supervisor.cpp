@@ -90,7 +90,7 @@ StageResult grade_stage(const StageInfo& stage, const std::string& server_path) 
                            if (const auto loss = StageSession::instance().test_loss()) {
                              t.status = Status::Lost;  // whatever the test concluded without the stage's answers
                              t.messages = {*loss};
-                             t.hints.clear();
+                             t.hints = record.hints_if_lost;  // what the judge knows of the case it was running
                              t.notes.clear();
                              t.images.clear();
                              return;

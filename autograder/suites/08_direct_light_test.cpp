@@ -404,6 +404,21 @@ GRADED_TEST(kStage, Stage08DirectLight, ShadowRaysAndBackFaces, 3) {
     add_failure({MessageId::direct_failure_lit_behind, {{"count", std::to_string(lit_behind)}, {"total", "2000"}}});
     add_hint({MessageId::direct_estimate_from_behind, {}});
   }
+  // A scene with no light at all (one black triangle): nothing to choose, every sample black.
+  DirectLightScene dark;
+  dark.triangles.push_back({glm::vec3(-3, 2, -3), glm::vec3(-3, 2, 3), glm::vec3(3, 2, 3), glm::vec3(0.0f)});
+  const DirectLightQuery unlit{glm::vec3(0, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), glm::vec3(0.8f), 100};
+  std::vector<glm::vec3> dark_samples;
+  {
+    const HintIfLost hint(MessageId::direct_estimate_no_lights);  // (choosing from no light may crash)
+    dark_samples = direct_light_samples(dark, {unlit}, test_seed(11));
+  }
+  std::size_t lit_dark = 0;
+  for (const glm::vec3& sample : dark_samples) lit_dark += sample != glm::vec3(0.0f);
+  if (lit_dark > 0) {
+    add_failure({MessageId::direct_failure_lit_without_lights, {{"count", std::to_string(lit_dark)}, {"total", "100"}}});
+    add_hint({MessageId::direct_estimate_no_lights, {}});
+  }
 }
 
 GRADED_TEST(kStage, Stage08DirectLight, EstimatorPointLightExact, 1) {

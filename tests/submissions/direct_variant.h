@@ -50,6 +50,7 @@ struct DirectVariant {
   bool irradiance_squared = true;  // false: point_light_irradiance I cos / d, the distance not squared
   bool irradiance_behind_zero = true;  // false: point_light_irradiance negative for a light behind the surface
   bool light_from_behind = false;  // the estimator weighs a light sample behind the surface by |cos| (lit)
+  bool check_no_lights = true;     // false: lights.choose() called on an empty light list
   // Correct variants.
   bool lights_by_power = false;    // the light chosen with probability proportional to its power
 };
@@ -92,7 +93,7 @@ struct DirectSample {
 inline std::optional<DirectSample> unblocked_light_sample(const RenderContext& context, const DirectVariant& v,
                                                           const SurfaceHit& hit, const Bsdf& bsdf,
                                                           const glm::vec3& wo, Sampler& sampler) {
-  if (context.lights.empty()) return std::nullopt;
+  if (v.check_no_lights && context.lights.empty()) return std::nullopt;
   DirectSample sample;
   const std::optional<std::size_t> chosen = choose_light(context.lights, v, sampler.get_1d(), &sample.choice);
   if (!chosen) return std::nullopt;
