@@ -4,12 +4,15 @@
 #include "grading.h"
 
 #include "raylab/bvh_tools.h"
+#include "raylab/math.h"
 #include "raylab/stages/05_bvh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace raylab::grading {
 namespace {
@@ -129,6 +132,40 @@ GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
     add_failure({MessageId::bvh_failure_small_node_split,
                  {{"node", std::to_string(first_small)}, {"count", std::to_string(counts[first_small])},
                   {"leaf_size", std::to_string(kLeafSize)}, {"nodes", std::to_string(split_small)}}});
+  }
+  // The root's first child holds the smaller centroids along split_axis (a traversal enters the
+  // nearer child first by that order): the largest of its primitives' centroids is at most the
+  // smallest of the second child's. Judged on a valid tree only.
+  const int axis = root.split_axis;
+  const auto centroid_range = [&](std::size_t top) {
+    float low = kInfinity, high = -kInfinity;
+    std::vector<std::size_t> below{top};
+    while (!below.empty()) {
+      const std::size_t index = below.back();
+      below.pop_back();
+      const BvhNode& node = bvh.nodes[index];
+      if (node.is_leaf()) {
+        for (std::uint32_t i = node.first_index; i < node.first_index + node.primitive_count && i < bvh.primitive_order.size(); ++i) {
+          const std::uint32_t primitive = bvh.primitive_order[i];
+          if (primitive >= bunny.bounds.size()) continue;
+          const float c = bunny.bounds[primitive].centroid()[axis];
+          low = std::min(low, c);
+          high = std::max(high, c);
+        }
+      } else if (children_in_range(bvh, node) && node.first_index > index) {
+        below.push_back(node.first_index);
+        below.push_back(node.first_index + 1);
+      }
+    }
+    return std::make_pair(low, high);
+  };
+  if (axis < 3 && !find_bvh_violation(bvh, bunny.bounds, kLeafSize)) {  // (a broken tree is BuildsAValidTree's)
+    const float first_high = centroid_range(root.first_index).second, second_low = centroid_range(root.first_index + 1).first;
+    if (first_high > second_low) {
+      add_hint(MessageId::bvh_children_swapped);
+      add_failure({MessageId::bvh_failure_children_order,
+                   {{"axis", std::to_string(axis)}, {"first", stream_text(first_high)}, {"second", stream_text(second_low)}}});
+    }
   }
 }
 
