@@ -302,10 +302,12 @@ void add_hint(const Message& hint) {
 
 void add_note(const Message& note) { current().notes.push_back(note); }
 
-HintIfLost::HintIfLost(const Message& hint) { current().hints_if_lost.push_back(hint); }
+HintIfLost::HintIfLost(const Message& hint) : exceptions_(std::uncaught_exceptions()) {
+  current().hints_if_lost.push_back(hint);
+}
 // (A lost call throws StageLost through it: then the hint stays for the test's end to show.)
 HintIfLost::~HintIfLost() {
-  if (std::uncaught_exceptions() == 0 && !current().hints_if_lost.empty()) current().hints_if_lost.pop_back();
+  if (std::uncaught_exceptions() == exceptions_ && !current().hints_if_lost.empty()) current().hints_if_lost.pop_back();
 }
 
 void add_image(const ImageComparison& images) { current().images.push_back(images); }

@@ -76,6 +76,9 @@ class HintIfLost {
   ~HintIfLost();
   HintIfLost(const HintIfLost&) = delete;
   HintIfLost& operator=(const HintIfLost&) = delete;
+
+ private:
+  int exceptions_;  // in flight when it began: more at its end means a call threw through it
 };
 // Inside a test: a failure whose text is an entry of messages.def. GoogleTest records it in English;
 // the judge shows it in this run's language. (A plain GoogleTest failure is shown as it is.)
