@@ -85,12 +85,7 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const Primit
         read.counted_tests = in.get<std::uint64_t>();
         return read;
       },
-      [&](Reader& question, Writer& answer) {  // one primitive test of another intersector
-        const Ray asked = question.get<Ray>();
-        const auto primitive = question.get<std::uint32_t>();
-        question.expect_end();
-        answer.put_optional(intersector.test(intersector.context, asked, primitive));
-      });
+      grading::answer_primitive_tests(intersector));
   sent_nodes.returned(bvh.nodes);
   sent_order.returned(bvh.primitive_order);
   if (grader_test) sent_triangles.returned(*triangles);
@@ -99,6 +94,15 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const Primit
   stats.nodes_visited += reply.nodes_visited;
   stats.primitives_tested += grader_test ? reply.counted_tests : reply.reported_tests;
   return reply.hit;
+}
+
+grading::StageSession::Callback grading::answer_primitive_tests(const PrimitiveIntersector& intersector) {
+  return [intersector](Reader& question, Writer& answer) {
+    const Ray asked = question.get<Ray>();
+    const auto primitive = question.get<std::uint32_t>();
+    question.expect_end();
+    answer.put_optional(intersector.test(intersector.context, asked, primitive));
+  };
 }
 
 std::vector<std::optional<BvhHit>> grading::intersect_bvh_each(const Bvh& bvh, const std::vector<Triangle>& triangles,
@@ -125,6 +129,15 @@ std::vector<std::optional<BvhHit>> grading::intersect_bvh_each(const Bvh& bvh, c
 }
 
 #else
+std::optional<float> grading::primitive_test_through_judge(void*, const Ray& ray, std::uint32_t primitive) {
+  Writer question;
+  question.put(ray);
+  question.put(primitive);
+  const std::string answer = grading::ask_judge(question);
+  Reader in(answer);
+  return in.get_optional<float>();
+}
+
 namespace {
 
 template <Bvh (*builder)(const std::vector<Bounds3>&, int)>
@@ -134,16 +147,6 @@ void serve_build(Reader& in, Writer& out) {
   const Bvh bvh = builder(boxes, max_leaf_size);
   out.put_vector(bvh.nodes);
   out.put_vector(bvh.primitive_order);
-}
-
-// The judge's intersector when it is not the grader's triangle test: each test is a round trip.
-std::optional<float> test_through_judge(void*, const Ray& ray, std::uint32_t primitive) {
-  Writer question;
-  question.put(ray);
-  question.put(primitive);
-  const std::string answer = grading::ask_judge(question);
-  Reader in(answer);
-  return in.get_optional<float>();
 }
 
 // What the judge sent for earlier calls of intersect_bvh and intersect_bvh_each.
@@ -158,7 +161,7 @@ void serve_intersect_bvh(Reader& in, Writer& out) {
   const auto ray = in.get<Ray>();
   const bool any_hit = in.get<std::uint8_t>() != 0;
   grading::CountedTests counting{grader_test ? PrimitiveIntersector{grading::grader_triangle_test, &triangles}
-                                       : PrimitiveIntersector{test_through_judge, nullptr}};
+                                       : PrimitiveIntersector{grading::primitive_test_through_judge, nullptr}};
   BvhTraversalStats stats;
   const std::optional<BvhHit> hit = intersect_bvh(bvh, ray, PrimitiveIntersector{grading::counting_test, &counting}, any_hit, stats);
   out.put_optional(hit);

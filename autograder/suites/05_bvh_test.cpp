@@ -200,8 +200,10 @@ GRADED_TEST(kStage, Stage05Bvh, DoesNoMoreWorkThanTheReference, 3) {
   // (so that only the traversal is judged here; your build_bvh has its own tests) with the same
   // rays. Your stats.nodes_visited is counted in your process: it is checked (never below what
   // the grader knows was visited) and compared for advice, but it never earns points
-  // (docs/instructors.md, "Traversal work").
-  const TestMesh& bunny = bvh_test_meshes().front();
+  // (docs/instructors.md, "Traversal work"). The bunny is turned and moved for this run
+  // (work_test_mesh), so no triangle of it was ever sent to your process: your traversal finds its
+  // hits only through the intersector it is given, and they must be brute force's.
+  const TestMesh& bunny = work_test_mesh();
   const Bvh bvh = grader_median_tree(bunny.bounds, kLeafSize);
   std::vector<Ray> rays = rays_at(bunny, 1000, 99);
   // A traversal that tests nearly everything is judged on the first 10 rays: its verdict is
@@ -228,6 +230,11 @@ GRADED_TEST(kStage, Stage05Bvh, DoesNoMoreWorkThanTheReference, 3) {
              {"test_limit", per_ray(test_limit)}, {"your_boxes", per_ray(yours.nodes_per_ray())},
              {"reference_boxes", per_ray(reference.nodes_per_ray())}}});
 
+  if (yours.rays_answered_wrong > 0) {  // no work is no achievement when the answers are wrong
+    add_failure({MessageId::work_failure_wrong_hits,
+                 {{"wrong", gtest_text(yours.rays_answered_wrong)}, {"rays", gtest_text(rays.size())}, {"mesh", bunny.name}}});
+    return;
+  }
   const bool too_much = yours.nodes_implied_per_ray() > node_limit || yours.tests_per_ray() > test_limit;
   bool explained = false;
   if (yours.calls_beyond_a_hit > 0) {

@@ -1,8 +1,10 @@
 // Stage 05c's calls between the judge and the stage server (autograder/runner/stage_call.h): the
 // collapse, whose tree comes back whole (the suite checks every node), the four-box test in bulk,
-// and intersect_bvh4, whose primitive tests are the grader's own triangle test run in the server
-// on a copy of the mesh, counted there. The tree and the mesh go to the server only when they
-// differ from what it holds.
+// and intersect_bvh4, whose primitive tests are either the grader's own triangle test run in the
+// server on a copy of the mesh, or any other intersector (the work test's counting probe), called
+// back in the judge per primitive (05_bvh_calls.h). The tree and the mesh go to the server only
+// when they differ from what it holds.
+#include "05_bvh_calls.h"
 #include "05c_wide_bvh_calls.h"
 #include "grader_geometry.h"
 #include "stage_call.h"
@@ -60,33 +62,36 @@ unsigned intersect_ray_box4(const Ray& ray, const glm::vec3&, const Bvh4Node& no
 
 std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
                                      bool any_hit, BvhTraversalStats& stats) {
-  if (intersector.test != &grading::grader_triangle_test)
-    throw std::logic_error("the judge calls intersect_bvh4 only with the grader's triangle test");
   static grading::SentList<Bvh4Node> sent_nodes;
   static grading::SentList<std::uint32_t> sent_order;
   static grading::SentList<Triangle> sent_triangles;
-  const auto& triangles = *static_cast<const std::vector<Triangle>*>(intersector.context);
+  const bool grader_test = intersector.test == &grading::grader_triangle_test;
+  const auto* triangles = static_cast<const std::vector<Triangle>*>(intersector.context);
   Writer arguments;
   sent_nodes.put(arguments, bvh.nodes);
   sent_order.put(arguments, bvh.primitive_order);
-  sent_triangles.put(arguments, triangles);
+  arguments.put<std::uint8_t>(grader_test);
+  if (grader_test) sent_triangles.put(arguments, *triangles);
   arguments.put(ray);
   arguments.put<std::uint8_t>(any_hit);
   struct Reply {
     std::optional<BvhHit> hit;
     std::uint64_t nodes_visited = 0, primitives_tested = 0;
   };
-  const Reply reply = grading::remote(kIntersectBvh4, arguments, [](Reader& in) {
-    Reply read;
-    read.hit = in.get_optional<BvhHit>();
-    read.nodes_visited = in.get<std::uint64_t>();
-    read.primitives_tested = in.get<std::uint64_t>();
-    in.expect_end();
-    return read;
-  });
+  const Reply reply = grading::remote(
+      kIntersectBvh4, arguments,
+      [](Reader& in) {
+        Reply read;
+        read.hit = in.get_optional<BvhHit>();
+        read.nodes_visited = in.get<std::uint64_t>();
+        read.primitives_tested = in.get<std::uint64_t>();
+        in.expect_end();
+        return read;
+      },
+      grading::answer_primitive_tests(intersector));
   sent_nodes.returned(bvh.nodes);
   sent_order.returned(bvh.primitive_order);
-  sent_triangles.returned(triangles);
+  if (grader_test) sent_triangles.returned(*triangles);
   stats.nodes_visited += reply.nodes_visited;
   stats.primitives_tested += reply.primitives_tested;
   return reply.hit;
@@ -130,10 +135,12 @@ void serve_intersect_bvh4(Reader& in, Writer& out) {
   static std::vector<Triangle> triangles;
   grading::receive(in, bvh.nodes);
   grading::receive(in, bvh.primitive_order);
-  grading::receive(in, triangles);
+  const bool grader_test = in.get<std::uint8_t>() != 0;
+  if (grader_test) grading::receive(in, triangles);
   const auto ray = in.get<Ray>();
   const bool any_hit = in.get<std::uint8_t>() != 0;
-  grading::CountedTests counting{PrimitiveIntersector{grading::grader_triangle_test, &triangles}};
+  grading::CountedTests counting{grader_test ? PrimitiveIntersector{grading::grader_triangle_test, &triangles}
+                                             : PrimitiveIntersector{grading::primitive_test_through_judge, nullptr}};
   BvhTraversalStats stats;
   const std::optional<BvhHit> hit =
       intersect_bvh4(bvh, ray, PrimitiveIntersector{grading::counting_test, &counting}, any_hit, stats);

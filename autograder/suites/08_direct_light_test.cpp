@@ -9,7 +9,10 @@
 //
 // False failures: the estimator's mean tests (kMeanTests of them, one per query and channel)
 // share kGraderFalseFailureRate (1 in 1,000 for the stage, Sidak-corrected); the exact checks
-// have tolerances for float rounding that a correct implementation never exceeds.
+// have tolerances for float rounding that a correct implementation never exceeds. The mean tests
+// count the samples' variance only up to kNoisierThanCorrectAllowed times a correct estimator's
+// (variance_bound, by quadrature over each light): noise added to a biased estimate cannot hide
+// the bias.
 #include "08_direct_light_calls.h"
 #include "direct_models.h"
 #include "grading.h"
@@ -260,6 +263,102 @@ struct Expectation {
   glm::dvec3 radiance;  // the exact expected value of the estimate
 };
 
+// ---- The spread a correct estimator can have -----------------------------------------------
+
+// How many times the variance of a correct estimator the mean tests count of yours (as stage 09's
+// kNoisierThanReferenceAllowed): noise added to a biased estimate cannot widen the test past it.
+constexpr double kNoisierThanCorrectAllowed = 4.0;
+
+// One light as the variance bound sees it: the mean of the square of its sample's value (f L cos /
+// pdf, before dividing by the chance of choosing the light) over the points sample_li draws on it,
+// per channel, and its power (the sum of the channels), for a choice by power.
+struct LightMoments {
+  glm::dvec3 mean_square{0.0};
+  double power = 0;
+};
+
+// A sample of an area light at `y` (normal `light_normal`, `area` the area sample_li samples with
+// uniform density), seen from the query's point: f L cos_x cos_y area / d^2, or 0 when either
+// side faces away (an unoccluded test scene: nothing else makes it 0).
+glm::dvec3 area_sample_value(const DirectLightQuery& query, const glm::dvec3& emission, const glm::dvec3& y,
+                             const glm::dvec3& light_normal, double area) {
+  const glm::dvec3 x(query.point), to_light = y - x;
+  const double d2 = glm::dot(to_light, to_light);
+  const glm::dvec3 wi = to_light / std::sqrt(d2);
+  const double cos_x = glm::dot(glm::dvec3(query.normal), wi), cos_y = -glm::dot(light_normal, wi);
+  if (!(cos_x > 0.0 && cos_y > 0.0)) return glm::dvec3(0.0);
+  return glm::dvec3(query.albedo) / kPiD * emission * (cos_x * cos_y * area / d2);
+}
+
+// The moments of each light of `scene` at `query`, by a midpoint rule on a grid of the unit square
+// that sample_li's warps map to the light (uniform by area on a triangle, on the whole sphere).
+std::vector<LightMoments> light_moments(const DirectLightScene& scene, const DirectLightQuery& query) {
+  constexpr int kGrid = 256;
+  std::vector<LightMoments> lights;
+  const auto over_grid = [&](auto point_and_normal, const glm::dvec3& emission, double area) {
+    LightMoments light;
+    for (int i = 0; i < kGrid; ++i)
+      for (int j = 0; j < kGrid; ++j) {
+        const auto [y, normal] = point_and_normal((i + 0.5) / kGrid, (j + 0.5) / kGrid);
+        const glm::dvec3 value = area_sample_value(query, emission, y, normal, area);
+        light.mean_square += value * value / double(kGrid * kGrid);
+      }
+    light.power = kPiD * area * (emission.x + emission.y + emission.z);
+    return light;
+  };
+  for (const DirectLightTriangle& t : scene.triangles) {
+    const glm::dvec3 p0(t.p0), p1(t.p1), p2(t.p2), emission(t.emission);
+    if (emission == glm::dvec3(0.0)) continue;  // an occluder, not a light
+    const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
+    const double area = 0.5 * glm::length(cross);
+    const glm::dvec3 normal = glm::normalize(cross);
+    lights.push_back(over_grid(
+        [&](double u, double v) {
+          const double root = std::sqrt(u);  // uniform by area: barycentrics (1 - sqrt u, v sqrt u)
+          return std::make_pair(p0 * (1.0 - root) + p1 * (root * (1.0 - v)) + p2 * (root * v), normal);
+        },
+        emission, area));
+  }
+  for (const DirectLightSphere& sphere : scene.spheres) {
+    const glm::dvec3 center(sphere.center);
+    const double r = sphere.radius;
+    lights.push_back(over_grid(
+        [&](double u, double v) {
+          const double z = 1.0 - 2.0 * u, ring = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2.0 * kPiD * v;
+          const glm::dvec3 normal(ring * std::cos(phi), ring * std::sin(phi), z);
+          return std::make_pair(center + r * normal, normal);
+        },
+        glm::dvec3(sphere.emission), 4.0 * kPiD * r * r));
+  }
+  for (const DirectLightPoint& light : scene.point_lights) {
+    const glm::dvec3 to_light = glm::dvec3(light.position) - glm::dvec3(query.point);
+    const double d2 = glm::dot(to_light, to_light);
+    const double cos_x = std::max(0.0, glm::dot(glm::dvec3(query.normal), to_light / std::sqrt(d2)));
+    const glm::dvec3 value = glm::dvec3(query.albedo) / kPiD * glm::dvec3(light.intensity) * (cos_x / d2);
+    const glm::dvec3 intensity(light.intensity);
+    lights.push_back({value * value, 4.0 * kPiD * (intensity.x + intensity.y + intensity.z)});
+  }
+  return lights;
+}
+
+// The most variance per channel that the mean tests count of an estimator at `query` whose mean is
+// `mean`: kNoisierThanCorrectAllowed times a correct estimator's, one light chosen uniformly (the
+// contract's LightSet::choose) or by power, whichever varies more. (Any estimator of the contract
+// that varies more is rarer than the tests' false failures: one that sums over the lights varies
+// less.) E[X^2] = sum over the lights of E[value^2] / chance of choosing it.
+glm::dvec3 variance_bound(const DirectLightScene& scene, const DirectLightQuery& query, const glm::dvec3& mean) {
+  const std::vector<LightMoments> lights = light_moments(scene, query);
+  double total_power = 0;
+  for (const LightMoments& light : lights) total_power += light.power;
+  glm::dvec3 uniform(0.0), by_power(0.0);
+  for (const LightMoments& light : lights) {
+    uniform += light.mean_square * double(lights.size());
+    if (light.power > 0) by_power += light.mean_square * (total_power / light.power);
+  }
+  const glm::dvec3 second_moment = glm::max(uniform, by_power);
+  return kNoisierThanCorrectAllowed * glm::max(second_moment - mean * mean, glm::dvec3(0.0));
+}
+
 // Runs the queries, t-tests each channel's mean; names the first failure and the mistakes that fit,
 // unless one of `helpers` (this stage's functions that the estimator runs) fails its own tests:
 // then it names those instead. (Stage 07's warps, which sample the lights, are the grader's own
@@ -282,10 +381,15 @@ void expect_means(const DirectLightScene& scene, const std::vector<Expectation>&
         return add_failure({MessageId::direct_failure_not_finite, {{"what", e.what}}});
     }
     offset += e.query.sample_count;
+    const glm::dvec3 max_variance = variance_bound(scene, e.query, e.radiance);
     for (int c = 0; c < 3; ++c) {
-      const testkit::MeanTestResult result = testkit::mean_test(moments[c], e.radiance[c], kLevel);
+      const testkit::MeanTestResult result = testkit::mean_test(moments[c], e.radiance[c], kLevel, 0.0, max_variance[c]);
       if (result.passed || failed) continue;
       failed = true;
+      const double noise_ratio = moments[c].variance() / (max_variance[c] / kNoisierThanCorrectAllowed);
+      if (noise_ratio > kNoisierThanCorrectAllowed)
+        add_hint({MessageId::direct_too_noisy,
+                  {{"ratio", gtest_text(noise_ratio)}, {"limit", gtest_text(kNoisierThanCorrectAllowed)}}});
       add_failure({MessageId::direct_failure_mean,
                    {{"what", e.what},
                     {"count", std::to_string(result.count)},

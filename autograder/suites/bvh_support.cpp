@@ -7,12 +7,16 @@
 
 #include "raylab/scene_loader.h"
 #include "raylab/stages/04_box.h"
+#include "raylab/testkit/random_values.h"
 #include "raylab/testkit/triangles.h"
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 namespace raylab::grading {
 namespace {
@@ -82,6 +86,23 @@ const std::vector<TestMesh>& bvh_test_meshes() {
 
 PrimitiveIntersector intersector_for(const TestMesh& mesh) {
   return PrimitiveIntersector{grader_triangle_test, const_cast<std::vector<std::array<glm::vec3, 3>>*>(&mesh.triangles)};
+}
+
+const TestMesh& work_test_mesh() {
+  static const TestMesh mesh = [] {
+    std::random_device entropy;
+    Pcg32 random((std::uint64_t(entropy()) << 32) | entropy(), testkit::stream_of("bvh work mesh"));
+    const glm::vec3 axis = testkit::random_unit_vector(random);
+    const float angle = float(testkit::random_double(random, 0.0, 2.0 * kPi));
+    const float scale = float(testkit::random_double(random, 0.5, 2.0));
+    const glm::vec3 shift = testkit::random_vec3(random, -5, 5);
+    const glm::mat3 turn = glm::mat3_cast(glm::angleAxis(angle, axis));
+    std::vector<std::array<glm::vec3, 3>> triangles = bvh_test_meshes().front().triangles;
+    for (auto& triangle : triangles)
+      for (glm::vec3& corner : triangle) corner = scale * (turn * corner) + shift;
+    return make_mesh(MessageId::bvh_mesh_bunny_moved, std::move(triangles));
+  }();
+  return mesh;
 }
 
 std::optional<BvhHit> brute_force_closest(const TestMesh& mesh, const Ray& ray) {
@@ -338,8 +359,10 @@ TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const
   for (const Ray& ray : rays) {
     probe.start_ray(ray);
     BvhTraversalStats stats;
-    (void)intersect_bvh(bvh, ray, probe.intersector(), /*any_hit=*/false, stats);
+    const std::optional<BvhHit> hit = intersect_bvh(bvh, ray, probe.intersector(), /*any_hit=*/false, stats);
     probe.end_ray(stats);
+    const std::optional<BvhHit> expected = brute_force_closest(mesh, ray);
+    if (hit.has_value() != expected.has_value() || (hit && hit->t_hit != expected->t_hit)) ++probe.work.rays_answered_wrong;
   }
   return probe.work;
 }

@@ -28,6 +28,12 @@ const std::vector<TestMesh>& bvh_test_meshes();
 // your stage 3. A PrimitiveIntersector over a TestMesh.
 PrimitiveIntersector intersector_for(const TestMesh& mesh);
 
+// The mesh of the work tests (05 and 05c): the bunny turned, scaled and moved by amounts drawn
+// once per run of the judge from a seed no stage server sees (std::random_device). A traversal
+// has never been sent its triangles, so it can find its hits only by calling the intersector
+// it is given, and every such call comes back to the judge, which counts it.
+const TestMesh& work_test_mesh();
+
 // Every triangle, t_max shrinking: the oracle.
 std::optional<BvhHit> brute_force_closest(const TestMesh& mesh, const Ray& ray);
 
@@ -56,6 +62,8 @@ struct TraversalWork {
   std::uint64_t leaves_beyond_hit = 0;     // ... whose box the ray enters beyond a hit already reported
   std::uint64_t near_child_first = 0;      // inner nodes with leaves tested under both children: nearer one first
   std::uint64_t far_child_first = 0;       // ... the farther one first
+  std::uint64_t rays_answered_wrong = 0;   // rays whose hit is not brute force's (the work of a
+                                           // traversal that does not find its hits counts for nothing)
   double nodes_per_ray() const { return rays ? double(nodes_visited) / double(rays) : 0.0; }
   double nodes_implied_per_ray() const { return rays ? double(nodes_implied) / double(rays) : 0.0; }
   double tests_per_ray() const { return rays ? double(primitives_tested) / double(rays) : 0.0; }
@@ -65,7 +73,7 @@ struct TraversalWork {
 // the traversal's work is judged whatever your build_bvh returns.
 Bvh grader_median_tree(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size);
 
-// The student's intersect_bvh on `rays` (closest hit).
+// The student's intersect_bvh on `rays` (closest hit), its hits checked against brute force.
 TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays);
 // The grader's own traversal (the reference's algorithm: near child first, boxes tested with
 // t_max lowered to the closest hit so far) with the stage server's box test (the one your

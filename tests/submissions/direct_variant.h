@@ -53,6 +53,9 @@ struct DirectVariant {
   bool check_no_lights = true;     // false: lights.choose() called on an empty light list
   // Correct variants.
   bool lights_by_power = false;    // the light chosen with probability proportional to its power
+  // Hostile.
+  bool noise_hides_bias = false;   // with several lights, the estimate times 201 or -199 at random
+                                   // (a factor of mean 1): noise to widen the mean tests
 };
 
 // The light that u in [0, 1) chooses and the probability of choosing it: uniformly (LightSet's
@@ -128,7 +131,10 @@ inline glm::vec3 estimate_direct_light_variant(const RenderContext& context, con
                                                Sampler& sampler) {
   const std::optional<DirectSample> sample = unblocked_light_sample(context, v, hit, bsdf, wo, sampler);
   if (!sample) return glm::vec3(0.0f);
-  return light_contribution(hit, *sample, v.divide_by_choice ? sample->light.pdf * sample->choice : sample->light.pdf);
+  const glm::vec3 value =
+      light_contribution(hit, *sample, v.divide_by_choice ? sample->light.pdf * sample->choice : sample->light.pdf);
+  if (v.noise_hides_bias && context.lights.size() > 1) return value * (sampler.get_1d() < 0.5f ? 201.0f : -199.0f);
+  return value;
 }
 
 }  // namespace raylab::submission
