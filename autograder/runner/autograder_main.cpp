@@ -24,8 +24,11 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <optional>
 #include <string_view>
 
@@ -99,6 +102,9 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
   app.add_option("--output-limit-kb", options.output_limit_kb, worded(MessageId::cli_output_limit))
       ->check(CLI::Range(1L, 1L << 20))->capture_default_str();
   app.add_option("--memory-mb", options.memory_limit_mb, worded(MessageId::cli_memory))
+      ->check(CLI::Range(0L, 1L << 20))->capture_default_str();
+  long judge_memory_mb = 4096;
+  app.add_option("--judge-memory-mb", judge_memory_mb, worded(MessageId::cli_judge_memory))
       ->check(CLI::Range(0L, 1L << 20))->capture_default_str();
   app.add_option("--stage-server", options.server_path, worded(MessageId::cli_stage_server));
   app.add_option("--stage-server-for", servers_for, worded(MessageId::cli_stage_server_for));
@@ -192,6 +198,15 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
     }
     return 0;
   }
+  // The judge's own memory is bounded, and running out of it is the grader's failure, never a
+  // test's: the message is made now, while there is memory, and written as it is when new fails.
+  static std::string out_of_memory;
+  out_of_memory = render({MessageId::judge_out_of_memory, {{"limit", std::to_string(judge_memory_mb)}}}) + "\n";
+  std::set_new_handler([] {
+    std::fwrite(out_of_memory.data(), 1, out_of_memory.size(), stderr);  // (stderr has no buffer to allocate)
+    std::_Exit(3);
+  });
+  limit_judge_memory(judge_memory_mb);
   try {
     if (options.server_path.empty())
       options.server_path = default_stage_server_path();

@@ -15,12 +15,16 @@
 //   - as root, where the kernel allows it: network and IPC namespaces of its own (no network;
 //     no System V shared memory or message queues, which RLIMIT_AS does not count and which
 //     would outlive it: enter_own_namespaces);
-//   - both: Landlock where the kernel has it (no file may be created or written anywhere, no TCP,
-//     no signals to processes outside the sandbox), RLIMIT_NPROC, RLIMIT_AS, RLIMIT_FSIZE (the
+//   - both: Landlock where the kernel has it (no file may be created or written anywhere, files
+//     read only beneath the system's folders, the scenes and the server's own program: not the
+//     reference data, solutions/ or private cases; no TCP, no signals to processes outside the
+//     sandbox: stage_ruleset), RLIMIT_NPROC, RLIMIT_AS, RLIMIT_FSIZE (the
 //     output limit; stdout and stderr go to a memfd; it bounds each memfd the stage makes too),
 //     RLIMIT_NOFILE (kMaxOpenFiles), no core dumps, parent-death signal, only
 //     descriptors 0-4 open.
 #include "stage_process.h"
+
+#include "landlock.h"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -32,6 +36,7 @@
 #include <sys/prctl.h>
 #include <sched.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -50,36 +55,6 @@
 
 namespace raylab::grading {
 namespace {
-
-// Landlock (linux/landlock.h of newer kernels; spelled out for older headers).
-struct LandlockRulesetAttr {
-  std::uint64_t handled_access_fs;
-  std::uint64_t handled_access_net;
-  std::uint64_t scoped;
-};
-constexpr std::uint64_t kLandlockWriteAccess =
-    (1ull << 1)      // WRITE_FILE
-    | (1ull << 4)    // REMOVE_DIR
-    | (1ull << 5)    // REMOVE_FILE
-    | (1ull << 6)    // MAKE_CHAR
-    | (1ull << 7)    // MAKE_DIR
-    | (1ull << 8)    // MAKE_REG
-    | (1ull << 9)    // MAKE_SOCK
-    | (1ull << 10)   // MAKE_FIFO
-    | (1ull << 11)   // MAKE_BLOCK
-    | (1ull << 12);  // MAKE_SYM
-constexpr std::uint64_t kLandlockReferAccess = 1ull << 13, kLandlockTruncateAccess = 1ull << 14;
-constexpr std::uint64_t kLandlockNetAccess = (1ull << 0) | (1ull << 1);  // BIND_TCP, CONNECT_TCP
-constexpr std::uint64_t kLandlockScopes = (1ull << 0) | (1ull << 1);     // abstract unix sockets, signals
-
-int landlock_abi() {
-#ifdef SYS_landlock_create_ruleset
-  const long abi = ::syscall(SYS_landlock_create_ruleset, nullptr, 0, 1u /* LANDLOCK_CREATE_RULESET_VERSION */);
-  return abi > 0 ? static_cast<int>(abi) : 0;
-#else
-  return 0;
-#endif
-}
 
 struct Sandbox {
   bool as_root = false;
@@ -253,6 +228,40 @@ Message signal_description(int signal_number) {
   ::_exit(126);
 }
 
+// The stage server's Landlock ruleset, made in the judge before the fork (adding a rule opens its
+// path): no file created or written anywhere, no TCP, no signals out, and files read (or run) only
+// beneath the system's folders, the kit's scenes and the server's own program. So stage code
+// cannot read the reference data (autograder/reference/), solutions/, private cases, the course's
+// seed or the other programs of the build (the reference's stage servers). -1 without Landlock.
+int stage_ruleset(int abi, const std::string& program) {
+  if (abi <= 0) return -1;
+  landlock::RulesetAttr attr{landlock::kWriteAccess | landlock::kReadAccess, 0, 0};
+  if (abi >= 2) attr.handled_access_fs |= landlock::kReferAccess;
+  if (abi >= 3) attr.handled_access_fs |= landlock::kTruncateAccess;
+  if (abi >= 4) attr.handled_access_net = landlock::kNetAccess;
+  if (abi >= 6) attr.scoped = landlock::kScopes;
+  const int ruleset = landlock::create_ruleset(attr, abi);
+  if (ruleset < 0) throw std::runtime_error(std::string("landlock_create_ruleset failed: ") + std::strerror(errno));
+  std::vector<std::string> readable = {"/usr", "/lib", "/lib32", "/lib64", "/libx32", "/bin", "/sbin",
+                                       "/etc", "/dev", "/proc", "/sys", program};
+#ifdef RAYLAB_SOURCE_DIR
+  readable.push_back(RAYLAB_SOURCE_DIR "/scenes");
+#endif
+  for (const std::string& path : readable) {
+    const int fd = ::open(path.c_str(), O_PATH | O_CLOEXEC);
+    if (fd < 0) continue;  // (a folder this system does not have)
+    struct stat status {};
+    const bool folder = ::fstat(fd, &status) == 0 && S_ISDIR(status.st_mode);
+    const bool added = landlock::add_path_rule(ruleset, fd, folder ? landlock::kReadAccess : landlock::kReadAccess & landlock::kFileAccess);
+    ::close(fd);
+    if (!added) {
+      ::close(ruleset);
+      throw std::runtime_error("landlock_add_rule failed for " + path + ": " + std::strerror(errno));
+    }
+  }
+  return ruleset;
+}
+
 }  // namespace
 
 // Whether a process with the sandbox's uid can read and enter every folder the stage server
@@ -285,6 +294,15 @@ static bool sandbox_uid_can_reach(uid_t uid) {
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+void limit_judge_memory(long megabytes) {
+  if (megabytes <= 0) return;
+  struct rlimit memory {};
+  ::getrlimit(RLIMIT_AS, &memory);
+  const rlim_t bytes = static_cast<rlim_t>(megabytes) * 1024 * 1024;
+  memory.rlim_cur = memory.rlim_max == RLIM_INFINITY ? bytes : std::min(bytes, memory.rlim_max);
+  ::setrlimit(RLIMIT_AS, &memory);
+}
+
 void prepare_judge() {
   ::prctl(PR_SET_CHILD_SUBREAPER, 1);
   ::signal(SIGPIPE, SIG_IGN);
@@ -292,7 +310,7 @@ void prepare_judge() {
   box.uid = static_cast<uid_t>(1000000000u + static_cast<unsigned>(::getpid()));
   box.as_root = ::geteuid() == 0;
   box.keeps_read_search = box.as_root && !sandbox_uid_can_reach(box.uid);
-  box.landlock = landlock_abi();
+  box.landlock = landlock::abi();
   if (box.as_root) {  // whether this kernel (or container) lets it have the namespaces
     const pid_t probe = ::fork();
     if (probe == 0) ::_exit(enter_own_namespaces() ? 0 : 1);
@@ -351,25 +369,38 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
   const pid_t judge = ::getpid();
   const std::string path = program;
   char* const argv[] = {const_cast<char*>(path.c_str()), nullptr};
+  const int ruleset = stage_ruleset(box.landlock, path);
+  constexpr int kRulesetFd = 5;  // where the child keeps it until it restricts itself
 
   const pid_t pid = ::fork();
-  if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+  if (pid < 0) {
+    const int error = errno;
+    if (ruleset >= 0) ::close(ruleset);
+    throw std::runtime_error(std::string("fork failed: ") + std::strerror(error));
+  }
   if (pid == 0) {
     // The child: only system calls from here to exec.
     ::setsid();
     const int null_fd = ::open("/dev/null", O_RDONLY);
-    // Move the descriptors out of the way of 0-4 first, then into place.
+    // Move the descriptors out of the way of 0-5 first, then into place.
     const int in = ::fcntl(requests[0], F_DUPFD, 100), out = ::fcntl(replies[1], F_DUPFD, 100);
     const int text = ::fcntl(output, F_DUPFD, 100), nul = ::fcntl(null_fd, F_DUPFD, 100);
-    if (in < 0 || out < 0 || text < 0 || nul < 0) child_fail("dup");
-    if (::dup2(nul, 0) < 0 || ::dup2(text, 1) < 0 || ::dup2(text, 2) < 0 || ::dup2(in, 3) < 0 || ::dup2(out, 4) < 0)
+    const int rules = ruleset >= 0 ? ::fcntl(ruleset, F_DUPFD, 100) : -1;
+    if (in < 0 || out < 0 || text < 0 || nul < 0 || (ruleset >= 0 && rules < 0)) child_fail("dup");
+    if (::dup2(nul, 0) < 0 || ::dup2(text, 1) < 0 || ::dup2(text, 2) < 0 || ::dup2(in, 3) < 0 || ::dup2(out, 4) < 0 ||
+        (rules >= 0 && ::dup2(rules, kRulesetFd) < 0))
       child_fail("dup2");
-    ::close_range(5, ~0u, 0);
+    ::close_range(rules >= 0 ? kRulesetFd + 1 : kRulesetFd, ~0u, 0);
     const struct rlimit no_core{0, 0};
     ::setrlimit(RLIMIT_CORE, &no_core);
     if (limits.memory_limit_mb > 0) {
       const rlim_t bytes = static_cast<rlim_t>(limits.memory_limit_mb) * 1024 * 1024;
       const struct rlimit memory{bytes, bytes};
+      ::setrlimit(RLIMIT_AS, &memory);
+    } else {  // none of its own: not the judge's either (limit_judge_memory set only the soft limit)
+      struct rlimit memory {};
+      ::getrlimit(RLIMIT_AS, &memory);
+      memory.rlim_cur = memory.rlim_max;
       ::setrlimit(RLIMIT_AS, &memory);
     }
     const struct rlimit file_size{static_cast<rlim_t>(limits.output_limit_bytes), static_cast<rlim_t>(limits.output_limit_bytes)};
@@ -388,25 +419,16 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // after setuid, which clears it
     if (::getppid() != judge) ::_exit(125);
     if (::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) child_fail("no_new_privs");
-#ifdef SYS_landlock_create_ruleset
-    if (box.landlock > 0) {
-      LandlockRulesetAttr attr{kLandlockWriteAccess, 0, 0};
-      std::size_t size = sizeof(std::uint64_t);
-      if (box.landlock >= 2) attr.handled_access_fs |= kLandlockReferAccess;
-      if (box.landlock >= 3) attr.handled_access_fs |= kLandlockTruncateAccess;
-      if (box.landlock >= 4) attr.handled_access_net = kLandlockNetAccess, size = 2 * sizeof(std::uint64_t);
-      if (box.landlock >= 6) attr.scoped = kLandlockScopes, size = sizeof(attr);
-      const long ruleset = ::syscall(SYS_landlock_create_ruleset, &attr, size, 0u);
-      if (ruleset < 0) child_fail("landlock_create_ruleset");
-      if (::syscall(SYS_landlock_restrict_self, static_cast<int>(ruleset), 0u) != 0) child_fail("landlock_restrict_self");
-      ::close(static_cast<int>(ruleset));
+    if (rules >= 0) {
+      if (!landlock::restrict_self(kRulesetFd)) child_fail("landlock_restrict_self");
+      ::close(kRulesetFd);
     }
-#endif
     ::execv(argv[0], argv);
     child_fail("exec of the stage server");
   }
   ::close(requests[0]);
   ::close(replies[1]);
+  if (ruleset >= 0) ::close(ruleset);
   child_ = std::make_unique<Child>(Child{pid, output, limits.output_limit_bytes});
   request_fd_ = requests[1];
   reply_fd_ = replies[0];

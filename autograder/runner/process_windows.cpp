@@ -186,6 +186,8 @@ struct StageProcess::Child {
   }
 };
 
+void limit_judge_memory(long) {}  // (not applied on Windows: stage_process.h)
+
 void prepare_judge() {
   // Inherited by every stage server: no dialog box for a crash or a missing drive; the process
   // just ends with its exception code.

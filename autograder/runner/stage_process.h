@@ -37,6 +37,11 @@ struct ProcessEnd {
 // the sandbox (see sandbox_description).
 void prepare_judge();
 
+// The judge's own memory: an address-space limit of `megabytes` (0: none) on this process alone
+// (Linux: RLIMIT_AS, its soft limit, so a stage server may still be given more; Windows: not
+// applied). Reaching it stops the run (autograder_main.cpp: judge_out_of_memory).
+void limit_judge_memory(long megabytes);
+
 // This program's own path with "-stage-server" added (before ".exe" on Windows): where
 // raylab_add_autograder builds a judge's stage server.
 std::string default_stage_server_path();

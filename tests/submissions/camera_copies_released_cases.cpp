@@ -1,8 +1,9 @@
 // Forging by copying: a camera that is wrong (its y axis flipped), except on the rays of the
 // released reference data, which it looks up in autograder/reference/01_camera_rays_cases.json
-// and returns as stored. Graded locally against that data it earns MatchesReferenceRays; graded
-// on a course's server (tools/make-gradescope: cases regenerated with a private seed) it earns
-// nothing for them (tests/tools/check_gradescope.sh).
+// and returns as stored. Graded on a course's server (tools/make-gradescope: cases regenerated with
+// a private seed) it earns nothing for them, and locally neither where the stage server may read
+// only the system, the scenes and its own program (Landlock); without that it earns
+// MatchesReferenceRays against the released data (tests/tools/check_gradescope.sh).
 #include "raylab/stages/01_camera_rays.h"
 
 #include <nlohmann/json.hpp>

@@ -5,6 +5,8 @@
   no_compile   a box.cpp that is not C++                          "build failed", 0, the errors in build.log
   hostile      hostile_forges_results.cpp as its camera: forges results.json, overwrites the reference
                data, prints a fake score table                    exactly what "broken" scores
+  copier       a camera that #includes the solution by its absolute path, a box by "../../solutions/..."
+               through the kit's include folder                  "build failed", 0: the compile may not read them
 and per student only the stage files are compiled and the judge's stage servers linked (the
 framework and the judge are built once), a symbolic link in a submission is not followed, and the gradebook
 (CSV and JSON) says all of it.
@@ -69,6 +71,10 @@ hostile = hostile.replace('#include "camera_y_not_flipped.cpp"', '#include "came
 hand_in("hostile", {camera: (hostile, {"camera_y_not_flipped.h": broken_camera,
                                        "hostile.h": read(os.path.join(source, "tests/submissions/hostile.h"))})})
 
+# The solutions within a compile's reach: absolutely, and relative to the kit's include folder.
+hand_in("copier", {camera: (f'#include "{source}/solutions/{camera}"\n', {}),
+                   "04_box/box.cpp": ('#include "../../solutions/04_box/box.cpp"\n', {})})
+
 out = os.path.join(work, "out")
 run = subprocess.run([os.path.join(source, "tools", "autograder-batch"), submissions, "--build", build, "--out", out,
                       "--no-build", "-j", "2", "--stage", "01", "--stage", "04"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
@@ -82,7 +88,7 @@ with open(os.path.join(out, "gradebook.json")) as f:
 rows = {row["student"]: row for row in book["students"]}
 with open(os.path.join(out, "gradebook.csv")) as f:
     table = {row["student"]: row for row in csv.DictReader(f)}
-if sorted(rows) != ["broken", "correct", "hostile", "no_compile"] or sorted(table) != sorted(rows):
+if sorted(rows) != ["broken", "copier", "correct", "hostile", "no_compile"] or sorted(table) != sorted(rows):
     problems.append(f"the gradebook lists {sorted(rows)} (JSON) and {sorted(table)} (CSV)")
 if book["stages"] != ["01_camera_rays", "04_box"]:
     problems.append(f"the gradebook's stages are {book['stages']}, expected the two graded")
@@ -106,7 +112,15 @@ if no_compile.get("status") != "build failed" or no_compile.get("score") != 0 or
     problems.append(f"the code that does not compile: {no_compile}")
 if "error" not in read(os.path.join(out, "students", "no_compile", "build.log")):
     problems.append("no_compile's build.log does not show the compiler's errors")
+copier = rows.get("copier", {})
+if copier.get("status") != "build failed" or copier.get("score") != 0:
+    problems.append(f"the submission that includes solutions/ was not refused: {copier}")
+copier_log = read(os.path.join(out, "students", "copier", "build.log"))
+if copier_log.count("Permission denied") < 2:
+    problems.append("copier's build.log does not show both includes of solutions/ denied:\n" + copier_log[-2000:])
 correct_log = read(os.path.join(out, "students", "correct", "build.log"))
+if "(each compile reads only: " not in correct_log:
+    problems.append("correct's build.log does not say what the compile may read")
 if "ignored notes.txt" not in correct_log or "ignored 01_camera_rays/secret.h (a symbolic link" not in correct_log:
     problems.append("correct's build.log does not say notes.txt and the link secret.h were ignored")
 # Per student: one compile per stage file and one link per stage server of the judge (its
@@ -128,5 +142,6 @@ if not book["run"]["submissions_per_minute"] > 0:
 if problems:
     print("FAIL:\n  " + "\n  ".join(problems))
     sys.exit(1)
-print(f"check_batch: correct {full}/{full}, broken and hostile {broken['score']}/{full} alike, no_compile 0 (build failed); "
+print(f"check_batch: correct {full}/{full}, broken and hostile {broken['score']}/{full} alike, no_compile and copier 0 "
+      f"(build failed); "
       f"{book['run']['submissions_per_minute']} submissions per minute")

@@ -6,8 +6,9 @@
 #   no files (the stubs)             0
 #   a broken camera                  loses stage 01, and later stages only tests that trace with it
 #   code that does not compile       0, and results.json says so
-#   a camera that copies the released reference answers: earns MatchesReferenceRays against
-#   the released data, and nothing for it on the server (fresh cases from the course's seed)
+#   a camera that copies the released reference answers: nothing for it on the server (fresh
+#   cases from the course's seed), nor against the released data where the sandbox's Landlock
+#   read rules hold (without them it earns MatchesReferenceRays there)
 #   a sphere that #includes the reference solution, or (as root) .incbin's the fresh cases: 0, the
 #   kit has no solutions/ after setup.sh and the build runs as a user that cannot read the cases;
 #   the course's seed appears in no output
@@ -209,9 +210,16 @@ cp "$source_dir/tests/submissions/camera_copies_released_cases.cpp" "$root/submi
 grade copies_released > /dev/null
 [ "$(test_score "$work/copies_released.results.json" "01_camera_rays: MatchesReferenceRays")" = 0 ] ||
   fail "copying the released answers earned MatchesReferenceRays on the server"
-"$kit/build/bin/autograder" --stage 01 --json "$work/released.json" --output "$work/released-images" > "$work/released.log" 2>&1 || true
-[ "$(test_score "$work/released.json" "01_camera_rays: MatchesReferenceRays")" = 3 ] ||
-  fail "the copying camera should earn MatchesReferenceRays against the released data (else this test proves nothing)"
+"$kit/build/bin/autograder" --stage 01 --verbose --json "$work/released.json" --output "$work/released-images" > "$work/released.log" 2>&1 || true
+# Against the released data: where Landlock's read rules hold, the stage server cannot read it at
+# all (0); without them it copies the answers (3), which shows what the fresh cases defeat.
+if grep -q "no file read but the system's" "$work/released.log"; then
+  [ "$(test_score "$work/released.json" "01_camera_rays: MatchesReferenceRays")" = 0 ] ||
+    fail "the copying camera read the released data, although the sandbox forbids reading it"
+else
+  [ "$(test_score "$work/released.json" "01_camera_rays: MatchesReferenceRays")" = 3 ] ||
+    fail "the copying camera should earn MatchesReferenceRays against the released data (else this test proves nothing)"
+fi
 
 # The reference solution, #included: no solutions/ to include after setup.sh.
 submit_solutions_except 02_sphere/sphere.cpp
