@@ -14,7 +14,9 @@
 //     finds in /proc until none is left (a setsid() grandchild still has the judge as ancestor);
 //   - as root, where the kernel allows it: network and IPC namespaces of its own (no network;
 //     no System V shared memory or message queues, which RLIMIT_AS does not count and which
-//     would outlive it: enter_own_namespaces);
+//     would outlive it: enter_own_namespaces), and a PID namespace whose process 1 is the judge's
+//     (start_in_own_pid_namespace: the stage sees no other process, and everything in the
+//     namespace dies with the server, or with the judge);
 //   - both: Landlock where the kernel has it (no file may be created or written anywhere, files
 //     read only beneath the system's folders, the scenes and the server's own program: not the
 //     reference data, solutions/ or private cases; no TCP, no signals to processes outside the
@@ -60,7 +62,7 @@ struct Sandbox {
   bool as_root = false;
   uid_t uid = 0;  // the sandbox's own uid and gid, when as_root
   bool keeps_read_search = false;  // as_root, and the uid alone cannot reach the programs
-  bool own_namespaces = false;     // as_root, and the kernel gives it network and IPC namespaces
+  bool own_namespaces = false;     // as_root, and the kernel gives it network, IPC and PID namespaces
   int landlock = 0;
 };
 
@@ -83,6 +85,36 @@ bool enter_own_namespaces() {
     if (!written) return false;
   }
   return true;
+}
+
+// fork() as a system call alone (no handlers of the C library), with `flags` added: CLONE_NEWPID
+// makes the child process 1 of a PID namespace of its own. Only system calls follow in the child.
+pid_t fork_process(unsigned long flags) {
+  return static_cast<pid_t>(::syscall(SYS_clone, flags | SIGCHLD, nullptr, nullptr, nullptr, nullptr));
+}
+
+// Process 1 of the stage's PID namespace (as root, where the kernel gives it one): starts the stage
+// server as process 2 (returns 0 in it), then only reaps, and when the server ends writes its wait
+// status to `report` for the judge and exits: the kernel then kills everything else in the
+// namespace, detached or not, and it dies with the judge (parent-death signal), so nothing of a
+// stage outlives the judge even when the judge is killed. It runs as root (no stage process may
+// signal it) and holds no descriptor but `report`. Only system calls.
+pid_t start_in_own_pid_namespace(int report) {
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  const pid_t server = fork_process(0);
+  if (server <= 0) return server;  // the server (0), or a failure the caller reports
+  if (::dup2(report, 0) < 0) ::_exit(126);
+  ::close_range(1, ~0u, 0);
+  for (;;) {
+    int status = 0;
+    const pid_t done = ::waitpid(-1, &status, 0);
+    if (done < 0 && errno == EINTR) continue;
+    if (done < 0) ::_exit(0);
+    if (done == server) {
+      [[maybe_unused]] const ssize_t written = ::write(0, &status, sizeof status);
+      ::_exit(0);
+    }
+  }
 }
 
 // In the child, after setuid: keep CAP_DAC_READ_SEARCH alone, in the permitted, effective,
@@ -313,7 +345,7 @@ void prepare_judge() {
   box.landlock = landlock::abi();
   if (box.as_root) {  // whether this kernel (or container) lets it have the namespaces
     const pid_t probe = ::fork();
-    if (probe == 0) ::_exit(enter_own_namespaces() ? 0 : 1);
+    if (probe == 0) ::_exit(::unshare(CLONE_NEWPID) == 0 && enter_own_namespaces() ? 0 : 1);
     int status = 0;
     while (probe > 0 && ::waitpid(probe, &status, 0) < 0 && errno == EINTR) {
     }
@@ -345,6 +377,8 @@ struct StageProcess::Child {
   pid_t pid = -1;
   int output_fd = -1;  // the memfd that holds what the server printed
   long output_limit_bytes = 0;
+  int end_report_fd = -1;  // with a PID namespace: pid is its process 1, which writes here how the
+                           // server (its process 2) ended
 };
 
 StageProcess::StageProcess() = default;
@@ -372,14 +406,23 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
   const int ruleset = stage_ruleset(box.landlock, path);
   constexpr int kRulesetFd = 5;  // where the child keeps it until it restricts itself
 
-  const pid_t pid = ::fork();
+  int end_report[2] = {-1, -1};  // process 1 of the stage's PID namespace -> the judge: how the server ended
+  if (box.own_namespaces && ::pipe2(end_report, O_CLOEXEC) != 0) {
+    if (ruleset >= 0) ::close(ruleset);
+    throw std::runtime_error(std::string("pipe failed: ") + std::strerror(errno));
+  }
+
+  const pid_t pid = box.own_namespaces ? fork_process(CLONE_NEWPID) : ::fork();
   if (pid < 0) {
     const int error = errno;
     if (ruleset >= 0) ::close(ruleset);
+    for (const int fd : end_report)
+      if (fd >= 0) ::close(fd);
     throw std::runtime_error(std::string("fork failed: ") + std::strerror(error));
   }
   if (pid == 0) {
     // The child: only system calls from here to exec.
+    if (box.own_namespaces && start_in_own_pid_namespace(end_report[1]) < 0) child_fail("fork in the PID namespace");
     ::setsid();
     const int null_fd = ::open("/dev/null", O_RDONLY);
     // Move the descriptors out of the way of 0-5 first, then into place.
@@ -417,7 +460,7 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
     const struct rlimit processes{static_cast<rlim_t>(nproc), static_cast<rlim_t>(nproc)};
     ::setrlimit(RLIMIT_NPROC, &processes);
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // after setuid, which clears it
-    if (::getppid() != judge) ::_exit(125);
+    if (::getppid() != (box.own_namespaces ? 1 : judge)) ::_exit(125);
     if (::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) child_fail("no_new_privs");
     if (rules >= 0) {
       if (!landlock::restrict_self(kRulesetFd)) child_fail("landlock_restrict_self");
@@ -429,7 +472,8 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
   ::close(requests[0]);
   ::close(replies[1]);
   if (ruleset >= 0) ::close(ruleset);
-  child_ = std::make_unique<Child>(Child{pid, output, limits.output_limit_bytes});
+  if (end_report[1] >= 0) ::close(end_report[1]);
+  child_ = std::make_unique<Child>(Child{pid, output, limits.output_limit_bytes, end_report[0]});
   request_fd_ = requests[1];
   reply_fd_ = replies[0];
   // The judge's ends never block: every read and write waits in poll() for its deadline first.
@@ -474,9 +518,15 @@ ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
       if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
   if (!done) {
-    ::kill(pid, SIGKILL);
+    ::kill(pid, SIGKILL);  // with a PID namespace, its process 1: the kernel kills all of it
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
+  }
+  if (child_->end_report_fd >= 0) {  // the server's own end, if it ended before its process 1
+    int server_status = 0;
+    ::fcntl(child_->end_report_fd, F_SETFL, ::fcntl(child_->end_report_fd, F_GETFL) | O_NONBLOCK);
+    if (::read(child_->end_report_fd, &server_status, sizeof server_status) == sizeof server_status) status = server_status;
+    ::close(child_->end_report_fd);
   }
   if (WIFSIGNALED(status)) {
     end.crashed = true;

@@ -442,13 +442,14 @@ GRADED_TEST(kStage, Stage05cWideBvh, AnyHitAgreesWithBruteForce, 1) {
 // its triangles): the primitive tests, counted by the judge (each one is a question your process
 // asks it), against the grader's own near-first traversal of the same tree. The hits must be
 // brute force's, or the work counts for nothing. Allowed: 25% more tests (ties in entry distance
-// may be broken either way); stats.nodes_visited must count something.
+// may be broken either way); stats.nodes_visited must count something, and stats.primitives_tested
+// exactly the tests the judge answered.
 GRADED_TEST(kStage, Stage05cWideBvh, DoesNoMoreWorkThanTheReference, 2) {
   const TestMesh& mesh = work_test_mesh();
   const Bvh4 wide = grader_collapse(grader_median_tree(mesh.bounds, kLeafSize));
   std::vector<Ray> rays = rays_at(mesh, 300, 900);
   struct Work {
-    std::uint64_t tests = 0, nodes = 0, wrong = 0;
+    std::uint64_t tests = 0, reported_tests = 0, nodes = 0, wrong = 0;
   };
   const auto yours_on = [&](const std::vector<Ray>& some) {
     CountedTests counted{intersector_for(mesh)};
@@ -460,6 +461,7 @@ GRADED_TEST(kStage, Stage05cWideBvh, DoesNoMoreWorkThanTheReference, 2) {
       const std::optional<BvhHit> expected = brute_force_closest(mesh, ray);
       if (hit.has_value() != expected.has_value() || (hit && hit->t_hit != expected->t_hit)) ++work.wrong;
       work.nodes += stats.nodes_visited;
+      work.reported_tests += stats.primitives_tested;
     }
     work.tests = counted.tests;
     return work;
@@ -484,11 +486,17 @@ GRADED_TEST(kStage, Stage05cWideBvh, DoesNoMoreWorkThanTheReference, 2) {
   const double reference_per_ray = double(reference.tests) / double(rays.size());
   if (per_ray > 1.25 * reference_per_ray + 1.0) {
     add_failure({MessageId::wide_failure_work,
-                 {{"tests", std::to_string(per_ray)}, {"reference", std::to_string(reference_per_ray)}, {"mesh", mesh.name}}});
+                 {{"tests", stream_text(per_ray)}, {"reference", stream_text(reference_per_ray)}, {"mesh", mesh.name}}});
     add_hint(MessageId::wide_too_much_work);
   }
   if (yours.nodes == 0) {
     add_failure({MessageId::wide_failure_nodes_not_counted, {}});
+  }
+  if (yours.reported_tests != yours.tests) {
+    add_hint(MessageId::bvh_stats_not_counted);
+    add_failure({MessageId::bvh_failure_stats,
+                 {{"counted", stream_text(double(yours.reported_tests) / double(rays.size()))},
+                  {"tested", stream_text(per_ray)}}});
   }
 }
 

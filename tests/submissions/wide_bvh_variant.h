@@ -27,6 +27,7 @@ struct WideBvhVariant {
   bool box4_ignores_t_max = false;   // intersect_ray_box4 exits at infinity, not at ray.t_max
   bool entry_is_exit = false;        // entry_distances[i] is where the ray leaves the box
   bool nodes_not_counted = false;    // stats.nodes_visited never incremented
+  bool primitives_not_counted = false;  // stats.primitives_tested never incremented
   // Correct variants.
   bool two_levels = false;  // the collapse takes the grandchildren of both children, no surface areas
 };
@@ -173,7 +174,7 @@ std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const Prim
     for (const auto& [entry, slot] : hit) {
       if (!node.is_leaf(slot)) continue;
       for (std::uint32_t k = node.child[slot]; k < node.child[slot] + node.primitive_count[slot]; ++k) {
-        ++stats.primitives_tested;
+        if (!v.primitives_not_counted) ++stats.primitives_tested;
         if (const std::optional<float> t = intersector.test(intersector.context, search, bvh.primitive_order[k])) {
           search.t_max = *t;
           closest = BvhHit{*t, bvh.primitive_order[k]};
