@@ -27,12 +27,15 @@ files = subprocess.run([os.path.join(build, "bin", "autograder"), "--list-files"
                        check=True).stdout.split()
 
 
-def hand_in(student, replace=None):
+def hand_in(student, replace=None, only_replaced=False):
     """The solutions as a student hands them in (bare file names, headers in the stage's folder), with
-    replace = {stage file: (text, {extra header name: text})} instead of some."""
+    replace = {stage file: (text, {extra header name: text})} instead of some (only those, the
+    others left as the stubs, when only_replaced)."""
     folder = os.path.join(submissions, student)
     os.makedirs(folder)
     for file in files:
+        if only_replaced and file not in replace:
+            continue
         if replace and file in replace:
             text, headers = replace[file]
             with open(os.path.join(folder, os.path.basename(file)), "w") as f:
@@ -73,7 +76,7 @@ hand_in("hostile", {camera: (hostile, {"camera_y_not_flipped.h": broken_camera,
 
 # The solutions within a compile's reach: absolutely, and relative to the kit's include folder.
 hand_in("copier", {camera: (f'#include "{source}/solutions/{camera}"\n', {}),
-                   "04_box/box.cpp": ('#include "../../solutions/04_box/box.cpp"\n', {})})
+                   "04_box/box.cpp": ('#include "../../solutions/04_box/box.cpp"\n', {})}, only_replaced=True)
 
 out = os.path.join(work, "out")
 run = subprocess.run([os.path.join(source, "tools", "autograder-batch"), submissions, "--build", build, "--out", out,
