@@ -26,8 +26,13 @@ target_compile_options(raylab_checking_code INTERFACE ${RAYLAB_CHECKING_CODE_OPT
 # compiled with GLM and the standard headers they use most precompiled (with TESTS, GoogleTest and
 # nlohmann-json too: the grader's and the tests' targets). Only library headers: a file still
 # has to include what it uses, which the GCC build, without this, checks.
-# raylab_reuse_precompiled_headers(TARGET): the single-file stage code targets (tests/submissions)
-# share one precompiled header, raylab_stage_code_pch's (same flags: raylab_framework and raylab_options).
+# raylab_reuse_precompiled_headers(TARGET [SELF_TEST]): the single-file stage code targets share one
+# precompiled header, raylab_stage_code_pch's (same flags: raylab_framework and raylab_options).
+# With SELF_TEST (the grader's self-test submissions, tests/submissions and tests/report: about 190
+# files, each compiled once) also without RAYLAB_PRECOMPILE_HEADERS, when RAYLAB_PRECOMPILE_SELF_TESTS
+# is ON: each compiles in 1/3 to 1/2 of the time (0.4-0.7 s instead of 0.8-1.8 s at -O3 here). The
+# stage files of assignments/, solutions/ and the grader keep GCC's plain compile, which ccache
+# shares with the builds that the project's tests make again (the student release, the Gradescope kit).
 set(RAYLAB_PRECOMPILED_STANDARD_HEADERS <glm/glm.hpp> <algorithm> <cmath> <cstdint> <functional> <memory>
     <optional> <string> <utility> <vector>)
 function(raylab_precompile_headers target)
@@ -40,9 +45,9 @@ function(raylab_precompile_headers target)
   endif()
 endfunction()
 function(raylab_reuse_precompiled_headers target)
-  if(RAYLAB_PRECOMPILE_HEADERS)
+  if(RAYLAB_PRECOMPILE_HEADERS OR (ARGV1 STREQUAL "SELF_TEST" AND RAYLAB_PRECOMPILE_SELF_TESTS))
     if(NOT TARGET raylab_stage_code_pch)
-      file(WRITE ${PROJECT_BINARY_DIR}/generated/stage_code_pch.cpp "// the precompiled header's own file\n")
+      file(CONFIGURE OUTPUT ${PROJECT_BINARY_DIR}/generated/stage_code_pch.cpp CONTENT "// the precompiled header's own file\n")
       add_library(raylab_stage_code_pch OBJECT ${PROJECT_BINARY_DIR}/generated/stage_code_pch.cpp)
       target_link_libraries(raylab_stage_code_pch PUBLIC raylab_framework PRIVATE raylab_options)
       target_precompile_headers(raylab_stage_code_pch PRIVATE ${RAYLAB_PRECOMPILED_STANDARD_HEADERS})

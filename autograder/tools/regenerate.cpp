@@ -3,12 +3,15 @@
 // CI can check that what is checked in is what the solutions produce.
 //
 //   autograder-regenerate [--output DIR] [--seed N] [--check REFERENCE_DIR]
+//   autograder-regenerate --compare GENERATED_DIR --check REFERENCE_DIR
 //
 // For every stage of stages.json, in order: the reference data its <id>_cases.cpp registers
 // (autograder/reference/<id>_cases.json), and the picture of its image test (<id>.png).
 //
 // --check compares what it wrote with REFERENCE_DIR (the checked-in data; a ctest does this)
-// and exits 1 naming every file that differs. Numbers may differ in their last bits across
+// and exits 1 naming every file that differs. With --compare it writes nothing and compares
+// GENERATED_DIR, an earlier run's --output, instead (a ctest checks that --check catches stale
+// data on the folder the test of the checked-in data regenerated). Numbers may differ in their last bits across
 // C libraries (with Debian 13's tanf, 15 of stage 01's 200 ray directions move by up to 1.2e-7), so
 // JSON numbers are compared to kNumberUlps float ulps (of the number, or of 1 if smaller) and images pixel by pixel with a small
 // tolerance; everything else (the set of files, keys, strings, array lengths) exactly.
@@ -130,36 +133,48 @@ int check_against(const std::string& generated_dir, const std::string& reference
   return stale;
 }
 
+constexpr std::uint32_t kReleasedSeed = 2026;  // autograder/reference/, which students have
+
+// Writes every stage's reference data and picture into `output`.
+void write_reference_data(const std::string& output, std::uint32_t seed) {
+  std::filesystem::create_directories(output);
+  for (const StageDescription& stage : stage_table()) {
+    const std::string id(stage.id);
+    if (const ReferenceData* data = reference_data_of(id)) {
+      // The seed as the failures name it ("200 of 200 reference rays differ (seed 2026)"): a
+      // course's own seed stays private (tools/gradescope/setup.sh), so its cases say "private".
+      const json seed_shown = seed == kReleasedSeed ? json(seed) : json("private");
+      json document = {{"stage", id}, {"seed", data->seeded ? seed_shown : json(nullptr)}};
+      document.update(data->generate(seed));  // each stage draws from its own stream
+      write_json(output + "/" + id + "_cases.json", document);
+    }
+    if (!stage.image_scene.empty()) {
+      const std::string image_path = output + "/" + reference_image_name(id);
+      write_image(render_stage_image(id), image_path);
+      std::cout << "wrote " << image_path << "\n";
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Regenerate the autograder's reference data from solutions/"};
   std::string output = RAYLAB_REFERENCE_DIR;
-  constexpr std::uint32_t kReleasedSeed = 2026;  // autograder/reference/, which students have
   std::uint32_t seed = kReleasedSeed;
   app.add_option("--output", output, "Folder to write into")->capture_default_str();
   app.add_option("--seed", seed, "Seed of the random cases (a course may grade with its own)")->capture_default_str();
   std::string check;
   app.add_option("--check", check, "Compare what was written with this folder (the checked-in data); exit 1 if it is out of date");
+  std::string compare;
+  app.add_option("--compare", compare, "Write nothing: compare this folder, an earlier run's --output, with --check's")
+      ->needs(app.get_option("--check"))
+      ->excludes(app.get_option("--output"))
+      ->excludes(app.get_option("--seed"));
   CLI11_PARSE(app, argc, argv);
+  if (!compare.empty()) output = compare;
   try {
-    std::filesystem::create_directories(output);
-    for (const StageDescription& stage : stage_table()) {
-      const std::string id(stage.id);
-      if (const ReferenceData* data = reference_data_of(id)) {
-        // The seed as the failures name it ("200 of 200 reference rays differ (seed 2026)"): a
-        // course's own seed stays private (tools/gradescope/setup.sh), so its cases say "private".
-        const json seed_shown = seed == kReleasedSeed ? json(seed) : json("private");
-        json document = {{"stage", id}, {"seed", data->seeded ? seed_shown : json(nullptr)}};
-        document.update(data->generate(seed));  // each stage draws from its own stream
-        write_json(output + "/" + id + "_cases.json", document);
-      }
-      if (!stage.image_scene.empty()) {
-        const std::string image_path = output + "/" + reference_image_name(id);
-        write_image(render_stage_image(id), image_path);
-        std::cout << "wrote " << image_path << "\n";
-      }
-    }
+    if (compare.empty()) write_reference_data(output, seed);
     if (!check.empty()) {
       if (const int stale = check_against(output, check); stale > 0) {
         std::cerr << "autograder-regenerate: " << check << " is out of date (" << stale

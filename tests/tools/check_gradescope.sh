@@ -4,7 +4,8 @@
 # run_autograder per submission, each scored from $ROOT/results/results.json:
 #   the solutions                    full marks
 #   no files (the stubs)             0
-#   a broken camera                  loses stage 01, and later stages only tests that trace with it
+#   a broken camera, with a memory   loses stages 01, 03 and 10, and nothing else
+#   bomb and a fork bomb
 #   code that does not compile       0, and results.json says so
 #   a camera that copies the released reference answers: nothing for it on the server (fresh
 #   cases from the course's seed), nor against the released data where the sandbox's Landlock
@@ -15,9 +16,8 @@
 # and the Gradescope fields: Markdown output with a failed picture inlined, execution times, the
 # course's --visibility rules, and the leaderboard. Every run is within Gradescope's limits (768 MB
 # of memory for the whole run, one CPU), where a memory bomb (stage 03) with a fork bomb and a disk
-# filler (stage 10) lose those two stages only (and the pictures rendered with them), with no
-# process of the run killed for memory and no file left behind; each run's time and peak memory
-# are printed at the end.
+# filler (stage 10) lose those two stages only, with no process of the run killed for memory and no
+# file left behind; each run's time and peak memory are printed at the end.
 # The folder standing for /autograder is made under /tmp (every folder above it searchable), as
 # the service's is: the build's own user id must reach the kit.
 # Usage: check_gradescope.sh SOURCE_DIR WORK_DIR
@@ -27,16 +27,25 @@ rm -rf "$work"; mkdir -p "$work"
 root=$(mktemp -d "${TMPDIR:-/tmp}/raylab-gradescope.XXXXXX")
 # Gradescope's limits on every run_autograder below (its defaults: 768 MB of memory for the
 # container, half a CPU, 10 minutes): a memory cgroup of 768 MB where this machine lets the test
-# make one (cgroup v1 or v2, as root; else the runs are not bounded, and the test says so), one CPU
-# (taskset), and the 10 minutes (make-gradescope --minutes 10; the run is killed at 600 s).
+# make one (cgroup v1 or v2, as root), else (or with RAYLAB_PIPELINE_WITHOUT_CGROUP=1) each process
+# of a run held to 768 MB of heap and anonymous memory (prlimit --data: the run's total is then not
+# bounded, and the test says so); one CPU (taskset), and the 10 minutes (make-gradescope --minutes
+# 10; the run is killed at 600 s).
 limit_mb=768
 memory_cgroup=""
-if [ -d /sys/fs/cgroup/memory ] && mkdir "/sys/fs/cgroup/memory/raylab-gradescope-$$" 2>/dev/null; then
+per_process_limit=()
+if [ -n "${RAYLAB_PIPELINE_WITHOUT_CGROUP:-}" ]; then
+  :
+elif [ -d /sys/fs/cgroup/memory ] && mkdir "/sys/fs/cgroup/memory/raylab-gradescope-$$" 2>/dev/null; then
   memory_cgroup=/sys/fs/cgroup/memory/raylab-gradescope-$$
   echo $((limit_mb * 1048576)) > "$memory_cgroup/memory.limit_in_bytes"
 elif grep -qw memory /sys/fs/cgroup/cgroup.subtree_control 2>/dev/null && mkdir "/sys/fs/cgroup/raylab-gradescope-$$" 2>/dev/null; then
   memory_cgroup=/sys/fs/cgroup/raylab-gradescope-$$
   echo $((limit_mb * 1048576)) > "$memory_cgroup/memory.max"
+fi
+if [ -z "$memory_cgroup" ]; then
+  command -v prlimit >/dev/null || { echo "FAIL: no memory cgroup, and no prlimit (Debian package util-linux) to limit each process"; exit 1; }
+  per_process_limit=(prlimit --data=$((limit_mb * 1048576)))
 fi
 one_cpu=(); command -v taskset >/dev/null && one_cpu=(taskset -c 0)
 cleanup() {
@@ -53,6 +62,7 @@ oom_kills() {
     awk '$1 == "oom_kill" {n += $2} END {print n + 0}'
 }
 peak_mb() {
+  [ -n "$memory_cgroup" ] || { echo "not measured"; return; }
   local bytes; bytes=$({ cat "$memory_cgroup/memory.max_usage_in_bytes" "$memory_cgroup/memory.peak" 2>/dev/null || true; } | head -1)
   echo $(( ${bytes:-0} / 1048576 ))
 }
@@ -87,7 +97,7 @@ grade() {
   { time (
       [ -z "$memory_cgroup" ] || echo "$BASHPID" > "$memory_cgroup/cgroup.procs"
       # Gradescope ends a run at its time limit (here the 10 minutes of --minutes 10).
-      timeout -s KILL 600 ${one_cpu[@]+"${one_cpu[@]}"} bash "$root/source/run_autograder" > "$work/$1.log" 2>&1 ||
+      timeout -s KILL 600 ${one_cpu[@]+"${one_cpu[@]}"} ${per_process_limit[@]+"${per_process_limit[@]}"} bash "$root/source/run_autograder" > "$work/$1.log" 2>&1 ||
         [ $? != 137 ] || echo "$1: the run went past the 10 minutes: Gradescope would show no score" >> "$work/grade-failures"
     ); } 2> "$work/$1.time"  # (no exec above: time would see nothing)
   # (grade runs in $(...): its failures reach the count through a file)
@@ -95,7 +105,7 @@ grade() {
     echo "$1: a process of the run was killed for want of memory (the container's $limit_mb MB)" | tee -a "$work/grade-failures" >&2
   read -r wall user system < "$work/$1.time"
   awk -v name="$1" -v wall="$wall" -v cpu="$(awk -v u="$user" -v s="$system" 'BEGIN {print u + s}')" -v peak="$(peak_mb)" \
-    'BEGIN {printf "  %-22s %6.1f s wall, %6.1f s CPU on one core (at half a CPU about %4.0f s), peak %4d MB\n", name, wall, cpu, 2 * cpu, peak}' >> "$work/limits.txt"
+    'BEGIN {printf "  %-22s %6.1f s wall, %6.1f s CPU on one core (at half a CPU about %4.0f s), peak %s%s\n", name, wall, cpu, 2 * cpu, peak, peak ~ /^[0-9]+$/ ? " MB" : ""}' >> "$work/limits.txt"
   [ -f "$root/results/results.json" ] || { echo "$1: no results.json" | tee -a "$work/grade-failures" >&2; echo -1; return; }
   cp "$root/results/results.json" "$work/$1.results.json"
   python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["score"])' "$root/results/results.json"
@@ -157,16 +167,27 @@ rm -rf "$root/submission"; mkdir -p "$root/submission"
 score=$(grade stubs)
 [ "$score" = "0" ] || fail "the stubs scored $score"
 
+# A broken camera (stage 01), a memory bomb that writes every page it takes (stage 03), and a fork
+# bomb with a disk filler (stage 10, tests/tools/gradescope_hostile/), in one submission: within the
+# container's memory and disk, each costs its own stage alone (every other stage is graded with the
+# grader's own versions of the stages it builds on).
 submit_solutions_except 01_camera_rays/camera_rays.cpp
 cp "$source_dir/tests/submissions/camera_half_size_screen.cpp" "$root/submission/camera_rays.cpp"
+rm -f "$root/submission/triangle.cpp" "$root/submission/microfacet.cpp"
+cp "$source_dir/tests/tools/gradescope_hostile/triangle.cpp" "$source_dir/tests/tools/gradescope_hostile/microfacet.cpp" "$root/submission/"
 score=$(grade broken)
-# Lost: stage 01's tests, and nothing else (every other stage is graded with the grader's own camera).
-python3 - "$work/broken.results.json" <<'PYTHON' || fail "the broken camera scored $score of $max (expected to lose stage 01's tests only)"
+python3 - "$work/broken.results.json" <<'PYTHON' || fail "the broken camera, memory bomb, fork bomb and disk filler scored $score of $max (expected to lose stages 01, 03 and 10 only: above)"
 import json, sys
-lost = [t["name"] for t in json.load(open(sys.argv[1]))["tests"] if t["score"] < t["max_score"]]
-wrong = [name for name in lost if not name.startswith("01_camera_rays:")]
-print("\n".join(f"lost, but only the camera is broken: {name}" for name in wrong))
-sys.exit(1 if wrong or not any(name.startswith("01_camera_rays:") for name in lost) else 0)
+tests = json.load(open(sys.argv[1]))["tests"]
+lost = [t["name"] for t in tests if t["score"] < t["max_score"]]
+wrong = [name for name in lost if not name.startswith(("01_camera_rays:", "03_triangle:", "10_microfacet:"))]
+print("\n".join(f"lost, but its stage is correct: {name}" for name in wrong))
+problems = bool(wrong)
+for stage in ("01_camera_rays:", "10_microfacet:"):
+    if not any(name.startswith(stage) for name in lost): print(f"{stage} lost nothing"); problems = True
+if not any(t["name"].startswith("03_triangle:") and "memory" in t.get("output", "") for t in tests):
+    print("stage 03's memory bomb is not named"); problems = True
+sys.exit(1 if problems else 0)
 PYTHON
 # Its failed picture test shows yours | reference | difference inlined in the Markdown output.
 python3 - "$work/broken.results.json" <<'PYTHON' || fail "the broken camera's failed picture is not inlined in results.json"
@@ -174,26 +195,6 @@ import json, sys
 tests = {t["name"]: t for t in json.load(open(sys.argv[1]))["tests"]}
 test = tests["01_camera_rays: DirectionImageMatchesReference"]
 sys.exit(0 if test["score"] == 0 and "](data:image/png;base64,iVBORw0KGgo" in test["output"] else 1)
-PYTHON
-
-# A memory bomb (stage 03) that writes every page it takes, a fork bomb and a disk filler (stage
-# 10, tests/tools/gradescope_hostile/): within the container's memory and disk, costing those two
-# stages alone.
-submit_solutions_except 03_triangle/triangle.cpp
-rm -f "$root/submission/microfacet.cpp"
-cp "$source_dir/tests/tools/gradescope_hostile/triangle.cpp" "$source_dir/tests/tools/gradescope_hostile/microfacet.cpp" "$root/submission/"
-mkdir -p "$root/submission/03_triangle" && cp "$source_dir/solutions/03_triangle/"*.h "$root/submission/03_triangle/"  # stage 05's leaf test includes them
-grade hostile > /dev/null
-python3 - "$work/hostile.results.json" <<'PYTHON' || fail "the memory bomb, fork bomb and disk filler cost more than stages 03 and 10 (above)"
-import json, sys
-tests = json.load(open(sys.argv[1]))["tests"]
-lost = [t["name"] for t in tests if t["score"] < t["max_score"]]
-wrong = [name for name in lost if not name.startswith(("03_triangle:", "10_microfacet:"))]
-print("\n".join(f"lost, but its stage is correct: {name}" for name in wrong))
-memory = [t for t in tests if t["name"].startswith("03_triangle:") and "memory" in t.get("output", "")]
-if not memory: print("stage 03's memory bomb is not named")
-if not any(name.startswith("10_microfacet:") for name in lost): print("stage 10 lost nothing")
-sys.exit(1 if wrong or not memory or not any(name.startswith("10_microfacet:") for name in lost) else 0)
 PYTHON
 left=$(find /tmp /var/tmp /dev/shm "$root" -maxdepth 3 -name 'fill-*' 2>/dev/null | head -3)
 [ -z "$left" ] || { fail "the disk filler left files: $left"; find /tmp /var/tmp /dev/shm "$root" -maxdepth 3 -name 'fill-*' -delete 2>/dev/null || true; }
@@ -246,8 +247,8 @@ fi
 if [ -n "$memory_cgroup" ]; then
   echo "check_gradescope: each run_autograder in $limit_mb MB (a memory cgroup) and on one CPU:"
 else
-  echo "check_gradescope: no memory cgroup could be made here: the runs were not held to $limit_mb MB; on one CPU:"
+  echo "check_gradescope: no memory cgroup here: each process of a run held to $limit_mb MB (prlimit --data), the run's total not bounded; on one CPU:"
 fi
 cat "$work/limits.txt"
 if [ $failures -gt 0 ]; then echo "check_gradescope: $failures failures (logs in $work)"; exit 1; fi
-echo "check_gradescope: the pipeline grades the solutions $max/$max, the stubs 0, a broken camera, a compile error and copied answers right, with Gradescope's fields"
+echo "check_gradescope: the pipeline grades the solutions $max/$max, the stubs 0, a broken camera beside a memory bomb and a fork bomb, a compile error and copied answers right, with Gradescope's fields"

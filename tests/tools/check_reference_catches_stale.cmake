@@ -1,6 +1,8 @@
 # autograder-regenerate --check must fail on stale data: a copy of the reference data with one
 # stage-01 ray direction moved by 1e-5 (about 160 float ulps) and one image swapped for another
-# stage's must be reported, each file by name. Variables: REGENERATE, REFERENCE, WORK.
+# stage's must be reported, each file by name, against what the solutions produce now: the folder
+# that instructor_reference_data_is_current regenerated (its fixture), compared with --compare.
+# Variables: REGENERATE, REFERENCE, REGENERATED, WORK.
 cmake_minimum_required(VERSION 3.19)
 file(REMOVE_RECURSE "${WORK}")
 file(COPY "${REFERENCE}/" DESTINATION "${WORK}/stale")
@@ -17,7 +19,10 @@ set(new "${CMAKE_MATCH_1}${digit}${CMAKE_MATCH_3}")
 string(REPLACE "${old}" "${new}" cases "${cases}")
 file(WRITE "${WORK}/stale/01_camera_rays_cases.json" "${cases}")
 file(COPY_FILE "${REFERENCE}/02_sphere.png" "${WORK}/stale/05_bvh.png")
-execute_process(COMMAND "${REGENERATE}" --output "${WORK}/fresh" --check "${WORK}/stale"
+if(NOT EXISTS "${REGENERATED}/01_camera_rays_cases.json")
+  message(FATAL_ERROR "${REGENERATED} holds no regenerated data (instructor_reference_data_is_current writes it)")
+endif()
+execute_process(COMMAND "${REGENERATE}" --compare "${REGENERATED}" --check "${WORK}/stale"
                 RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE errors)
 if(status EQUAL 0)
   message(FATAL_ERROR "--check passed stale reference data (${old} -> ${new}, 05_bvh.png swapped)")
