@@ -17,6 +17,12 @@
 //     would outlive it: enter_own_namespaces), and a PID namespace whose process 1 is the judge's
 //     (start_in_own_pid_namespace: the stage sees no other process, and everything in the
 //     namespace dies with the server, or with the judge);
+//   - as root, where the kernel has the memory and pids controllers and lets the judge make a
+//     cgroup beneath its own (v1 or v2): a cgroup of its own per stage server (StageCgroup), whose
+//     memory limit counts everything it holds (page cache, memfds, pipe buffers, tmpfs: RLIMIT_AS
+//     counts only its address space), without swap, and whose pids.max bounds its processes and
+//     threads; a stage that reaches the limit is killed by the kernel and loses the call with the
+//     limit's name (crash_memory_limit);
 //   - both: Landlock where the kernel has it (no file may be created or written anywhere, files
 //     read only beneath the system's folders, the scenes and the server's own program: not the
 //     reference data, solutions/ or private cases; no TCP, no signals to processes outside the
@@ -44,12 +50,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -58,12 +66,19 @@
 namespace raylab::grading {
 namespace {
 
+// Where the judge makes a cgroup of its own for each stage server (version 0: nowhere).
+struct Cgroups {
+  int version = 0;  // 1 or 2
+  std::string memory_parent, pids_parent;  // the folders to make a stage's cgroup in (v2: the same)
+};
+
 struct Sandbox {
   bool as_root = false;
   uid_t uid = 0;  // the sandbox's own uid and gid, when as_root
   bool keeps_read_search = false;  // as_root, and the uid alone cannot reach the programs
   bool own_namespaces = false;     // as_root, and the kernel gives it network, IPC and PID namespaces
   int landlock = 0;
+  Cgroups cgroups;  // as_root only
 };
 
 // The descriptors a stage server may have open at once: its five, and room for files it reads
@@ -294,6 +309,180 @@ int stage_ruleset(int abi, const std::string& program) {
   return ruleset;
 }
 
+bool write_text(const std::string& path, const std::string& text) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool written = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+  ::close(fd);
+  return written;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::string text, line;
+  while (std::getline(in, line)) text += line + "\n";
+  return text;
+}
+
+// The judge's own cgroup in the v1 hierarchy of `controller`, or ("") in the unified (v2) one, as
+// /proc/self/cgroup names it; "" when it has none there.
+std::string own_cgroup(const std::string& controller) {
+  std::ifstream in("/proc/self/cgroup");
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t first = line.find(':'), second = line.find(':', first + 1);
+    if (first == std::string::npos || second == std::string::npos) continue;
+    const std::string controllers = "," + line.substr(first + 1, second - first - 1) + ",";
+    const bool match = controller.empty() ? controllers == ",," && line.compare(0, first, "0") == 0
+                                          : controllers.find("," + controller + ",") != std::string::npos;
+    if (match) return line.substr(second + 1);
+  }
+  return "";
+}
+
+bool can_make_cgroup_in(const std::string& folder) {
+  const std::string probe = folder + "/raylab-probe-" + std::to_string(::getpid());
+  if (::mkdir(probe.c_str(), 0700) != 0) return false;
+  ::rmdir(probe.c_str());
+  return true;
+}
+
+// Removes the empty stage cgroups that a judge which was killed left in `folder`.
+void remove_stale_stage_cgroups(const std::string& folder) {
+  DIR* listing = ::opendir(folder.c_str());
+  if (!listing) return;
+  const std::string prefix = "raylab-stage-";
+  while (const dirent* entry = ::readdir(listing)) {
+    const std::string name = entry->d_name;
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const pid_t judge = static_cast<pid_t>(std::atol(name.c_str() + prefix.size()));
+    if (judge > 0 && ::kill(judge, 0) != 0 && errno == ESRCH) ::rmdir((folder + "/" + name).c_str());
+  }
+  ::closedir(listing);
+}
+
+// Where this judge (as root) can make a stage's cgroup: beneath its own cgroup in the v1 memory
+// and pids hierarchies, else beneath its own v2 cgroup where memory and pids are already enabled
+// for children (the judge cannot enable them there itself: a v2 cgroup with processes of its own
+// may not). Nowhere else: a cgroup outside the judge's would escape the judge's own limits (a
+// container's).
+Cgroups find_cgroups() {
+  Cgroups found;
+  const std::string memory = own_cgroup("memory"), pids = own_cgroup("pids");
+  if (!memory.empty() && !pids.empty()) {
+    found.memory_parent = "/sys/fs/cgroup/memory" + memory;
+    found.pids_parent = "/sys/fs/cgroup/pids" + pids;
+    if (::access((found.memory_parent + "/memory.limit_in_bytes").c_str(), W_OK) == 0 &&
+        ::access((found.pids_parent + "/cgroup.procs").c_str(), F_OK) == 0 && can_make_cgroup_in(found.memory_parent) &&
+        can_make_cgroup_in(found.pids_parent)) {
+      found.version = 1;
+      remove_stale_stage_cgroups(found.memory_parent);
+      remove_stale_stage_cgroups(found.pids_parent);
+      return found;
+    }
+  }
+  const std::string unified = own_cgroup("");
+  if (!unified.empty() && ::access("/sys/fs/cgroup/cgroup.controllers", F_OK) == 0) {
+    const std::string folder = "/sys/fs/cgroup" + (unified == "/" ? std::string() : unified);
+    const std::string enabled = " " + read_text(folder + "/cgroup.subtree_control");
+    if (enabled.find(" memory") != std::string::npos && enabled.find(" pids") != std::string::npos &&
+        can_make_cgroup_in(folder)) {
+      found.version = 2;
+      found.memory_parent = found.pids_parent = folder;
+      remove_stale_stage_cgroups(folder);
+      return found;
+    }
+  }
+  return {};
+}
+
+// A stage server's own cgroup (one folder in v2, one per hierarchy in v1): made with its limits
+// before the fork, joined by the child before anything else (writing 0 to each cgroup.procs it
+// was given open), and removed when the stage has stopped.
+class StageCgroup {
+ public:
+  StageCgroup(const Cgroups& where, const SandboxLimits& limits) : version_(where.version) {
+    if (version_ == 0) return;
+    static std::atomic<unsigned> serial{0};
+    const std::string name = "/raylab-stage-" + std::to_string(::getpid()) + "-" + std::to_string(++serial);
+    const std::string memory = limits.memory_limit_mb > 0
+                                   ? std::to_string(static_cast<long long>(limits.memory_limit_mb) * 1024 * 1024)
+                                   : std::string(version_ == 1 ? "-1" : "max");
+    // (process 1 of the stage's PID namespace is one task more than the stage's own)
+    const std::string tasks = limits.max_processes > 0 ? std::to_string(limits.max_processes + 1) : "max";
+    bool made = true;
+    if (version_ == 1) {
+      made = make(where.memory_parent + name) && write_text(folders_.back() + "/memory.limit_in_bytes", memory);
+      // without swap (where the kernel accounts it): both limits the same
+      if (made && ::access((folders_.back() + "/memory.memsw.limit_in_bytes").c_str(), W_OK) == 0)
+        made = write_text(folders_.back() + "/memory.memsw.limit_in_bytes", memory);
+      events_ = folders_.empty() ? "" : folders_.front() + "/memory.oom_control";
+      made = made && make(where.pids_parent + name) && write_text(folders_.back() + "/pids.max", tasks);
+    } else {
+      made = make(where.memory_parent + name) && write_text(folders_.back() + "/memory.max", memory) &&
+             write_text(folders_.back() + "/pids.max", tasks);
+      if (made && ::access((folders_.back() + "/memory.swap.max").c_str(), W_OK) == 0)
+        made = write_text(folders_.back() + "/memory.swap.max", "0");
+      events_ = folders_.empty() ? "" : folders_.front() + "/memory.events";
+    }
+    for (const std::string& folder : folders_) {
+      if (!made) break;
+      procs_.push_back(::open((folder + "/cgroup.procs").c_str(), O_WRONLY | O_CLOEXEC));
+      made = procs_.back() >= 0;
+    }
+    if (!made) {
+      const std::string error = std::strerror(errno);
+      remove();
+      throw std::runtime_error("could not make the stage's cgroup in " + where.memory_parent + ": " + error);
+    }
+  }
+  StageCgroup(const StageCgroup&) = delete;
+  StageCgroup& operator=(const StageCgroup&) = delete;
+  ~StageCgroup() { remove(); }
+
+  // In the child, before anything else: only system calls.
+  bool join() const {
+    for (const int fd : procs_)
+      if (::write(fd, "0", 1) != 1) return false;
+    return true;
+  }
+  // In the judge once the child has joined: the descriptors are no longer needed.
+  void close_procs() {
+    for (const int fd : procs_) ::close(fd);
+    procs_.clear();
+  }
+  // Whether the kernel killed a process of the stage for reaching the memory limit.
+  bool killed_for_memory() const {
+    if (events_.empty()) return false;
+    std::istringstream events(read_text(events_));
+    for (std::string key; events >> key;) {
+      long long count = 0;
+      if (!(events >> count)) break;
+      if (key == "oom_kill" && count > 0) return true;
+    }
+    return false;
+  }
+  // Once every process of the stage has ended (a killed process may take a moment to leave).
+  void remove() {
+    close_procs();
+    for (auto folder = folders_.rbegin(); folder != folders_.rend(); ++folder)
+      for (int attempt = 0; attempt < 1000 && ::rmdir(folder->c_str()) != 0 && errno == EBUSY; ++attempt)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    folders_.clear();
+  }
+
+ private:
+  bool make(const std::string& folder) {
+    if (::mkdir(folder.c_str(), 0700) != 0) return false;
+    folders_.push_back(folder);
+    return true;
+  }
+
+  int version_ = 0;
+  std::vector<std::string> folders_;
+  std::vector<int> procs_;
+  std::string events_;  // the file whose "oom_kill" counts the processes the kernel killed for memory
+};
+
 }  // namespace
 
 // Whether a process with the sandbox's uid can read and enter every folder the stage server
@@ -350,6 +539,7 @@ void prepare_judge() {
     while (probe > 0 && ::waitpid(probe, &status, 0) < 0 && errno == EINTR) {
     }
     box.own_namespaces = probe > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    box.cgroups = find_cgroups();
   }
 }
 
@@ -362,6 +552,10 @@ Message sandbox_description() {
   std::vector<Message> parts = {box.as_root ? MessageId::sandbox_own_user : MessageId::sandbox_your_user};
   if (box.keeps_read_search) parts.push_back(MessageId::sandbox_reads_every_folder);
   parts.push_back(box.own_namespaces ? MessageId::sandbox_own_namespaces : MessageId::sandbox_shared_namespaces);
+  if (box.cgroups.version > 0)
+    parts.push_back({MessageId::sandbox_cgroup, {{"version", std::to_string(box.cgroups.version)}}});
+  else
+    parts.push_back(MessageId::sandbox_no_cgroup);
   if (box.landlock > 0) {
     std::vector<Message> tcp, signals;
     if (box.landlock >= 4) tcp.push_back(MessageId::sandbox_no_tcp);
@@ -379,6 +573,8 @@ struct StageProcess::Child {
   long output_limit_bytes = 0;
   int end_report_fd = -1;  // with a PID namespace: pid is its process 1, which writes here how the
                            // server (its process 2) ended
+  std::unique_ptr<StageCgroup> cgroup;  // where the judge has cgroups
+  long memory_limit_mb = 0;
 };
 
 StageProcess::StageProcess() = default;
@@ -412,6 +608,16 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
     throw std::runtime_error(std::string("pipe failed: ") + std::strerror(errno));
   }
 
+  std::unique_ptr<StageCgroup> cgroup;
+  try {
+    if (box.cgroups.version > 0) cgroup = std::make_unique<StageCgroup>(box.cgroups, limits);
+  } catch (...) {
+    if (ruleset >= 0) ::close(ruleset);
+    for (const int fd : end_report)
+      if (fd >= 0) ::close(fd);
+    throw;
+  }
+
   const pid_t pid = box.own_namespaces ? fork_process(CLONE_NEWPID) : ::fork();
   if (pid < 0) {
     const int error = errno;
@@ -421,7 +627,9 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
     throw std::runtime_error(std::string("fork failed: ") + std::strerror(error));
   }
   if (pid == 0) {
-    // The child: only system calls from here to exec.
+    // The child: only system calls from here to exec. First into the stage's cgroup, so that
+    // everything it starts is in it.
+    if (cgroup && !cgroup->join()) child_fail("joining the stage's cgroup");
     if (box.own_namespaces && start_in_own_pid_namespace(end_report[1]) < 0) child_fail("fork in the PID namespace");
     ::setsid();
     const int null_fd = ::open("/dev/null", O_RDONLY);
@@ -473,7 +681,9 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
   ::close(replies[1]);
   if (ruleset >= 0) ::close(ruleset);
   if (end_report[1] >= 0) ::close(end_report[1]);
-  child_ = std::make_unique<Child>(Child{pid, output, limits.output_limit_bytes, end_report[0]});
+  if (cgroup) cgroup->close_procs();
+  child_ = std::make_unique<Child>(Child{pid, output, limits.output_limit_bytes, end_report[0], std::move(cgroup),
+                                         limits.memory_limit_mb});
   request_fd_ = requests[1];
   reply_fd_ = replies[0];
   // The judge's ends never block: every read and write waits in poll() for its deadline first.
@@ -535,6 +745,11 @@ ProcessEnd StageProcess::stop(bool kill_now, std::string& output) {
     end.exit_code = WEXITSTATUS(status);
   }
   kill_every_descendant();
+  if (child_->cgroup && child_->cgroup->killed_for_memory()) {
+    end.crashed = true;
+    end.crash = {MessageId::crash_memory_limit, {{"limit", std::to_string(child_->memory_limit_mb)}}};
+  }
+  child_->cgroup.reset();  // (its folders removed: every process of the stage has ended)
   ::close(reply_fd_);
   // What the stage code printed (the memfd is ours alone now).
   std::string text(static_cast<std::size_t>(child_->output_limit_bytes), '\0');

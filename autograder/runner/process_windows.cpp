@@ -186,7 +186,28 @@ struct StageProcess::Child {
   }
 };
 
-void limit_judge_memory(long) {}  // (not applied on Windows: stage_process.h)
+namespace {
+bool judge_in_own_job = false;  // limit_judge_memory put it there: stage servers break away from it
+}  // namespace
+
+// A job object of the judge's own whose limit is each process's committed memory. Stage servers
+// break away from it into their own jobs (JOB_OBJECT_LIMIT_BREAKAWAY_OK), so that, as on Linux, a
+// stage may be given more than the judge. Where the judge cannot join a job (in one already, on
+// Windows before 8), it goes on without the limit.
+void limit_judge_memory(long megabytes) {
+  if (megabytes <= 0) return;
+  HANDLE job = ::CreateJobObjectA(nullptr, nullptr);
+  if (job == nullptr) return;
+  JOBOBJECT_EXTENDED_LIMIT_INFORMATION limits{};
+  limits.BasicLimitInformation.LimitFlags = JOB_OBJECT_LIMIT_PROCESS_MEMORY | JOB_OBJECT_LIMIT_BREAKAWAY_OK;
+  limits.ProcessMemoryLimit = static_cast<SIZE_T>(megabytes) << 20;
+  if (::SetInformationJobObject(job, JobObjectExtendedLimitInformation, &limits, sizeof limits) &&
+      ::AssignProcessToJobObject(job, ::GetCurrentProcess())) {
+    judge_in_own_job = true;  // (its handle stays open as long as the judge runs)
+    return;
+  }
+  ::CloseHandle(job);
+}
 
 void prepare_judge() {
   // Inherited by every stage server: no dialog box for a crash or a missing drive; the process
@@ -277,9 +298,13 @@ void StageProcess::start(const std::string& program, const SandboxLimits& limits
   std::string command = quoted(program) + " " + std::to_string(reinterpret_cast<std::uintptr_t>(requests.read)) + " " +
                         std::to_string(reinterpret_cast<std::uintptr_t>(replies.write));
   PROCESS_INFORMATION info{};
-  const BOOL created = ::CreateProcessA(program.c_str(), command.data(), nullptr, nullptr, TRUE,
-                                        CREATE_SUSPENDED | CREATE_NO_WINDOW | EXTENDED_STARTUPINFO_PRESENT, nullptr,
-                                        nullptr, &startup.StartupInfo, &info);
+  const DWORD flags = CREATE_SUSPENDED | CREATE_NO_WINDOW | EXTENDED_STARTUPINFO_PRESENT;
+  BOOL created = ::CreateProcessA(program.c_str(), command.data(), nullptr, nullptr, TRUE,
+                                  flags | (judge_in_own_job ? CREATE_BREAKAWAY_FROM_JOB : 0), nullptr, nullptr,
+                                  &startup.StartupInfo, &info);
+  if (!created && judge_in_own_job && ::GetLastError() == ERROR_ACCESS_DENIED)  // a job around the judge's forbids it
+    created = ::CreateProcessA(program.c_str(), command.data(), nullptr, nullptr, TRUE, flags, nullptr, nullptr,
+                               &startup.StartupInfo, &info);
   ::DeleteProcThreadAttributeList(attributes);
   if (!created) fail(("starting " + program).c_str());
   child->process = info.hProcess;

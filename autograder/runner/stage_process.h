@@ -37,9 +37,10 @@ struct ProcessEnd {
 // the sandbox (see sandbox_description).
 void prepare_judge();
 
-// The judge's own memory: an address-space limit of `megabytes` (0: none) on this process alone
-// (Linux: RLIMIT_AS, its soft limit, so a stage server may still be given more; Windows: not
-// applied). Reaching it stops the run (autograder_main.cpp: judge_out_of_memory).
+// The judge's own memory: a limit of `megabytes` (0: none) on this process alone, so a stage server
+// may still be given more (Linux: RLIMIT_AS, its soft limit; Windows: the committed memory of a job
+// object of its own, which stage servers break away from). Reaching it stops the run
+// (autograder_main.cpp: judge_out_of_memory).
 void limit_judge_memory(long megabytes);
 
 // This program's own path with "-stage-server" added (before ".exe" on Windows): where

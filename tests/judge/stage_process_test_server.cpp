@@ -7,8 +7,13 @@
 //   huge      reads the request and announces a 256 MiB frame
 //   flood     reads the request, then asks the judge questions (kCallback frames) without end and
 //             never reads the answers
+//   hoard     (Linux) reads the request, fills 55 memfds with 1 MiB each (memory that its address
+//             space does not count), answers, and waits
 #include "protocol.h"
 
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 #include <unistd.h>
 
 #include <cstdlib>
@@ -40,6 +45,17 @@ int main() {
     if (::write(kReplyFd, header, sizeof header) != static_cast<ssize_t>(sizeof header)) return 1;
     for (;;) ::pause();
   }
+#ifdef __linux__
+  if (mode == "hoard") {
+    const std::string mebibyte(1u << 20, 'x');
+    for (int file = 0; file < 55; ++file) {
+      const int fd = ::memfd_create("hoard", 0);
+      if (fd < 0 || ::write(fd, mebibyte.data(), mebibyte.size()) != static_cast<ssize_t>(mebibyte.size())) return 3;
+    }
+    write_frame(kReplyFd, request);
+    for (;;) ::pause();
+  }
+#endif
   if (mode == "flood") {
     const std::string question = std::string(1, static_cast<char>(kCallback)) + "question";
     for (;;) write_frame(kReplyFd, question);

@@ -1,7 +1,8 @@
 // The judge's side of the pipes to a stage server (stage_process.h, protocol.h) against a server
 // that misbehaves on purpose (stage_process_test_server.cpp): every read and write ends by the
 // call's deadline, whatever the server does, and a reply over its limit is refused from its
-// header. The ctest judge_pipes_hold_their_deadlines. (Whether each ends soon after its deadline
+// header; and memory a server holds outside its address space stops it where the judge gives
+// stages a cgroup. The ctest judge_pipes_hold_their_deadlines. (Whether each ends soon after its deadline
 // is not asserted: no test here depends on the machine's speed; a hang would stop the ctest at
 // its time-out.)
 #include "protocol.h"
@@ -19,14 +20,14 @@ class StageProcessAgainst : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { prepare_judge(); }
 
-  void start(const char* mode) {
+  void start(const char* mode, long memory_limit_mb = 256) {
 #ifdef _WIN32
     _putenv_s("RAYLAB_TEST_SERVER", mode);
 #else
     ::setenv("RAYLAB_TEST_SERVER", mode, 1);
 #endif
     SandboxLimits limits;
-    limits.memory_limit_mb = 256;
+    limits.memory_limit_mb = memory_limit_mb;
     process.start(RAYLAB_TEST_SERVER_PATH, limits);
   }
   static Clock::time_point soon() { return Clock::now() + std::chrono::milliseconds(300); }
@@ -92,6 +93,27 @@ TEST_F(StageProcessAgainst, AServerThatFloodsQuestionsAndReadsNoAnswer) {
   }
   EXPECT_TRUE(ended);
 }
+
+#ifdef __linux__
+// 55 MiB in memfds, memory that an address-space limit does not count, under a limit of 48 MiB:
+// where the judge gives each stage a cgroup of its own (as root, where the kernel lets it: the
+// sandbox's description says so), the kernel stops the server at the limit and the stage loses
+// the call with the limit's name; elsewhere the server keeps that memory until its stage ends.
+TEST_F(StageProcessAgainst, AServerThatHoldsMemoryOutsideItsAddressSpace) {
+  start("hoard", 48);
+  ASSERT_TRUE(process.send("call", Clock::now() + std::chrono::seconds(60)));
+  std::string reply, output;
+  const protocol::FrameRead read = process.receive(reply, 1u << 20, Clock::now() + std::chrono::seconds(60));
+  const ProcessEnd end = process.stop(true, output);
+  if (render(sandbox_description(), Language::English).find("a cgroup of its own") != std::string::npos) {
+    EXPECT_EQ(read, protocol::FrameRead::kEnd) << "the server answered: it held 55 MiB under a cgroup of 48 MiB";
+    EXPECT_TRUE(end.crashed);
+    EXPECT_EQ(end.crash.id, MessageId::crash_memory_limit) << render(end.crash, Language::English);
+  } else {
+    EXPECT_EQ(read, protocol::FrameRead::kFrame) << "without a cgroup, nothing stops memory held outside the address space";
+  }
+}
+#endif
 
 }  // namespace
 }  // namespace raylab::grading

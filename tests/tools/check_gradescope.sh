@@ -4,12 +4,11 @@
 # run_autograder per submission, each scored from $ROOT/results/results.json:
 #   the solutions                    full marks
 #   no files (the stubs)             0
-#   a broken camera, with a memory   loses stages 01, 03 and 10, and nothing else
-#   bomb and a fork bomb
+#   a broken camera that copies the released reference answers, with a memory bomb and a fork
+#   bomb: loses stages 01, 03 and 10 and nothing else; nothing for the copied answers on the
+#   server (fresh cases from the course's seed), nor against the released data where the
+#   sandbox's Landlock read rules hold (without them it earns MatchesReferenceRays there)
 #   code that does not compile       0, and results.json says so
-#   a camera that copies the released reference answers: nothing for it on the server (fresh
-#   cases from the course's seed), nor against the released data where the sandbox's Landlock
-#   read rules hold (without them it earns MatchesReferenceRays there)
 #   a sphere that #includes the reference solution, or (as root) .incbin's the fresh cases: 0, the
 #   kit has no solutions/ after setup.sh and the build runs as a user that cannot read the cases;
 #   the course's seed appears in no output
@@ -167,12 +166,13 @@ rm -rf "$root/submission"; mkdir -p "$root/submission"
 score=$(grade stubs)
 [ "$score" = "0" ] || fail "the stubs scored $score"
 
-# A broken camera (stage 01), a memory bomb that writes every page it takes (stage 03), and a fork
-# bomb with a disk filler (stage 10, tests/tools/gradescope_hostile/), in one submission: within the
-# container's memory and disk, each costs its own stage alone (every other stage is graded with the
-# grader's own versions of the stages it builds on).
+# A broken camera (its y axis flipped) that copies the released answers (stage 01), a memory bomb
+# that writes every page it takes (stage 03), and a fork bomb with a disk filler (stage 10,
+# tests/tools/gradescope_hostile/), in one submission: within the container's memory and disk,
+# each costs its own stage alone (every other stage is graded with the grader's own versions of
+# the stages it builds on).
 submit_solutions_except 01_camera_rays/camera_rays.cpp
-cp "$source_dir/tests/submissions/camera_half_size_screen.cpp" "$root/submission/camera_rays.cpp"
+cp "$source_dir/tests/submissions/camera_copies_released_cases.cpp" "$root/submission/camera_rays.cpp"
 rm -f "$root/submission/triangle.cpp" "$root/submission/microfacet.cpp"
 cp "$source_dir/tests/tools/gradescope_hostile/triangle.cpp" "$source_dir/tests/tools/gradescope_hostile/microfacet.cpp" "$root/submission/"
 score=$(grade broken)
@@ -198,22 +198,12 @@ sys.exit(0 if test["score"] == 0 and "](data:image/png;base64,iVBORw0KGgo" in te
 PYTHON
 left=$(find /tmp /var/tmp /dev/shm "$root" -maxdepth 3 -name 'fill-*' 2>/dev/null | head -3)
 [ -z "$left" ] || { fail "the disk filler left files: $left"; find /tmp /var/tmp /dev/shm "$root" -maxdepth 3 -name 'fill-*' -delete 2>/dev/null || true; }
-
-submit_solutions_except 04_box/box.cpp
-echo "this is not C++" > "$root/submission/box.cpp"
-score=$(grade does_not_compile)
-[ "$score" = "0" ] && grep -q "did not compile" "$work/does_not_compile.results.json" || fail "code that does not compile scored $score"
-python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$work/does_not_compile.results.json" ||
-  fail "the compile error's results.json is not JSON"
-
-submit_solutions_except 01_camera_rays/camera_rays.cpp
-cp "$source_dir/tests/submissions/camera_copies_released_cases.cpp" "$root/submission/camera_rays.cpp"
-grade copies_released > /dev/null
-[ "$(test_score "$work/copies_released.results.json" "01_camera_rays: MatchesReferenceRays")" = 0 ] ||
+[ "$(test_score "$work/broken.results.json" "01_camera_rays: MatchesReferenceRays")" = 0 ] ||
   fail "copying the released answers earned MatchesReferenceRays on the server"
+# The same camera graded locally in the kit (still built with it) against the released data: where
+# Landlock's read rules hold, the stage server cannot read that data at all (0); without them it
+# copies the answers (3), which shows what the fresh cases defeat.
 "$kit/build/bin/autograder" --stage 01 --verbose --json "$work/released.json" --output "$work/released-images" > "$work/released.log" 2>&1 || true
-# Against the released data: where Landlock's read rules hold, the stage server cannot read it at
-# all (0); without them it copies the answers (3), which shows what the fresh cases defeat.
 if grep -q "no file read but the system's" "$work/released.log"; then
   [ "$(test_score "$work/released.json" "01_camera_rays: MatchesReferenceRays")" = 0 ] ||
     fail "the copying camera read the released data, although the sandbox forbids reading it"
@@ -221,6 +211,13 @@ else
   [ "$(test_score "$work/released.json" "01_camera_rays: MatchesReferenceRays")" = 3 ] ||
     fail "the copying camera should earn MatchesReferenceRays against the released data (else this test proves nothing)"
 fi
+
+submit_solutions_except 04_box/box.cpp
+echo "this is not C++" > "$root/submission/box.cpp"
+score=$(grade does_not_compile)
+[ "$score" = "0" ] && grep -q "did not compile" "$work/does_not_compile.results.json" || fail "code that does not compile scored $score"
+python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$work/does_not_compile.results.json" ||
+  fail "the compile error's results.json is not JSON"
 
 # The reference solution, #included: no solutions/ to include after setup.sh.
 submit_solutions_except 02_sphere/sphere.cpp
@@ -251,4 +248,4 @@ else
 fi
 cat "$work/limits.txt"
 if [ $failures -gt 0 ]; then echo "check_gradescope: $failures failures (logs in $work)"; exit 1; fi
-echo "check_gradescope: the pipeline grades the solutions $max/$max, the stubs 0, a broken camera beside a memory bomb and a fork bomb, a compile error and copied answers right, with Gradescope's fields"
+echo "check_gradescope: the pipeline grades the solutions $max/$max, the stubs 0, a broken camera copying answers beside a memory bomb and a fork bomb, and a compile error right, with Gradescope's fields"
