@@ -368,9 +368,14 @@ void remove_stale_stage_cgroups(const std::string& folder) {
 Cgroups find_cgroups() {
   Cgroups found;
   const std::string memory = own_cgroup("memory"), pids = own_cgroup("pids");
+  // (In a container the hierarchy's mount is often the judge's own cgroup, not the machine's root,
+  // and the path /proc/self/cgroup names is not beneath it.)
+  const auto folder_of = [](const std::string& mount, const std::string& path) {
+    return ::access((mount + path).c_str(), F_OK) == 0 ? mount + path : mount;
+  };
   if (!memory.empty() && !pids.empty()) {
-    found.memory_parent = "/sys/fs/cgroup/memory" + memory;
-    found.pids_parent = "/sys/fs/cgroup/pids" + pids;
+    found.memory_parent = folder_of("/sys/fs/cgroup/memory", memory);
+    found.pids_parent = folder_of("/sys/fs/cgroup/pids", pids);
     if (::access((found.memory_parent + "/memory.limit_in_bytes").c_str(), W_OK) == 0 &&
         ::access((found.pids_parent + "/cgroup.procs").c_str(), F_OK) == 0 && can_make_cgroup_in(found.memory_parent) &&
         can_make_cgroup_in(found.pids_parent)) {
