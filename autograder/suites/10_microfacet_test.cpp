@@ -526,6 +526,29 @@ bool half_vectors_follow_ggx(const std::string& call, const std::vector<glm::dve
   return false;
 }
 
+// Whether half vectors follow the density of GGX's visible normals seen from wo (Heitz's
+// sampling, which the contract rules out): G1(wo) max(0, wo . h) D(h) / wo.z per steradian, so
+// G1(wo) max(0, wo . h) / (wo.z cos(theta_h)) in the coordinates where D(h) cos(theta_h) is
+// uniform. From wo along the normal it is D(h) cos(theta_h) itself; only an oblique wo tells.
+bool half_vectors_follow_visible_normals(const glm::vec3& wo, const std::vector<glm::dvec3>& half_vectors, double alpha) {
+  testkit::Histogram2D histogram(kGrid, kGrid, 0.0, 1.0, 0.0, 1.0);
+  for (const glm::dvec3& h : half_vectors) {
+    const glm::dvec2 c = ggx_uniform_coordinates(h, alpha);
+    histogram.add(c.x, c.y);
+  }
+  if (histogram.outside() > 0) return false;
+  const glm::dvec3 o(wo);
+  const double g1 = smith_g1(o.z, alpha);
+  const auto density = [&](double share, double phi) {
+    const double tan2 = alpha * alpha * share / std::max(1e-300, 1.0 - share);
+    const double cos_h = 1.0 / std::sqrt(1.0 + tan2), sin_h = std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h));
+    const glm::dvec3 h(sin_h * std::cos(2.0 * kPiD * phi), sin_h * std::sin(2.0 * kPiD * phi), cos_h);
+    return g1 * std::max(0.0, glm::dot(o, h)) / (o.z * cos_h);
+  };
+  const std::vector<double> expected = histogram.expected_counts(density, static_cast<double>(half_vectors.size()), 12);
+  return testkit::chi_square_test(histogram.counts(), expected, kMistakeLevel).passed;
+}
+
 // Whether the student's sample_ggx_half_vector passes (asked once; sample_microfacet_wi's hints name it).
 bool half_vector_sampler_is_right(bool report) {
   static std::optional<bool> right;
@@ -597,6 +620,8 @@ GRADED_TEST(kStage, Stage10Microfacet, MicrofacetWiSamples, 4) {
     for (const glm::vec3& wi : samples) coordinates.push_back(ggx_uniform_coordinates(glm::dvec3(wi), kAlpha));
     (void)chi_square_p(coordinates, kMistakeLevel, &fits);
     if (fits) add_hint({MessageId::microfacet_wi_is_half_vector, {section(6)}});
+    if (wo.z < 1.0f && half_vectors_follow_visible_normals(wo, half_vectors_of(1.0), kAlpha))
+      add_hint({MessageId::microfacet_wi_visible_normals, {section(6)}});
   }
   if (!all && !half_vector_sampler_is_right(false))
     add_hint({MessageId::microfacet_uses_your_function, {{"function", "sample_microfacet_wi"}, {"yours", "sample_ggx_half_vector"}}});

@@ -22,6 +22,7 @@ struct MicrofacetVariant {
   bool g1_tan_not_squared = false;      // G1 = 2 / (1 + sqrt(1 + alpha^2 tan(theta)))
   bool g1_no_factor_two = false;        // G1 = 1 / (1 + sqrt(1 + alpha^2 tan^2(theta))): 1/2 along the normal
   bool half_vector_below = false;       // the half vector's z negated (below the surface)
+  bool wi_visible_normals = false;      // sample_microfacet_wi mirrors wo about a visible normal (Heitz 2018)
 };
 
 inline MicrofacetVariant microfacet_variant() {
@@ -78,8 +79,24 @@ float ggx_half_vector_pdf(const glm::vec3& half_vector, float alpha) {
   return half_vector.z > 0.0f || !v.horizon_checks ? ggx_distribution(half_vector, alpha) * half_vector.z : 0.0f;
 }
 
+// A normal of GGX's visible normals seen from wo: wo stretched to the hemisphere of alpha 1, a
+// point of the projected disk (the half of it behind the stretched wo squeezed), lifted onto the
+// hemisphere and unstretched (Heitz, "Sampling the GGX Distribution of Visible Normals", 2018).
+inline glm::vec3 visible_normal(const glm::vec3& wo, glm::vec2 u, float alpha) {
+  const glm::vec3 v = glm::normalize(glm::vec3(alpha * wo.x, alpha * wo.y, wo.z));
+  const float length_xy = std::sqrt(v.x * v.x + v.y * v.y);
+  const glm::vec3 t1 = length_xy > 0.0f ? glm::vec3(-v.y, v.x, 0.0f) / length_xy : glm::vec3(1.0f, 0.0f, 0.0f);
+  const glm::vec3 t2 = glm::cross(v, t1);
+  const float r = std::sqrt(u.x), phi = 6.28318531f * u.y;
+  const float p1 = r * std::cos(phi), s = 0.5f * (1.0f + v.z);
+  const float p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * r * std::sin(phi);
+  const glm::vec3 n = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * v;
+  return glm::normalize(glm::vec3(alpha * n.x, alpha * n.y, std::max(0.0f, n.z)));
+}
+
 glm::vec3 sample_microfacet_wi(const glm::vec3& wo, glm::vec2 uniform_random, float alpha) {
-  const glm::vec3 h = sample_ggx_half_vector(uniform_random, alpha);
+  const glm::vec3 h = submission::microfacet_variant().wi_visible_normals ? visible_normal(wo, uniform_random, alpha)
+                                                                         : sample_ggx_half_vector(uniform_random, alpha);
   return 2.0f * glm::dot(wo, h) * h - wo;
 }
 
