@@ -6,7 +6,7 @@
 //   ray.t_min, ray.t_max        the part of the ray that counts: t in [t_min, t_max] (ends
 //                               included). During a BVH traversal t_max is the closest hit so far.
 //   ray_direction_inverse       (1 / direction.x, 1 / direction.y, 1 / direction.z), computed ONCE
-//                               per ray by the caller, so that this function never divides.
+//                               per ray by the caller: multiply by it rather than divide (faster).
 //                               A zero component gives +infinity (for +0) or -infinity (for -0).
 //   box.min, box.max            the closed box's corners, min <= max on every axis. A flat box
 //                               (min == max on some axis) is allowed: a triangle in z = 0 has one.

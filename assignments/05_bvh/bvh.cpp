@@ -52,10 +52,10 @@
 // WHAT YOU RETURN
 //   BvhHit{t_hit, primitive} of the closest hit (or the first, for any_hit); std::nullopt if
 //   nothing is hit. The work counts too (the autograder counts the triangles you test and the
-//   leaves you enter, and checks your stats): test a node's box (stage 04) before anything
-//   below it, skip what lies beyond the closest hit found so far, and visit the near child
-//   first. Use no recursion and no allocation: the
-//   stack never needs more than kBvhMaxDepth entries.
+//   leaves you enter, and checks your stats): skip what lies beyond the closest hit found so
+//   far, and visit the near child first. How, not graded (the autograder sees only the
+//   triangles and leaves): test a node's box (stage 04) before anything below it, and keep the
+//   nodes to visit on a stack of kBvhMaxDepth entries, with no recursion and no allocation.
 //
 // READ docs/05_bvh.md, section 3 (the traversal loop), and section 4 (how the renderer uses it).
 //
@@ -64,8 +64,9 @@
 //
 //   Receives and returns what build_bvh does (the same tree rules, leaves of at most
 //   max_leaf_size), but splits each node where the surface area heuristic (SAH) predicts the
-//   least work, by binning the centroids, and makes a leaf where splitting would not pay. Its
-//   tree must be valid and its bvh_sah_cost (raylab/bvh_tools.h) close to the reference's.
+//   least work, and makes a leaf where splitting would not pay. Its tree must be valid and its
+//   bvh_sah_cost (raylab/bvh_tools.h) close to the reference's; binning the centroids is the
+//   usual way to find the split (the handout's), and any way that reaches that cost passes.
 //
 // READ docs/05_bvh.md, section 5 (the cost, binning, the special cases).
 //

@@ -7,7 +7,8 @@
 //
 // WHAT EVERY FUNCTION RECEIVES
 //   uniform_random   two independent numbers, each uniform in [0, 1) (0 can happen, 1 never):
-//                    uniform_random.x and uniform_random.y. Use each once; do not call rand().
+//                    uniform_random.x and uniform_random.y. A warp depends on them alone: do
+//                    not call rand() (the autograder asks for the same numbers twice).
 //
 // CONVENTIONS
 //   Directions: unit-length glm::vec3 in a LOCAL frame whose z axis is the surface normal, so

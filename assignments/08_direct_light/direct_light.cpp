@@ -40,7 +40,7 @@ glm::vec3 point_light_intensity(const glm::vec3& power) {
 // RETURN the irradiance (W/m^2) at `point`, on a surface of unit `normal`, from a point light
 // of `intensity` (W/sr) at `light_position`: it falls off with the squared distance and with
 // the cosine between the normal and the direction to the light. 0 when the light is behind the
-// surface (that cosine <= 0). Ignore shadows.
+// surface (that cosine <= 0). No shadows here: the function sees no scene.
 glm::vec3 point_light_irradiance(const glm::vec3& intensity, const glm::vec3& light_position, const glm::vec3& point,
                                  const glm::vec3& normal) {
   (void)intensity;

@@ -19,12 +19,13 @@
 //   context.max_depth                 the most bounces after the camera ray (--max-depth): the
 //                                     surfaces at depth 0, 1, ..., max_depth all count (emission
 //                                     and direct light); the path stops after the one at
-//                                     depth == max_depth, without sampling a next direction
+//                                     depth == max_depth (it needs no next direction)
 //   context.continue_probability(depth, throughput)   p in (0, 1]: the chance to go on after
 //                                     this surface. depth: bounces so far (0 at the camera ray's
 //                                     hit); throughput: the weight that reached this surface,
 //                                     before you sample the next direction. --roulette sets it:
-//                                     a fixed P (1: no roulette) or auto (by the throughput)
+//                                     a fixed P (1: no roulette) or auto (by the throughput);
+//                                     the arguments change the noise, never the mean
 //   sampler.get_1d(), sampler.get_2d()   your random numbers (uniform in [0, 1))
 //
 // THE RULES (handout sections 2-5)
@@ -32,7 +33,8 @@
 //   - Russian roulette: go on with probability p, and when you do, divide by p.
 //   - Emission counts once: when the camera sees a light, and after a mirror or glass bounce;
 //     never after a diffuse bounce, whose light estimate_direct_light counted already.
-//   - Mirrors and glass get no direct light (their f is 0 for every sampled light direction).
+//   - Mirrors and glass need no direct light: their f is 0 for every sampled light direction,
+//     so estimate_direct_light would add 0 there (skip it, it saves a shadow ray).
 //
 // READ docs/09_path.md, section 6 for the common mistakes (the autograder's hints name them).
 //

@@ -24,8 +24,8 @@
 //   - Weight 1 where only one strategy can make the path: a point light (is_delta), the camera's
 //     hit and the hit after a mirror or glass, and the light sample at the last vertex
 //     (depth == context.max_depth: no BSDF sample follows it).
-//   - Draw the light's point with one sampler.get_2d() and the BSDF's direction with another (the
-//     grader replays your path with chosen numbers).
+//   - Not graded, but right: draw the light's point with one sampler.get_2d() and the BSDF's
+//     direction with another, so that the two choices are independent.
 //
 // READ docs/09b_mis.md, section 5 for the common mistakes (the autograder's hints name them).
 //

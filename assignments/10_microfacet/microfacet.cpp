@@ -50,7 +50,8 @@ float ggx_smith_g1(const glm::vec3& direction, float alpha) {
 
 // RETURN f(wo, wi) = D(h) G1(wo) G1(wi) F / (4 wo.z wi.z) with h = normalize(wo + wi) and
 // Schlick's F = specular_color + (1 - specular_color) (1 - dot(wi, h))^5 (per channel); 0 (all
-// channels) unless wo.z > 0 and wi.z > 0. Use your two functions above. Handout section 4.
+// channels) unless wo.z > 0 and wi.z > 0. Your two functions above give D and G1 (when one of
+// them is wrong, the hints say so here too). Handout section 4.
 glm::vec3 microfacet_f(const glm::vec3& wo, const glm::vec3& wi, float alpha, const glm::vec3& specular_color) {
   (void)wo;
   (void)wi;

@@ -193,7 +193,7 @@ int raylab_autograder_main(int argc, char** argv, const char* description, const
       for (const TestInfo& test : tests())
         if (test.stage == stage.number)
           std::cout << "    "
-                    << render({MessageId::console_list_test, {{"test", test.name}, {"points", std::to_string(test.points)}}})
+                    << render({test.points == 1 ? MessageId::console_list_test_one_point : MessageId::console_list_test, {{"test", test.name}, {"points", std::to_string(test.points)}}})
                     << "\n";
     }
     return 0;

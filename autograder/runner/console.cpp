@@ -140,7 +140,7 @@ void print_results(const std::vector<StageResult>& results, const Message& descr
                               : t.status == Status::NotAttempted ? MessageId::console_label_not_attempted
                                                                  : MessageId::console_label_failed;
       std::printf("  %s %s%s\n", pad_right(text_of(label), 6).c_str(), t.info.name.c_str(),
-                  text_of(MessageId::console_test_points, {{"points", std::to_string(t.info.points)}}).c_str());
+                  text_of(t.info.points == 1 ? MessageId::console_test_point : MessageId::console_test_points, {{"points", std::to_string(t.info.points)}}).c_str());
       std::istringstream lines(test_output(t, language()));
       for (std::string line; std::getline(lines, line);) std::printf("         %s\n", shown_as_text(line).c_str());
     }

@@ -235,7 +235,7 @@ std::string test_html(const TestResult& test, Language language, const std::stri
   std::string html = std::string("<article class=\"test ") + test_class(test.status) + "\"><h4><span class=\"label\">" +
                      escape_html(text_of(test_label(test.status), language)) + "</span>" + escape_html(test.info.name) +
                      "<span class=\"test-points\">" +
-                     escape_html(text_of({MessageId::console_test_points, {{"points", std::to_string(test.info.points)}}},
+                     escape_html(text_of({test.info.points == 1 ? MessageId::console_test_point : MessageId::console_test_points, {{"points", std::to_string(test.info.points)}}},
                                          language)) +
                      "</span></h4>\n";
   for (const Message& message : test.messages)
@@ -282,7 +282,7 @@ std::string stage_html(const StageResult& stage, Language language, const std::s
       ++passed;
       if (!test.images.empty()) shown_passed += test_html(test, language, kit_href);
       passed_list += "<li>" + escape_html(test.info.name) + "<span class=\"test-points\">" +
-                     escape_html(text_of({MessageId::console_test_points, {{"points", std::to_string(test.info.points)}}},
+                     escape_html(text_of({test.info.points == 1 ? MessageId::console_test_point : MessageId::console_test_points, {{"points", std::to_string(test.info.points)}}},
                                          language)) +
                      "</span>";
       for (const Message& hint : test.hints)  // advice that cost no points

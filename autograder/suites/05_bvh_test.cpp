@@ -175,6 +175,16 @@ GRADED_TEST(kStage, Stage05Bvh, ClosestHitsMatchBruteForce, 5) {
 
 GRADED_TEST(kStage, Stage05Bvh, AnyHitAgreesWithBruteForce, 2) {
   expect_same_hits_as_brute_force(build_bvh, "build_bvh", true, false, MessageId::bvh_what_any_hit);
+  // And it returns at once: after the first hit the intersector reports, no more tests (on the
+  // grader's tree, through the intersector the judge answers).
+  const TestMesh& bunny = work_test_mesh();
+  const std::vector<Ray> rays = rays_at(bunny, 20, 98);  // few: each test is a call into the judge
+  const TraversalWork work = student_traversal_work(grader_median_tree(bunny.bounds, kLeafSize), bunny, rays, true);
+  if (work.rays_after_a_hit > 0)
+    add_failure({MessageId::bvh_failure_any_hit_goes_on,
+                 {{"rays", std::to_string(work.rays_after_a_hit)},
+                  {"total", std::to_string(rays.size())},
+                  {"calls", std::to_string(work.calls_after_a_hit)}}});
 }
 
 GRADED_TEST(kStage, Stage05Bvh, AxisAlignedRaysFindTheirHits, 2) {

@@ -434,8 +434,39 @@ GRADED_TEST(kStage, Stage05cWideBvh, ClosestHitsMatchBruteForce, 4) {
   expect_brute_force_answers(false, true, MessageId::bvh_what_closest_hit_axis_aligned);
 }
 
+// The triangle tests a traversal asks for after one of them hit (any_hit must stop there).
+struct TestsAfterAHit {
+  PrimitiveIntersector inner;
+  bool hit = false;
+  std::uint64_t calls = 0;
+  static std::optional<float> test(void* context, const Ray& ray, std::uint32_t primitive) {
+    TestsAfterAHit& self = *static_cast<TestsAfterAHit*>(context);
+    if (self.hit) ++self.calls;
+    const std::optional<float> t = self.inner.test(self.inner.context, ray, primitive);
+    self.hit = self.hit || t.has_value();
+    return t;
+  }
+};
+
 GRADED_TEST(kStage, Stage05cWideBvh, AnyHitAgreesWithBruteForce, 1) {
   expect_brute_force_answers(true, false, MessageId::bvh_what_any_hit);
+  // And it returns at once: after the first hit the intersector reports, no more tests (20 rays
+  // on the grader's tree: each test is a call into the judge).
+  const TestMesh& mesh = work_test_mesh();
+  const Bvh4 wide = grader_collapse(grader_median_tree(mesh.bounds, kLeafSize));
+  std::uint64_t rays_after = 0, calls_after = 0;
+  const std::vector<Ray> rays = rays_at(mesh, 20, 901);
+  for (const Ray& ray : rays) {
+    TestsAfterAHit probe{intersector_for(mesh)};
+    BvhTraversalStats stats;
+    (void)intersect_bvh4(wide, ray, PrimitiveIntersector{TestsAfterAHit::test, &probe}, true, stats);
+    rays_after += probe.calls > 0;
+    calls_after += probe.calls;
+  }
+  if (rays_after > 0)
+    add_failure({MessageId::wide_failure_any_hit_goes_on,
+                 {{"rays", std::to_string(rays_after)}, {"total", std::to_string(rays.size())},
+                  {"calls", std::to_string(calls_after)}}});
 }
 
 // Work on the bunny turned and moved for this run (work_test_mesh: your process was never sent

@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -178,6 +179,11 @@ struct WarpData {
   std::optional<std::size_t> first_non_finite, first_out_of_domain;
   std::optional<DomainProblem> out_of_domain_problem;  // of the first such sample
   std::size_t below_surface = 0;
+  // The first kRepeated inputs asked again, in reverse order: the samples that differ from the
+  // first answers (a warp is a function of its two numbers: no rand(), no state between calls).
+  std::size_t not_repeated = 0;
+  std::optional<std::size_t> first_not_repeated;
+  glm::vec3 repeated_sample{0.0f};  // the second answer for that input
   testkit::Histogram2D histogram{1, 1, 0.0, 1.0, 0.0, 1.0};
   std::vector<double> expected;  // from the intended density
 };
@@ -233,6 +239,18 @@ const WarpData& data_of(Warp warp) {
   WarpData data;
   data.inputs = inputs_of(warp);
   data.samples = warp_samples(warp, data.inputs);  // throws NotImplemented for a stub: nothing cached
+  constexpr std::size_t kRepeated = 1000;
+  const std::vector<glm::vec2> again(data.inputs.rend() - kRepeated, data.inputs.rend());
+  const std::vector<glm::vec3> answers = warp_samples(warp, again);
+  for (std::size_t k = 0; k < kRepeated; ++k) {
+    const std::size_t i = kRepeated - 1 - k;
+    if (std::memcmp(&answers[k], &data.samples[i], sizeof(glm::vec3)) == 0) continue;
+    ++data.not_repeated;
+    if (!data.first_not_repeated || i < *data.first_not_repeated) {
+      data.first_not_repeated = i;
+      data.repeated_sample = answers[k];
+    }
+  }
   const testkit::WarpGrid g = testkit::warp_grid(warp);
   data.histogram = testkit::Histogram2D(g.columns, g.rows, g.u_min, g.u_max, g.v_min, g.v_max);
   for (std::size_t i = 0; i < data.samples.size(); ++i) {
@@ -505,6 +523,14 @@ void expect_samples_in_domain(Warp warp) {
                   {"reason", data.out_of_domain_problem->detail},
                   {"count", std::to_string(data.out_of_domain)},
                   {"total", std::to_string(data.samples.size())}}});
+  if (data.first_not_repeated)
+    add_failure({MessageId::sampling_failure_not_repeatable,
+                 {{"sampler", warp_sample_function(warp)},
+                  {"input", input_text(data.inputs[*data.first_not_repeated])},
+                  {"first", point_text(warp, data.samples[*data.first_not_repeated])},
+                  {"second", point_text(warp, data.repeated_sample)},
+                  {"count", std::to_string(data.not_repeated)},
+                  {"total", "1000"}}});
 }
 
 testkit::ChiSquareResult chi_square_against(const WarpData& data, const std::vector<double>& expected) {

@@ -24,6 +24,7 @@
 #include "raylab/testkit/statistics.h"
 
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <vector>
@@ -450,6 +451,19 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorUnderQuadLight, 5) {
   add(MessageId::direct_case_floor_near_wall, glm::vec3(40, 0, 500), glm::vec3(0, 1, 0), glm::vec3(0.5f));
   add(MessageId::direct_case_tilted_surface, glm::vec3(300, 200, 100), glm::vec3(0.3f, 1.0f, 0.5f), glm::vec3(0.63f, 0.065f, 0.05f));
   expect_means(scene, expectations, 2, {kLambertianFHelper, kAreaPdfHelper});
+  // The same samples asked twice with the same seed: the same estimates (no rand()).
+  DirectLightQuery query = expectations[0].query;
+  query.sample_count = 256;
+  const std::vector<glm::vec3> first = direct_light_samples(scene, {query}, test_seed(81));
+  const std::vector<glm::vec3> second = direct_light_samples(scene, {query}, test_seed(81));
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < first.size() && i < second.size(); ++i)
+    differing += std::memcmp(&first[i], &second[i], sizeof(glm::vec3)) != 0;
+  if (differing > 0)
+    add_failure({MessageId::direct_failure_not_repeatable,
+                 {{"what", expectations[0].what},
+                  {"count", std::to_string(differing)},
+                  {"total", std::to_string(first.size())}}});
 }
 
 GRADED_TEST(kStage, Stage08DirectLight, EstimatorSeveralLights, 4) {

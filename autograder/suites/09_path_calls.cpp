@@ -68,13 +68,15 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
   scene.camera.height = request.height;
   if (request.albedo >= 0.0f)
     for (Material& material : scene.materials) material.diffuse_color = glm::vec3(request.albedo);
+  if (request.background.x >= 0.0f && request.background.y >= 0.0f && request.background.z >= 0.0f)
+    scene.background = request.background;
   if (request.probe_only) {
     const SceneGeometry geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, grader_tracing());
     const RenderContext context(scene, geometry, request.max_depth, Skips{},
                                 RussianRoulette{request.roulette_probability, false});
     Ray ray;
     ray.origin = scene.camera.position;
-    ray.direction = glm::normalize(scene.camera.look_at - scene.camera.position);
+    ray.direction = glm::normalize(scene.camera.look_at - scene.camera.position) * (request.probe_away ? -1.0f : 1.0f);
     Sampler sampler(1, request.seed);
     sampler.start_pixel_sample(0, 0, 0);
     PathRenderResult result{Image(1, 1), Image(1, 1)};

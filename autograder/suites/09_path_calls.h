@@ -4,6 +4,8 @@
 
 #include "raylab/image.h"
 
+#include <glm/glm.hpp>
+
 #include <cstdint>
 #include <string>
 
@@ -20,7 +22,9 @@ struct PathRenderRequest {
   // 1: no picture, one path_radiance call along the camera's view direction (the stage's probe:
   // it reaches path_radiance before any other stage's function), returned as a 1x1 picture.
   int probe_only = 0;
+  int probe_away = 0;  // with probe_only: along the opposite direction, away from look_at
   int mis = 0;  // 1: stage 09b's path_radiance_mis instead of path_radiance
+  glm::vec3 background{-1.0f};  // every channel >= 0: the scene's background becomes this
 };
 struct PathRenderResult {
   Image mean, variance_of_mean;

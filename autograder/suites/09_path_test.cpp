@@ -173,9 +173,29 @@ void expect_furnace(int index) {
   if (!result.passed || !spread.passed) hint_mistakes();
 }
 
-GRADED_TEST(kStage, Stage09Path, FurnaceWithoutRoulette, 8) { expect_furnace(0); }
+GRADED_TEST(kStage, Stage09Path, FurnaceWithoutRoulette, 8) {
+  expect_furnace(0);
+  const RepeatResult repeat = repeat_test(test_seed(130), false);
+  if (repeat.differing > 0) add_repeat_failure(repeat);
+}
 GRADED_TEST(kStage, Stage09Path, FurnaceWithRoulette, 8) { expect_furnace(1); }
 GRADED_TEST(kStage, Stage09Path, FurnaceLowAlbedo, 6) { expect_furnace(2); }
+
+// ---- Where nothing is hit ------------------------------------------------------------------
+
+GRADED_TEST(kStage, Stage09Path, BackgroundWhereNothingIsHit, 1) {
+  // One path from the Cornell box's camera, looking away from the box: it hits nothing, so it
+  // brings the scene's background, here not black (every graded picture has a black one).
+  PathRenderRequest request;
+  request.probe_only = 1;
+  request.probe_away = 1;
+  request.background = glm::vec3(0.25f, 0.5f, 0.75f);
+  request.seed = test_seed(140);
+  const glm::vec3 got = path_render("scenes/cornell.json", request).mean.at(0, 0);
+  if (got == request.background) return;
+  add_failure({MessageId::path_failure_background,
+               {{"got", gtest_text(got)}, {"expected", gtest_text(request.background)}}});
+}
 
 // ---- Cornell boxes -------------------------------------------------------------------------
 
@@ -206,7 +226,7 @@ void expect_cornell(int scene_index) {
     add_hint({MessageId::path_specular_wrong, {}});
 }
 
-GRADED_TEST(kStage, Stage09Path, CornellBoxImageMatchesReference, 10) { expect_cornell(0); }
+GRADED_TEST(kStage, Stage09Path, CornellBoxImageMatchesReference, 9) { expect_cornell(0); }
 GRADED_TEST(kStage, Stage09Path, SpecularCornellBoxImageMatchesReference, 8) { expect_cornell(1); }
 
 }  // namespace

@@ -196,6 +196,7 @@ class WorkProbe {
     ray_ = ray;
     closest_reported_ = kInfinity;
     beyond_a_hit_ = false;
+    after_a_hit_ = false;
     last_leaf_ = kNone;
     ++work.rays;
   }
@@ -207,6 +208,7 @@ class WorkProbe {
     work.nodes_visited += stats.nodes_visited;
     work.primitives_counted += stats.primitives_tested;
     work.rays_beyond_a_hit += beyond_a_hit_;
+    work.rays_after_a_hit += after_a_hit_;
   }
 
   TraversalWork work;
@@ -217,6 +219,10 @@ class WorkProbe {
   static std::optional<float> test(void* context, const Ray& ray, std::uint32_t primitive) {
     WorkProbe& probe = *static_cast<WorkProbe*>(context);
     ++probe.work.primitives_tested;
+    if (probe.closest_reported_ < kInfinity) {
+      ++probe.work.calls_after_a_hit;
+      probe.after_a_hit_ = true;
+    }
     if (ray.t_max > probe.closest_reported_) {
       ++probe.work.calls_beyond_a_hit;
       probe.beyond_a_hit_ = true;
@@ -268,6 +274,7 @@ class WorkProbe {
   Ray ray_;
   float closest_reported_ = kInfinity;
   bool beyond_a_hit_ = false;
+  bool after_a_hit_ = false;
   std::uint32_t last_leaf_ = kNone;
 };
 
@@ -354,15 +361,17 @@ Bvh grader_median_tree(const std::vector<Bounds3>& bounds, int max_leaf_size) {
   return bvh;
 }
 
-TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays) {
+TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays,
+                                     bool any_hit) {
   WorkProbe probe(bvh, mesh);
   for (const Ray& ray : rays) {
     probe.start_ray(ray);
     BvhTraversalStats stats;
-    const std::optional<BvhHit> hit = intersect_bvh(bvh, ray, probe.intersector(), /*any_hit=*/false, stats);
+    const std::optional<BvhHit> hit = intersect_bvh(bvh, ray, probe.intersector(), any_hit, stats);
     probe.end_ray(stats);
     const std::optional<BvhHit> expected = brute_force_closest(mesh, ray);
-    if (hit.has_value() != expected.has_value() || (hit && hit->t_hit != expected->t_hit)) ++probe.work.rays_answered_wrong;
+    if (hit.has_value() != expected.has_value() || (!any_hit && hit && hit->t_hit != expected->t_hit))
+      ++probe.work.rays_answered_wrong;
   }
   return probe.work;
 }

@@ -57,6 +57,8 @@ struct TraversalWork {
   std::uint64_t rays_nodes_under_reported = 0;  // rays whose stats.nodes_visited is below nodes_implied
   std::uint64_t calls_beyond_a_hit = 0;    // calls whose t_max is larger than a hit already reported for that ray
   std::uint64_t rays_beyond_a_hit = 0;     // rays with at least one such call
+  std::uint64_t calls_after_a_hit = 0;     // calls after a hit was reported for that ray (any_hit must stop)
+  std::uint64_t rays_after_a_hit = 0;      // rays with at least one such call
   std::uint64_t leaves_entered = 0;        // distinct leaves whose primitives were tested
   std::uint64_t leaves_missed_by_ray = 0;  // ... whose box the ray misses altogether
   std::uint64_t leaves_beyond_hit = 0;     // ... whose box the ray enters beyond a hit already reported
@@ -74,7 +76,9 @@ struct TraversalWork {
 Bvh grader_median_tree(const std::vector<Bounds3>& primitive_bounds, int max_leaf_size);
 
 // The student's intersect_bvh on `rays` (closest hit), its hits checked against brute force.
-TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays);
+// With any_hit, a ray is answered right when it has a hit exactly when brute force has one.
+TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays,
+                                     bool any_hit = false);
 // The grader's own traversal (the reference's algorithm: near child first, boxes tested with
 // t_max lowered to the closest hit so far) with the stage server's box test (the one your
 // intersect_bvh calls: the grader's own at stage 05) on the same tree and rays.

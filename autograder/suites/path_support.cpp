@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 
 namespace raylab::grading {
@@ -115,6 +116,26 @@ FurnaceRender render_furnace_paths(int index, std::uint64_t seed, bool mis) {
   request.width = request.height = kShortPathsSide;
   request.samples_per_pixel = 1;  // one path per pixel
   return furnace_pixels(request, mis);
+}
+
+RepeatResult repeat_test(std::uint64_t seed, bool mis) {
+  PathRenderRequest request;
+  request.width = request.height = 8;
+  request.samples_per_pixel = 1;
+  request.seed = seed;
+  request.mis = mis ? 1 : 0;
+  const PathRenderResult first = path_render("scenes/cornell.json", request);
+  const PathRenderResult second = path_render("scenes/cornell.json", request);
+  RepeatResult result;
+  result.pixels = first.mean.pixels().size();
+  for (std::size_t i = 0; i < result.pixels; ++i)
+    result.differing += std::memcmp(&first.mean.pixels()[i], &second.mean.pixels()[i], sizeof(glm::vec3)) != 0;
+  return result;
+}
+
+void add_repeat_failure(const RepeatResult& result) {
+  add_failure({MessageId::path_failure_not_repeatable,
+               {{"count", std::to_string(result.differing)}, {"total", std::to_string(result.pixels)}}});
 }
 
 double short_path_limit(const Furnace& furnace) {

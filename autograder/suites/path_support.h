@@ -116,6 +116,16 @@ void add_furnace_spread_failure(int index, const FurnaceSpreadResult& result, do
 // correct path tracer with cosine-weighted bounces is nearly noiseless in a sphere.
 constexpr int kShortPathsSide = 64;  // pixels, each side: 4,096 paths
 FurnaceRender render_furnace_paths(int index, std::uint64_t seed, bool mis);
+
+// A small picture of the Cornell box (8 x 8 pixels, 1 path each) rendered twice with the same
+// seed: how many pixels differ, bit for bit. A path tracer that takes every random number from
+// its sampler renders the same picture twice; one that calls rand() does not (in the box, unlike
+// in a furnace, every random direction changes a path's value).
+struct RepeatResult {
+  std::size_t differing = 0, pixels = 0;
+};
+RepeatResult repeat_test(std::uint64_t seed, bool mis);
+void add_repeat_failure(const RepeatResult& result);
 double short_path_limit(const Furnace& furnace);        // h
 double short_path_least_share(const Furnace& furnace);  // q
 struct ShortPathsResult {

@@ -12,7 +12,6 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const Primit
 
 std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
                                     bool any_hit, BvhTraversalStats& stats) {
-  (void)any_hit;
   if (bvh.nodes.empty()) return std::nullopt;
   const glm::vec3 inverse = ray_direction_inverse_of(ray);
   Ray search = ray;
@@ -34,6 +33,7 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const Primit
       if (const auto t = intersector.test(intersector.context, search, primitive)) {
         search.t_max = *t;
         closest = BvhHit{*t, primitive};
+        if (any_hit) return closest;
       }
     }
     (void)inverse;

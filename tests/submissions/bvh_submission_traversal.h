@@ -21,6 +21,7 @@ struct TraversalMistakes {
   bool primitives_not_counted = false;      // leaves stats.primitives_tested as it was
   bool any_hit_at_leaf_box = false;         // any_hit: stops at the first leaf whose box the ray hits and
                                             // returns its first primitive, hit or not
+  bool any_hit_goes_on = false;             // any_hit: searches on for the closest hit (right answers, more work)
 };
 
 // What the traversal writes into stats.nodes_visited.
@@ -91,13 +92,13 @@ inline std::optional<BvhHit> traverse_bvh(const Bvh& bvh, const Ray& ray, const 
             search.t_max = *t;
             closest = BvhHit{*t, primitive};
           }
-          if (any_hit) {
+          if (any_hit && !mistakes.any_hit_goes_on) {
             stack_size = 0;  // done: fall through to the exit below
             break;
           }
         }
       }
-      if (any_hit && closest) break;
+      if (any_hit && closest && !mistakes.any_hit_goes_on) break;
     }
     if (stack_size == 0) break;
     --stack_size;

@@ -29,8 +29,10 @@
 #include "raylab/shading.h"
 #include "raylab/stages/08_direct_light.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <optional>
 #include <vector>
 
@@ -51,6 +53,7 @@ struct DirectVariant {
   bool irradiance_behind_zero = true;  // false: point_light_irradiance negative for a light behind the surface
   bool light_from_behind = false;  // the estimator weighs a light sample behind the surface by |cos| (lit)
   bool check_no_lights = true;     // false: lights.choose() called on an empty light list
+  bool own_random_numbers = false; // true: the light's point from rand(), not from sampler.get_2d()
   // Correct variants.
   bool lights_by_power = false;    // the light chosen with probability proportional to its power
   // Hostile.
@@ -87,6 +90,14 @@ inline std::optional<std::size_t> choose_light(const LightSet& lights, const Dir
 // One light sample from the hit that reaches it: the light chosen with probability `choice`, a
 // point on it, the BSDF towards it. nullopt when it gives no light (none to choose, the light
 // behind the surface, an occluder between them).
+// Two numbers in [0, 1) from the C library's rand(), as a student who does not use the sampler
+// might draw them.
+inline glm::vec2 rand_pair() {
+  const auto next = [] { return std::min(static_cast<float>(std::rand() / (RAND_MAX + 1.0)), 0x1.fffffep-1f); };
+  const float a = next();
+  return glm::vec2(a, next());
+}
+
 struct DirectSample {
   LightSample light;
   float choice = 0.0f;
@@ -100,7 +111,8 @@ inline std::optional<DirectSample> unblocked_light_sample(const RenderContext& c
   DirectSample sample;
   const std::optional<std::size_t> chosen = choose_light(context.lights, v, sampler.get_1d(), &sample.choice);
   if (!chosen) return std::nullopt;
-  const std::optional<LightSample> light = sample_li(context.lights[*chosen], hit.point, sampler.get_2d());
+  const std::optional<LightSample> light =
+      sample_li(context.lights[*chosen], hit.point, v.own_random_numbers ? rand_pair() : sampler.get_2d());
   if (!light) return std::nullopt;
   sample.light = *light;
   sample.f = bsdf_f(bsdf, hit.geometric_normal, wo, light->direction);

@@ -1,5 +1,6 @@
-// Grader self-test submission (stage 05_bvh), hostile: the reference's traversal, except in the
-// work test, where the traversal may ask the judge to test primitives (grader_intersectors.h): there
+// Grader self-test submission (stage 05_bvh), hostile: the reference's traversal, except where it
+// is asked to test primitives through the judge (grader_intersectors.h: the check that any_hit
+// stops, then the work test): there
 // it writes well-formed questions into its reply pipe as fast as it can and never reads an answer.
 // The judge answers until the request pipe is full, then its write waits only until the stage's
 // deadline: the call times out, the stage's remaining tests are lost with the reason, and grading

@@ -35,6 +35,8 @@ struct PathVariant {
                                           // (a unit direction, t_max infinite) and so hits the light itself
   bool play_roulette = true;              // false: no Russian roulette (every path goes on to max_depth)
   bool emission_after_specular = true;    // false: no emission counted after a mirror or glass bounce
+  bool own_random_numbers = false;        // true: the bounce direction from rand(), not from sampler.get_2d()
+  bool background = true;                 // false: black where nothing is hit, not the scene's background
   // Correct variants.
   bool uniform_hemisphere = false;        // diffuse bounces sampled uniformly (pdf 1 / (2 pi))
   bool throughput_roulette = false;       // roulette by the throughput, p = min(1, max channel)
@@ -58,7 +60,7 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
   for (int depth = 0;; ++depth) {
     if (v.one_surface_short && depth >= context.max_depth) return radiance;
     const std::optional<SurfaceHit> hit = context.geometry.intersect(ray);
-    if (!hit) return radiance + throughput * scene.background;
+    if (!hit) return v.background ? radiance + throughput * scene.background : radiance;
     const Material& material = scene.materials[hit->material];
     const glm::vec3 wo = -glm::normalize(ray.direction);
     const glm::vec3 emitted = emitted_radiance(material, *hit, ray.direction);
@@ -80,7 +82,7 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
       if (v.divide_by_roulette) throughput /= p;
     }
     const float u_lobe = sampler.get_1d();
-    const glm::vec2 u = sampler.get_2d();
+    const glm::vec2 u = v.own_random_numbers ? rand_pair() : sampler.get_2d();
     glm::vec3 f, wi;
     float pdf = 0.0f;
     bool specular = bsdf.is_specular();

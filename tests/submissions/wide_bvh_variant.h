@@ -28,6 +28,7 @@ struct WideBvhVariant {
   bool entry_is_exit = false;        // entry_distances[i] is where the ray leaves the box
   bool nodes_not_counted = false;    // stats.nodes_visited never incremented
   bool primitives_not_counted = false;  // stats.primitives_tested never incremented
+  bool any_hit_goes_on = false;      // any_hit: searches on for the closest hit (right answers, more work)
   // Correct variants.
   bool two_levels = false;  // the collapse takes the grandchildren of both children, no surface areas
 };
@@ -178,7 +179,7 @@ std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const Prim
         if (const std::optional<float> t = intersector.test(intersector.context, search, bvh.primitive_order[k])) {
           search.t_max = *t;
           closest = BvhHit{*t, bvh.primitive_order[k]};
-          if (any_hit) return closest;
+          if (any_hit && !v.any_hit_goes_on) return closest;
         }
       }
     }
