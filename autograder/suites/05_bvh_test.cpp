@@ -1,4 +1,5 @@
 // Autograder suites for stage 05_bvh (20 points) and the bonus stage 05b_bvh_sah (10 points).
+#include "05_bvh_calls.h"
 #include "bvh_support.h"
 #include "bvh_violation_text.h"
 #include "grading.h"
@@ -74,7 +75,19 @@ void expect_same_hits_as_brute_force(Builder build, const char* builder_name, bo
       add_note({MessageId::note_bvh_tree_broken, {{"builder", builder_name}, {"mesh", mesh.name}}});
       bvh = grader_median_tree(mesh.bounds, kLeafSize);
     }
-    const std::vector<Ray> rays = rays_at(mesh, 500, seed++, axis_aligned);
+    std::vector<Ray> rays = rays_at(mesh, 500, seed++, axis_aligned);
+    if (!axis_aligned) {
+      // The ray's own interval: rays that end halfway to their first hit (nothing to find), and
+      // rays that start just past it (the next hit, or none).
+      for (std::size_t i = 0; i < 100; ++i)
+        if (const std::optional<BvhHit> first = brute_force_closest(mesh, rays[i])) {
+          Ray ends = rays[i], starts = rays[i];
+          ends.t_max = 0.5f * first->t_hit;
+          starts.t_min = first->t_hit * 1.001f + 1e-4f;
+          rays.push_back(ends);
+          rays.push_back(starts);
+        }
+    }
     differences += compare_with_brute_force(bvh, mesh, rays, any_hit, what);
     rays_tested += static_cast<int>(rays.size());
   }
@@ -171,6 +184,16 @@ GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
 
 GRADED_TEST(kStage, Stage05Bvh, ClosestHitsMatchBruteForce, 5) {
   expect_same_hits_as_brute_force(build_bvh, "build_bvh", false, false, MessageId::bvh_what_closest_hit);
+  // An empty tree (a scene without triangles) hits nothing, and is not read beyond its end.
+  std::vector<std::optional<BvhHit>> answers;
+  {
+    const HintIfLost hint(MessageId::bvh_empty_tree_read);
+    answers = intersect_bvh_each(Bvh{}, {}, {make_ray(glm::vec3(0.0f), glm::vec3(0, 0, 1))}, false);
+  }
+  if (!answers.empty() && answers[0]) {
+    add_hint(MessageId::bvh_empty_tree_read);
+    add_failure({MessageId::bvh_failure_empty_tree_hit, {}});
+  }
 }
 
 GRADED_TEST(kStage, Stage05Bvh, AnyHitAgreesWithBruteForce, 2) {

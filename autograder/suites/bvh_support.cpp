@@ -437,11 +437,24 @@ int compare_traversal_with_brute_force(const std::vector<std::optional<BvhHit>>&
     const std::optional<BvhHit>& got = answers.at(r);
     bool ok = got.has_value() == expected.has_value();
     if (ok && got && !any_hit) ok = got->t_hit == expected->t_hit;  // same primitive test: exactly equal
+    // ... and the primitive is the one hit there (another at exactly the same t, a tie, is as good).
+    const auto hit_there = [&](std::uint32_t primitive) {
+      return primitive < mesh.triangles.size() && test_triangle(mesh, ray, primitive) == std::optional<float>(got->t_hit);
+    };
+    bool wrong_primitive = ok && got && !any_hit && got->primitive != expected->primitive && !hit_there(got->primitive);
+    ok = ok && !wrong_primitive;
     if (ok && got && any_hit) ok = got->primitive < mesh.triangles.size() && test_triangle(mesh, ray, got->primitive).has_value();
     if (ok) continue;
+    // any_hit: a primitive that is not hit, at a distance where another one is.
+    if (got && any_hit && expected && !hit_there(got->primitive))
+      for (std::uint32_t p = 0; p < mesh.triangles.size() && !wrong_primitive; ++p) wrong_primitive = hit_there(p);
     if (++differences > 3) continue;
     const bool zero_component = ray.direction.x == 0 || ray.direction.y == 0 || ray.direction.z == 0;
-    if (got && expected && got->t_hit > expected->t_hit)
+    if (wrong_primitive)
+      add_hint(MessageId::bvh_wrong_primitive);
+    else if (got && !(got->t_hit > ray.t_min && got->t_hit < ray.t_max))
+      add_hint(MessageId::bvh_interval_ignored);
+    else if (got && expected && got->t_hit > expected->t_hit)
       add_hint(MessageId::bvh_not_closest);
     else if (got && expected)
       add_hint(MessageId::bvh_t_too_close);

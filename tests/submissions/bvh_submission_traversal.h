@@ -9,6 +9,7 @@
 #include "raylab/stages/05_bvh.h"
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 namespace raylab::submission {
@@ -22,6 +23,9 @@ struct TraversalMistakes {
   bool any_hit_at_leaf_box = false;         // any_hit: stops at the first leaf whose box the ray hits and
                                             // returns its first primitive, hit or not
   bool any_hit_goes_on = false;             // any_hit: searches on for the closest hit (right answers, more work)
+  bool ignores_ray_interval = false;        // searches [0, infinity), not the incoming ray's [t_min, t_max]
+  bool returns_leaf_position = false;       // tests primitive_order[i] but returns i, its position in the leaf
+  bool empty_tree_not_checked = false;      // reads nodes[0] of a tree without nodes
 };
 
 // What the traversal writes into stats.nodes_visited.
@@ -35,7 +39,7 @@ enum class NodesReport {
 inline std::optional<BvhHit> traverse_bvh(const Bvh& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
                                           bool any_hit, BvhTraversalStats& stats, TraversalMistakes mistakes,
                                           NodesReport report = NodesReport::Honest) {
-  if (bvh.nodes.empty()) return std::nullopt;
+  if (bvh.nodes.empty() && !mistakes.empty_tree_not_checked) return std::nullopt;
   const glm::vec3 ray_direction_inverse = ray_direction_inverse_of(ray);
   // 1 / -0 = -infinity < 0: a -0 component counts as negative, consistently with the box test.
   const bool direction_negative[3] = {ray_direction_inverse.x < 0.0f,
@@ -45,6 +49,10 @@ inline std::optional<BvhHit> traverse_bvh(const Bvh& bvh, const Ray& ray, const 
   const std::uint32_t* primitive_order = bvh.primitive_order.data();
 
   Ray search = ray;
+  if (mistakes.ignores_ray_interval) {
+    search.t_min = 0.0f;
+    search.t_max = std::numeric_limits<float>::infinity();
+  }
   std::optional<BvhHit> closest;
   // With prunes_only_at_leaves the stack holds every pending sibling of a root path: its depth
   // bounds it, so kBvhMaxDepth entries suffice either way.
@@ -90,7 +98,7 @@ inline std::optional<BvhHit> traverse_bvh(const Bvh& bvh, const Ray& ray, const 
             if (!closest || *t < closest->t_hit) closest = BvhHit{*t, primitive};
           } else {
             search.t_max = *t;
-            closest = BvhHit{*t, primitive};
+            closest = BvhHit{*t, mistakes.returns_leaf_position ? i : primitive};
           }
           if (any_hit && !mistakes.any_hit_goes_on) {
             stack_size = 0;  // done: fall through to the exit below
