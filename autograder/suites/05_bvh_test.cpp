@@ -98,6 +98,55 @@ void expect_same_hits_as_brute_force(Builder build, const char* builder_name, bo
 
 GRADED_TEST(kStage, Stage05Bvh, BuildsAValidTree, 4) { expect_valid_trees(build_bvh, "build_bvh"); }
 
+// Every inner node below the root of a valid tree: a median split (children's counts within 1)
+// along a longest axis, of its box or of its centroids' box (either is the contract's; a tie
+// between two axes allows both).
+void expect_median_splits_below_the_root(const Bvh& bvh, const std::vector<Bounds3>& bounds,
+                                         const std::vector<std::uint32_t>& counts) {
+  // Each node's centroid box, children before parents (they come after them in the array).
+  std::vector<Bounds3> centroids(bvh.nodes.size());
+  for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
+    const BvhNode& node = bvh.nodes[i];
+    if (node.is_leaf()) {
+      for (std::uint32_t k = node.first_index; k < node.first_index + node.primitive_count; ++k)
+        centroids[i].extend(bounds[bvh.primitive_order[k]].centroid());
+    } else {
+      centroids[i].extend(centroids[node.first_index]);
+      centroids[i].extend(centroids[node.first_index + 1]);
+    }
+  }
+  const auto is_longest = [](const Bounds3& box, int axis) {
+    const glm::vec3 extent = box.max - box.min;
+    return extent[axis] >= std::max({extent.x, extent.y, extent.z});
+  };
+  std::uint64_t not_halves = 0, wrong_axis = 0;
+  std::size_t first_not_halves = 0, first_wrong_axis = 0;
+  for (std::size_t i = 1; i < bvh.nodes.size(); ++i) {
+    const BvhNode& node = bvh.nodes[i];
+    if (node.is_leaf()) continue;
+    const long long left = counts[node.first_index], right = counts[node.first_index + 1];
+    if (std::llabs(left - right) > 1 && not_halves++ == 0) first_not_halves = i;
+    if (node.split_axis > 2 || (!is_longest(node.bounds, node.split_axis) && !is_longest(centroids[i], node.split_axis)))
+      if (wrong_axis++ == 0) first_wrong_axis = i;
+  }
+  if (not_halves > 0) {
+    const BvhNode& node = bvh.nodes[first_not_halves];
+    add_hint(MessageId::bvh_not_median);
+    add_failure({MessageId::bvh_failure_inner_not_halves,
+                 {{"node", std::to_string(first_not_halves)}, {"count", std::to_string(counts[first_not_halves])},
+                  {"left", std::to_string(counts[node.first_index])}, {"right", std::to_string(counts[node.first_index + 1])},
+                  {"nodes", std::to_string(not_halves)}}});
+  }
+  if (wrong_axis > 0) {
+    const BvhNode& node = bvh.nodes[first_wrong_axis];
+    add_hint(MessageId::bvh_split_axis_not_longest);
+    add_failure({MessageId::bvh_failure_inner_split_axis,
+                 {{"node", std::to_string(first_wrong_axis)}, {"count", std::to_string(counts[first_wrong_axis])},
+                  {"axis", std::to_string(int(node.split_axis))}, {"box", box_text(node.bounds)},
+                  {"longest", std::to_string(node.bounds.longest_axis())}, {"nodes", std::to_string(wrong_axis)}}});
+  }
+}
+
 GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
   // The root of the bunny's tree splits its longest axis into halves of equal size (+-1).
   const TestMesh& bunny = bvh_test_meshes().front();
@@ -179,6 +228,7 @@ GRADED_TEST(kStage, Stage05Bvh, MedianSplitOnTheLongestAxis, 2) {
       add_failure({MessageId::bvh_failure_children_order,
                    {{"axis", std::to_string(axis)}, {"first", stream_text(first_high)}, {"second", stream_text(second_low)}}});
     }
+    expect_median_splits_below_the_root(bvh, bunny.bounds, counts);
   }
 }
 

@@ -343,6 +343,13 @@ std::vector<BoxCase> box_cases() {
   inside.origin = glm::vec3(2.5f, 0.5f, 0.5f);
   inside.direction = glm::normalize(glm::vec3(1, 2, 3));
   cases.push_back({inside, row});
+  // Every box wholly behind the ray: past the row and leaving it, each way along x.
+  for (const float sign : {1.0f, -1.0f}) {
+    Ray away;
+    away.origin = glm::vec3(sign > 0 ? 7.0f : -2.0f, 0.5f, 0.5f);
+    away.direction = glm::normalize(glm::vec3(sign, 0.1f, 0.05f));
+    cases.push_back({away, row});
+  }
   return cases;
 }
 
@@ -356,7 +363,7 @@ GRADED_TEST(kStage, Stage05cWideBvh, BoxTestNeverLosesAHit, 4) {
   }
   const std::vector<Box4Answer> answers = box4_answers(rays, nodes);
   int failures = 0;
-  bool lost_zero_component = false, empty_slot_reported = false, beyond_t_max = false;
+  bool lost_zero_component = false, empty_slot_reported = false, beyond_t_max = false, behind = false;
   for (std::size_t i = 0; i < cases.size() && failures < 3; ++i) {
     const Ray& ray = cases[i].ray;
     const Bvh4Node& node = cases[i].node;
@@ -389,6 +396,10 @@ GRADED_TEST(kStage, Stage05cWideBvh, BoxTestNeverLosesAHit, 4) {
         Ray unbounded = ray;
         unbounded.t_max = kInfinity;
         if (!std::isinf(ray.t_max) && exact_entry(unbounded, box)) beyond_t_max = true;
+        Ray backwards = ray;  // the same line before the ray's start
+        backwards.t_min = -kInfinity;
+        backwards.t_max = ray.t_min;
+        if (exact_entry(backwards, box)) behind = true;
         continue;
       }
       if (!entry) continue;  // within rounding of the box: its entry distance is anyone's guess
@@ -404,6 +415,7 @@ GRADED_TEST(kStage, Stage05cWideBvh, BoxTestNeverLosesAHit, 4) {
   }
   if (lost_zero_component) add_hint(MessageId::wide_box_zero_component);
   if (beyond_t_max) add_hint(MessageId::wide_box_beyond_t_max);
+  if (behind) add_hint(MessageId::wide_box_behind);
 }
 
 // ---- The traversal ---------------------------------------------------------------------------

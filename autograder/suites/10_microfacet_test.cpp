@@ -465,13 +465,17 @@ double chi_square_p(const std::vector<glm::dvec2>& coordinates, double level, bo
   return result.p_value;
 }
 
+// The edges of [0, 1)^2 first (0 can happen, 1 never: the samples must stay finite and unit
+// there), then random pairs.
 std::vector<glm::vec2> uniform_inputs(const std::string& purpose) {
+  const float below_one = std::nextafter(1.0f, 0.0f);
+  std::vector<glm::vec2> inputs = {{0.0f, 0.0f}, {0.0f, 0.5f}, {0.5f, 0.0f}, {below_one, 0.0f},
+                                   {0.0f, below_one}, {below_one, below_one}};
   Pcg32 random(test_seed(kSeed), testkit::stream_of(std::string(kStage) + "/" + purpose));
-  std::vector<glm::vec2> inputs(kSampleCount);
-  for (glm::vec2& u : inputs) {
+  while (inputs.size() < static_cast<std::size_t>(kSampleCount)) {
     const float a = random.next_float();
     const float b = random.next_float();
-    u = glm::vec2(a, b);
+    inputs.push_back(glm::vec2(a, b));
   }
   return inputs;
 }

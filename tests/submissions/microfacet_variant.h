@@ -23,6 +23,8 @@ struct MicrofacetVariant {
   bool g1_no_factor_two = false;        // G1 = 1 / (1 + sqrt(1 + alpha^2 tan^2(theta))): 1/2 along the normal
   bool half_vector_below = false;       // the half vector's z negated (below the surface)
   bool wi_visible_normals = false;      // sample_microfacet_wi mirrors wo about a visible normal (Heitz 2018)
+  bool azimuth_normalised = false;      // the half vector's horizontal part as normalize(sin_theta (cos phi, sin phi))
+                                        // times sin_theta: NaN where sin_theta = 0 (u.x = 0)
 };
 
 inline MicrofacetVariant microfacet_variant() {
@@ -71,7 +73,9 @@ glm::vec3 sample_ggx_half_vector(glm::vec2 uniform_random, float alpha) {
   const float cos_theta = 1.0f / std::sqrt(1.0f + tan2);
   const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
   const float phi = 6.28318531f * uniform_random.y;
-  return glm::vec3(sin_theta * std::cos(phi), sin_theta * std::sin(phi), v.half_vector_below ? -cos_theta : cos_theta);
+  glm::vec2 horizontal = sin_theta * glm::vec2(std::cos(phi), std::sin(phi));
+  if (v.azimuth_normalised) horizontal = glm::normalize(horizontal) * sin_theta;
+  return glm::vec3(horizontal, v.half_vector_below ? -cos_theta : cos_theta);
 }
 
 float ggx_half_vector_pdf(const glm::vec3& half_vector, float alpha) {

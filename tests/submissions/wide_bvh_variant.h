@@ -25,6 +25,7 @@ struct WideBvhVariant {
   bool leaf_root_dropped = false;    // a binary tree of one leaf gives a wide root with no child
   bool empty_tree_gets_a_node = false;  // an empty binary tree gives one empty wide node
   bool box4_ignores_t_max = false;   // intersect_ray_box4 exits at infinity, not at ray.t_max
+  bool box4_ignores_t_min = false;   // intersect_ray_box4 enters at -infinity, not at ray.t_min: boxes behind count
   bool entry_is_exit = false;        // entry_distances[i] is where the ray leaves the box
   bool nodes_not_counted = false;    // stats.nodes_visited never incremented
   bool primitives_not_counted = false;  // stats.primitives_tested never incremented
@@ -123,7 +124,7 @@ unsigned intersect_ray_box4(const Ray& ray, const glm::vec3& ray_direction_inver
   const int slots = v.min_max_slabs_unmasked ? kBvh4Width : node.child_count;
   for (int i = 0; i < slots; ++i) {
     const Bounds3 box = node.child_bounds(i);
-    float enter = ray.t_min, exit = v.box4_ignores_t_max ? kInfinity : ray.t_max;
+    float enter = v.box4_ignores_t_min ? -kInfinity : ray.t_min, exit = v.box4_ignores_t_max ? kInfinity : ray.t_max;
     for (int axis = 0; axis < 3; ++axis) {
       const float inverse = ray_direction_inverse[axis];
       float near_t, far_t;
