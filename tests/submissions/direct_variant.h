@@ -54,6 +54,7 @@ struct DirectVariant {
   bool light_from_behind = false;  // the estimator weighs a light sample behind the surface by |cos| (lit)
   bool check_no_lights = true;     // false: lights.choose() called on an empty light list
   bool own_random_numbers = false; // true: the light's point from rand(), not from sampler.get_2d()
+  bool retry_without_sample = false;  // sample_li's nullopt answered by drawing new numbers, up to 16 times
   // Correct variants.
   bool lights_by_power = false;    // the light chosen with probability proportional to its power
   // Hostile.
@@ -111,8 +112,10 @@ inline std::optional<DirectSample> unblocked_light_sample(const RenderContext& c
   DirectSample sample;
   const std::optional<std::size_t> chosen = choose_light(context.lights, v, sampler.get_1d(), &sample.choice);
   if (!chosen) return std::nullopt;
-  const std::optional<LightSample> light =
+  std::optional<LightSample> light =
       sample_li(context.lights[*chosen], hit.point, v.own_random_numbers ? rand_pair() : sampler.get_2d());
+  for (int retry = 0; v.retry_without_sample && !light && retry < 16; ++retry)
+    light = sample_li(context.lights[*chosen], hit.point, sampler.get_2d());
   if (!light) return std::nullopt;
   sample.light = *light;
   sample.f = bsdf_f(bsdf, hit.geometric_normal, wo, light->direction);

@@ -23,6 +23,7 @@ struct MicrofacetVariant {
   bool g1_no_factor_two = false;        // G1 = 1 / (1 + sqrt(1 + alpha^2 tan^2(theta))): 1/2 along the normal
   bool half_vector_below = false;       // the half vector's z negated (below the surface)
   bool wi_visible_normals = false;      // sample_microfacet_wi mirrors wo about a visible normal (Heitz 2018)
+  bool wi_flipped_above = false;        // a wi below the surface mirrored above it instead of returned
   bool azimuth_normalised = false;      // the half vector's horizontal part as normalize(sin_theta (cos phi, sin phi))
                                         // times sin_theta: NaN where sin_theta = 0 (u.x = 0)
 };
@@ -101,7 +102,8 @@ inline glm::vec3 visible_normal(const glm::vec3& wo, glm::vec2 u, float alpha) {
 glm::vec3 sample_microfacet_wi(const glm::vec3& wo, glm::vec2 uniform_random, float alpha) {
   const glm::vec3 h = submission::microfacet_variant().wi_visible_normals ? visible_normal(wo, uniform_random, alpha)
                                                                          : sample_ggx_half_vector(uniform_random, alpha);
-  return 2.0f * glm::dot(wo, h) * h - wo;
+  const glm::vec3 wi = 2.0f * glm::dot(wo, h) * h - wo;
+  return submission::microfacet_variant().wi_flipped_above && wi.z < 0.0f ? glm::vec3(wi.x, wi.y, -wi.z) : wi;
 }
 
 float microfacet_pdf(const glm::vec3& wo, const glm::vec3& wi, float alpha) {

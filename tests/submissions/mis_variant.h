@@ -23,6 +23,9 @@ struct MisVariant {
   bool delta_weighted = false;          // a point light's sample weighted like an area light's
   bool emission_unweighted = false;     // the BSDF sample's emission after a diffuse bounce: weight 1
   bool last_vertex_weighted = false;    // the light sample at depth == max_depth weighted
+  bool camera_hit_weighted = false;     // previous_specular starts false: the emission the camera sees is weighted
+                                        // with a BSDF density of 0 (so it counts 0)
+  bool specular_hit_weighted = false;   // the emission found after a mirror or glass bounce weighted like a diffuse one's
   bool half_weights = false;            // both samples weighted 1/2: unbiased, but not the power heuristic
   bool textbook_heuristic = false;      // power_heuristic: pdf_f^2 / (pdf_f^2 + pdf_g^2), counts ignored, no guard
   bool counts_outside_square = false;   // power_heuristic: n_f pdf_f^2 / (...), no guard for an infinite pdf
@@ -76,7 +79,7 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
                                        const MisVariant& v) {
   glm::vec3 radiance(0.0f), throughput(1.0f);
   Ray ray = camera_ray;
-  bool previous_specular = true;
+  bool previous_specular = !v.camera_hit_weighted;
   float previous_pdf = 0.0f;
   glm::vec3 previous_point(0.0f);
   for (int depth = 0;; ++depth) {
@@ -106,7 +109,7 @@ inline glm::vec3 path_radiance_variant(const RenderContext& context, const Ray& 
     if (!sample) return radiance;
     throughput *= sample->f * (std::fabs(glm::dot(hit->geometric_normal, sample->wi)) / sample->pdf);
     if (throughput == glm::vec3(0.0f)) return radiance;
-    previous_specular = sample->is_specular;
+    previous_specular = sample->is_specular && !v.specular_hit_weighted;
     previous_pdf = sample->pdf;
     previous_point = hit->point;
     ray = spawn_ray(*hit, sample->wi);
