@@ -25,8 +25,8 @@
 //     primitive_order; each wide node takes a binary inner node's two children and, while it
 //     has fewer than 4 and one of them is an inner node, replaces such a child by its two
 //     children (handout section 2 opens the one with the largest surface area first, which pays
-//     best; the autograder grades any order alike). Empty slots as empty_bvh4_node() makes
-//     them. The root is nodes[0]; a binary tree that is one leaf gives one wide node with that
+//     best; the autograder checks the tree's rules and that it is wide, not the order). Empty
+//     slots as empty_bvh4_node() makes them. The root is nodes[0]; a binary tree that is one leaf gives one wide node with that
 //     leaf as its only child; an empty binary tree an empty Bvh4.
 //   - intersect_ray_box4 follows stage 04's contract for every child: it never loses a hit
 //     (zero direction components, the origin on a face plane, rounding), and sets no bit for

@@ -81,7 +81,8 @@ float area_pdf_to_solid_angle(float pdf_area, float distance, float cos_at_light
 //   bsdf_f(bsdf, hit.geometric_normal, wo, wi)   the BSDF value (0 when wi is behind)
 //   offset_ray_origin(hit, direction) and context.geometry.occluded(ray)   the shadow ray
 //                             (raylab/shading.h, raylab/geometry.h)
-//   sampler.get_1d(), sampler.get_2d()   your random numbers
+//   sampler.get_1d(), sampler.get_2d()   your random numbers, the only ones (no rand(): the
+//                             same seed must give the same estimates)
 // RETURN f * radiance * |cos(theta at the surface)| / (pdf * probability), or black when the
 // shadow ray is blocked. The shadow ray starts at offset_ray_origin(hit, direction), points at
 // the light's point itself (direction = point - origin, so t = 1 is that point) and stops just

@@ -26,7 +26,8 @@
 //                                     before you sample the next direction. --roulette sets it:
 //                                     a fixed P (1: no roulette) or auto (by the throughput);
 //                                     the arguments change the noise, never the mean
-//   sampler.get_1d(), sampler.get_2d()   your random numbers (uniform in [0, 1))
+//   sampler.get_1d(), sampler.get_2d()   your random numbers (uniform in [0, 1)), the only ones
+//                                     (no rand(): the same seed must give the same picture)
 //
 // THE RULES (handout sections 2-5)
 //   - Weigh each bounce by f * |cos(theta_i)| / pdf (cos against the geometric normal).

@@ -445,14 +445,21 @@ int compare_traversal_with_brute_force(const std::vector<std::optional<BvhHit>>&
     ok = ok && !wrong_primitive;
     if (ok && got && any_hit) ok = got->primitive < mesh.triangles.size() && test_triangle(mesh, ray, got->primitive).has_value();
     if (ok) continue;
+    if (++differences > 3) continue;
     // any_hit: a primitive that is not hit, at a distance where another one is.
     if (got && any_hit && expected && !hit_there(got->primitive))
       for (std::uint32_t p = 0; p < mesh.triangles.size() && !wrong_primitive; ++p) wrong_primitive = hit_there(p);
-    if (++differences > 3) continue;
+    // A real hit of the primitive it names, outside the ray's own interval: the interval was ignored.
+    Ray whole_line = ray;
+    whole_line.t_min = 0.0f;
+    whole_line.t_max = kInfinity;
+    const bool outside_interval = got && std::isfinite(got->t_hit) && !(got->t_hit > ray.t_min && got->t_hit < ray.t_max) &&
+                                  got->primitive < mesh.triangles.size() &&
+                                  test_triangle(mesh, whole_line, got->primitive) == std::optional<float>(got->t_hit);
     const bool zero_component = ray.direction.x == 0 || ray.direction.y == 0 || ray.direction.z == 0;
     if (wrong_primitive)
       add_hint(MessageId::bvh_wrong_primitive);
-    else if (got && !(got->t_hit > ray.t_min && got->t_hit < ray.t_max))
+    else if (outside_interval)
       add_hint(MessageId::bvh_interval_ignored);
     else if (got && expected && got->t_hit > expected->t_hit)
       add_hint(MessageId::bvh_not_closest);

@@ -24,7 +24,8 @@ struct WatertightVariant {
   bool cull_back_faces = false;       // a triangle seen from its back (by its winding) is missed
   bool swap_barycentrics = false;     // b1 and b2 exchanged
   bool degenerate_gives_nan = false;  // a triangle without area divides by its zero determinant: NaN
-  bool degenerate_hits = false;       // a triangle without area is hit where the ray passes nearest its first corner
+  bool degenerate_hits = false;       // a triangle without area, or one the ray runs parallel to, is hit where the
+                                      // ray passes nearest its first corner
 };
 
 }  // namespace raylab::submission
@@ -46,7 +47,7 @@ std::optional<TriangleHit> intersect_ray_triangle_watertight(const Ray& ray, con
     const float nan = std::numeric_limits<float>::quiet_NaN();
     return TriangleHit{nan, nan, nan};
   }
-  if (v.degenerate_hits && normal == glm::vec3(0.0f)) {
+  if (v.degenerate_hits && (normal == glm::vec3(0.0f) || glm::dot(normal, ray.direction) == 0.0f)) {
     const float t = glm::dot(p0 - ray.origin, ray.direction) / glm::dot(ray.direction, ray.direction);
     if (t > ray.t_min && t < ray.t_max) return TriangleHit{t, 0.0f, 0.0f};
   }
