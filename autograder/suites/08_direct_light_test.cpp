@@ -24,7 +24,6 @@
 #include "raylab/testkit/statistics.h"
 
 #include <cmath>
-#include <cstring>
 #include <optional>
 #include <string>
 #include <vector>
@@ -456,9 +455,7 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorUnderQuadLight, 5) {
   query.sample_count = 256;
   const std::vector<glm::vec3> first = direct_light_samples(scene, {query}, test_seed(81));
   const std::vector<glm::vec3> second = direct_light_samples(scene, {query}, test_seed(81));
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < first.size() && i < second.size(); ++i)
-    differing += std::memcmp(&first[i], &second[i], sizeof(glm::vec3)) != 0;
+  const std::size_t differing = bitwise_differences(first, second);
   if (differing > 0)
     add_failure({MessageId::direct_failure_not_repeatable,
                  {{"what", expectations[0].what},

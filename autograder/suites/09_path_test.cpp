@@ -196,7 +196,7 @@ GRADED_TEST(kStage, Stage09Path, BackgroundWhereNothingIsHit, 1) {
 GRADED_TEST(kStage, Stage09Path, SameSeedSamePicture, 1) {
   // Every random number from the sampler: a small picture rendered twice with one seed is the
   // same, bit for bit (path_support.h: repeat_test).
-  const RepeatResult repeat = repeat_test(test_seed(130), false);
+  const RepeatResult repeat = repeat_test(test_seed(130));
   if (repeat.differing > 0) add_repeat_failure(repeat);
 }
 

@@ -450,11 +450,16 @@ std::vector<SamplerMistake> sampler_mistakes() {
   };
 }
 
-double chi_square_p(const std::vector<glm::dvec2>& coordinates, double level, bool* passed) {
+// The chi-square test of coordinates in [0, 1)^2 on the 16 x 16 grid against `density` there
+// (uniform when none is given).
+double chi_square_p(const std::vector<glm::dvec2>& coordinates, double level, bool* passed,
+                    const std::function<double(double u, double v)>& density = nullptr) {
   testkit::Histogram2D histogram(kGrid, kGrid, 0.0, 1.0, 0.0, 1.0);
   for (const glm::dvec2& c : coordinates) histogram.add(c.x, c.y);
-  const std::vector<double> expected(static_cast<std::size_t>(kGrid * kGrid),
-                                     static_cast<double>(coordinates.size()) / (kGrid * kGrid));
+  const double count = static_cast<double>(coordinates.size());
+  const std::vector<double> expected = density ? histogram.expected_counts(density, count, 12)
+                                               : std::vector<double>(static_cast<std::size_t>(kGrid * kGrid),
+                                                                     count / (kGrid * kGrid));
   std::vector<double> observed = histogram.counts();
   const testkit::ChiSquareResult result = testkit::chi_square_test(observed, expected, level);
   if (histogram.outside() > 0) {
@@ -535,12 +540,9 @@ bool half_vectors_follow_ggx(const std::string& call, const std::vector<glm::dve
 // G1(wo) max(0, wo . h) / (wo.z cos(theta_h)) in the coordinates where D(h) cos(theta_h) is
 // uniform. From wo along the normal it is D(h) cos(theta_h) itself; only an oblique wo tells.
 bool half_vectors_follow_visible_normals(const glm::vec3& wo, const std::vector<glm::dvec3>& half_vectors, double alpha) {
-  testkit::Histogram2D histogram(kGrid, kGrid, 0.0, 1.0, 0.0, 1.0);
-  for (const glm::dvec3& h : half_vectors) {
-    const glm::dvec2 c = ggx_uniform_coordinates(h, alpha);
-    histogram.add(c.x, c.y);
-  }
-  if (histogram.outside() > 0) return false;
+  std::vector<glm::dvec2> coordinates;
+  coordinates.reserve(half_vectors.size());
+  for (const glm::dvec3& h : half_vectors) coordinates.push_back(ggx_uniform_coordinates(h, alpha));
   const glm::dvec3 o(wo);
   const double g1 = smith_g1(o.z, alpha);
   const auto density = [&](double share, double phi) {
@@ -549,8 +551,9 @@ bool half_vectors_follow_visible_normals(const glm::vec3& wo, const std::vector<
     const glm::dvec3 h(sin_h * std::cos(2.0 * kPiD * phi), sin_h * std::sin(2.0 * kPiD * phi), cos_h);
     return g1 * std::max(0.0, glm::dot(o, h)) / (o.z * cos_h);
   };
-  const std::vector<double> expected = histogram.expected_counts(density, static_cast<double>(half_vectors.size()), 12);
-  return testkit::chi_square_test(histogram.counts(), expected, kMistakeLevel).passed;
+  bool fits = false;
+  (void)chi_square_p(coordinates, kMistakeLevel, &fits, density);
+  return fits;
 }
 
 // Whether the student's sample_ggx_half_vector passes (asked once; sample_microfacet_wi's hints name it).

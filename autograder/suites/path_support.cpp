@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 
 namespace raylab::grading {
@@ -118,19 +117,14 @@ FurnaceRender render_furnace_paths(int index, std::uint64_t seed, bool mis) {
   return furnace_pixels(request, mis);
 }
 
-RepeatResult repeat_test(std::uint64_t seed, bool mis) {
+RepeatResult repeat_test(std::uint64_t seed) {
   PathRenderRequest request;
   request.width = request.height = 8;
   request.samples_per_pixel = 1;
   request.seed = seed;
-  request.mis = mis ? 1 : 0;
   const PathRenderResult first = path_render("scenes/cornell.json", request);
   const PathRenderResult second = path_render("scenes/cornell.json", request);
-  RepeatResult result;
-  result.pixels = first.mean.pixels().size();
-  for (std::size_t i = 0; i < result.pixels; ++i)
-    result.differing += std::memcmp(&first.mean.pixels()[i], &second.mean.pixels()[i], sizeof(glm::vec3)) != 0;
-  return result;
+  return {bitwise_differences(first.mean.pixels(), second.mean.pixels()), first.mean.pixels().size()};
 }
 
 void add_repeat_failure(const RepeatResult& result) {

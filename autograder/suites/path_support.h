@@ -124,7 +124,7 @@ FurnaceRender render_furnace_paths(int index, std::uint64_t seed, bool mis);
 struct RepeatResult {
   std::size_t differing = 0, pixels = 0;
 };
-RepeatResult repeat_test(std::uint64_t seed, bool mis);  // mis: path_radiance_mis (stage 09b)
+RepeatResult repeat_test(std::uint64_t seed);
 void add_repeat_failure(const RepeatResult& result);
 double short_path_limit(const Furnace& furnace);        // h
 double short_path_least_share(const Furnace& furnace);  // q

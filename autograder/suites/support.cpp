@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -103,6 +104,13 @@ const ReferenceData* reference_data_of(const std::string& stage_id) {
 
 namespace {
 std::uint64_t test_seed_round = 0;
+}
+
+std::size_t bitwise_differences(const std::vector<glm::vec3>& first, const std::vector<glm::vec3>& second) {
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < first.size() && i < second.size(); ++i)
+    differing += std::memcmp(&first[i], &second[i], sizeof(glm::vec3)) != 0;
+  return differing;
 }
 
 std::uint64_t test_seed(std::uint64_t graded_seed) {

@@ -17,6 +17,7 @@
 #include <functional>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace raylab::grading {
 
@@ -80,6 +81,9 @@ const ReferenceData* reference_data_of(const std::string& stage_id);
 // autograder-false-failures sets a round: it grades the reference again and again to count how
 // often a correct program fails by bad luck. A suite that caches a result keys it by the seed.
 std::uint64_t test_seed(std::uint64_t graded_seed);
+// How many of the values at the same index differ bit for bit (a NaN equals the same NaN): what a
+// deterministic function asked twice must not give. Only the indices both lists have are compared.
+std::size_t bitwise_differences(const std::vector<glm::vec3>& first, const std::vector<glm::vec3>& second);
 void set_test_seed_round(std::uint64_t round);
 
 std::string reference_image_name(const std::string& stage_id);  // "<id>.png"
