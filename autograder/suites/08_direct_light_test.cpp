@@ -20,6 +20,7 @@
 
 #include "raylab/error.h"
 #include "raylab/math.h"
+#include "raylab/random.h"
 #include "raylab/stages/08_direct_light.h"
 #include "raylab/testkit/statistics.h"
 
@@ -498,7 +499,8 @@ GRADED_TEST(kStage, Stage08DirectLight, EstimatorSeveralLights, 4) {
 
 GRADED_TEST(kStage, Stage08DirectLight, ShadowRaysAndBackFaces, 3) {
   // Every sample must be exactly black: a light hidden behind an occluder, and a surface that the
-  // light shines on from behind (the surface faces away from it).
+  // light shines on from behind (the surface faces away from it). And none black on a surface of
+  // the scene that sees the whole light.
   DirectLightScene scene;
   add_quad_light(scene, -1, 1, -1, 1, 4.0f, glm::vec3(10.0f));
   // A black occluder, larger than the light, between it and the point at the origin.
@@ -518,6 +520,42 @@ GRADED_TEST(kStage, Stage08DirectLight, ShadowRaysAndBackFaces, 3) {
   if (lit_behind > 0) {
     add_failure({MessageId::direct_failure_lit_behind, {{"count", std::to_string(lit_behind)}, {"total", "2000"}}});
     add_hint({MessageId::direct_estimate_from_behind, {}});
+  }
+  // Points on a surface of the scene: a tilted black floor under the light, which every point sees
+  // whole, so that no sample may be black. Each point is the floor's, rounded to float as a hit
+  // point is: some lie just behind the floor, and a shadow ray from the point itself, not from
+  // offset_ray_origin, finds the floor again at a tiny t (shadow acne).
+  DirectLightScene floor_scene;
+  add_quad_light(floor_scene, -1, 1, -1, 1, 4.0f, glm::vec3(10.0f));
+  const glm::vec3 f0(-3.1f, 0.37f, -2.9f), f1(-2.7f, -0.29f, 3.3f), f2(3.2f, 0.23f, 2.8f), f3(2.9f, 0.61f, -3.2f);
+  floor_scene.triangles.push_back({f0, f1, f2, glm::vec3(0.0f)});
+  floor_scene.triangles.push_back({f0, f2, f3, glm::vec3(0.0f)});
+  std::vector<DirectLightQuery> on_floor;
+  Pcg32 random(test_seed(13), testkit::stream_of("08_direct_light/on the floor"));
+  for (int i = 0; i < 64; ++i) {
+    const bool first = i % 2 == 0;
+    const glm::vec3 a = f0, b = first ? f1 : f2, c = first ? f2 : f3;
+    // Barycentrics near the middle of the floor, where the whole light is above the tangent plane.
+    const float b1 = 0.25f + 0.2f * random.next_float(), b2 = 0.25f + 0.2f * random.next_float();
+    const glm::vec3 point = (1.0f - b1 - b2) * a + b1 * b + b2 * c;
+    const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
+    on_floor.push_back({point, normal, normal, glm::vec3(0.8f), 16});
+  }
+  // The same points with the floor taken away: black there is another mistake (the shadow ray
+  // hitting the light itself), which the estimator tests charge.
+  DirectLightScene light_only = floor_scene;
+  light_only.triangles.resize(2);
+  const auto black_count = [](const std::vector<glm::vec3>& estimates) {
+    std::size_t black = 0;
+    for (const glm::vec3& estimate : estimates) black += estimate == glm::vec3(0.0f);
+    return black;
+  };
+  const std::vector<glm::vec3> floor_samples = direct_light_samples(floor_scene, on_floor, test_seed(12));
+  const std::size_t black_on_floor = black_count(floor_samples);
+  if (black_on_floor > 0 && black_count(direct_light_samples(light_only, on_floor, test_seed(12))) == 0) {
+    add_failure({MessageId::direct_failure_black_on_surface,
+                 {{"count", std::to_string(black_on_floor)}, {"total", std::to_string(floor_samples.size())}}});
+    add_hint({MessageId::direct_estimate_shadow_acne, {}});
   }
   // A scene with no light at all (one black triangle): nothing to choose, every sample black.
   DirectLightScene dark;

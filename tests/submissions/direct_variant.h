@@ -47,6 +47,7 @@ struct DirectVariant {
   bool divide_by_choice = true;    // false: the light's sample not divided by the probability of choosing it
   bool shadow_ray = true;          // false: no shadow ray, light passes through everything
   bool shadow_ray_stops = true;    // false: the shadow ray a unit direction, t_max left at infinity
+  bool shadow_ray_offset = true;   // false: the shadow ray starts at hit.point itself
   bool f_is_albedo = false;        // true: the estimator's own f = the albedo, not bsdf_f (1 / pi missing)
   bool intensity_grey = false;     // point_light_intensity: every channel from the red one's power
   bool irradiance_squared = true;  // false: point_light_irradiance I cos / d, the distance not squared
@@ -124,7 +125,7 @@ inline std::optional<DirectSample> unblocked_light_sample(const RenderContext& c
   if (sample.f == glm::vec3(0.0f)) return std::nullopt;
   if (!v.shadow_ray) return sample;
   Ray shadow;
-  shadow.origin = offset_ray_origin(hit, light->direction);
+  shadow.origin = v.shadow_ray_offset ? offset_ray_origin(hit, light->direction) : hit.point;
   if (v.shadow_ray_stops) {
     shadow.direction = light->point - shadow.origin;  // to just short of the light's point
     shadow.t_max = 1.0f - 1e-4f;
