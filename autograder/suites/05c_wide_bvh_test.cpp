@@ -481,22 +481,70 @@ GRADED_TEST(kStage, Stage05cWideBvh, AnyHitAgreesWithBruteForce, 1) {
                   {"calls", std::to_string(calls_after)}}});
 }
 
+// The nodes a ray's traversal surely visited, as the judge sees them: every wide node holding a
+// leaf whose triangles were tested (its four boxes were tested to enter that leaf), and every
+// node above it. An intersector that counts the tests and marks those nodes.
+class VisitedNodes {
+ public:
+  VisitedNodes(const Bvh4& wide, const TestMesh& mesh) : counted_{intersector_for(mesh)} {
+    node_of_primitive_.assign(mesh.triangles.size(), kNone);
+    parent_.assign(wide.nodes.size(), kNone);
+    marked_.assign(wide.nodes.size(), false);
+    for (std::uint32_t n = 0; n < wide.nodes.size(); ++n) {
+      const Bvh4Node& node = wide.nodes[n];
+      for (int slot = 0; slot < node.child_count; ++slot) {
+        if (!node.is_leaf(slot)) {
+          parent_[node.child[slot]] = n;
+          continue;
+        }
+        for (std::uint32_t k = node.child[slot]; k < node.child[slot] + node.primitive_count[slot]; ++k)
+          node_of_primitive_[wide.primitive_order[k]] = n;
+      }
+    }
+  }
+  PrimitiveIntersector intersector() { return PrimitiveIntersector{&VisitedNodes::test, this}; }
+  std::uint64_t tests() const { return counted_.tests; }
+  // The nodes marked since the last call, and a fresh start for the next ray.
+  std::size_t take_ray_count() {
+    for (const std::uint32_t n : marked_list_) marked_[n] = false;
+    const std::size_t count = marked_list_.size();
+    marked_list_.clear();
+    return count;
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+  static std::optional<float> test(void* context, const Ray& ray, std::uint32_t primitive) {
+    VisitedNodes& self = *static_cast<VisitedNodes*>(context);
+    if (primitive < self.node_of_primitive_.size())
+      for (std::uint32_t n = self.node_of_primitive_[primitive]; n != kNone && !self.marked_[n]; n = self.parent_[n]) {
+        self.marked_[n] = true;
+        self.marked_list_.push_back(n);
+      }
+    return counting_test(&self.counted_, ray, primitive);
+  }
+  CountedTests counted_;
+  std::vector<std::uint32_t> node_of_primitive_, parent_, marked_list_;
+  std::vector<bool> marked_;
+};
+
 // Work on the bunny turned and moved for this run (work_test_mesh: your process was never sent
 // its triangles): the primitive tests, counted by the judge (each one is a question your process
 // asks it), against the grader's own near-first traversal of the same tree. The hits must be
 // brute force's, or the work counts for nothing. Allowed: 25% more tests (ties in entry distance
-// may be broken either way); stats.nodes_visited must count something, and stats.primitives_tested
-// exactly the tests the judge answered.
+// may be broken either way). stats.primitives_tested must be exactly the tests the judge answered,
+// and stats.nodes_visited (counted in your process) never below the nodes the judge knows were
+// visited (VisitedNodes).
 GRADED_TEST(kStage, Stage05cWideBvh, DoesNoMoreWorkThanTheReference, 2) {
   const TestMesh& mesh = work_test_mesh();
   const Bvh4 wide = grader_collapse(grader_median_tree(mesh.bounds, kLeafSize));
   std::vector<Ray> rays = rays_at(mesh, 300, 900);
   struct Work {
-    std::uint64_t tests = 0, reported_tests = 0, nodes = 0, wrong = 0;
+    std::uint64_t tests = 0, reported_tests = 0, nodes = 0, wrong = 0, rays_nodes_under_reported = 0;
   };
   const auto yours_on = [&](const std::vector<Ray>& some) {
-    CountedTests counted{intersector_for(mesh)};
-    const PrimitiveIntersector probe{counting_test, &counted};
+    VisitedNodes visited(wide, mesh);
+    const PrimitiveIntersector probe = visited.intersector();
     Work work;
     for (const Ray& ray : some) {
       BvhTraversalStats stats;
@@ -505,8 +553,9 @@ GRADED_TEST(kStage, Stage05cWideBvh, DoesNoMoreWorkThanTheReference, 2) {
       if (hit.has_value() != expected.has_value() || (hit && hit->t_hit != expected->t_hit)) ++work.wrong;
       work.nodes += stats.nodes_visited;
       work.reported_tests += stats.primitives_tested;
+      if (stats.nodes_visited < visited.take_ray_count()) ++work.rays_nodes_under_reported;
     }
-    work.tests = counted.tests;
+    work.tests = visited.tests();
     return work;
   };
   // A traversal that tests nearly everything is judged on the first 10 rays: each of its tests is
@@ -534,6 +583,10 @@ GRADED_TEST(kStage, Stage05cWideBvh, DoesNoMoreWorkThanTheReference, 2) {
   }
   if (yours.nodes == 0) {
     add_failure({MessageId::wide_failure_nodes_not_counted, {}});
+  } else if (yours.rays_nodes_under_reported > 0) {
+    add_hint(MessageId::wide_nodes_under_counted);
+    add_failure({MessageId::bvh_failure_nodes_under_reported,
+                 {{"rays", gtest_text(yours.rays_nodes_under_reported)}, {"total", gtest_text(rays.size())}}});
   }
   if (yours.reported_tests != yours.tests) {
     add_hint(MessageId::bvh_stats_not_counted);

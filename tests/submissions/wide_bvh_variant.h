@@ -28,6 +28,7 @@ struct WideBvhVariant {
   bool box4_ignores_t_min = false;   // intersect_ray_box4 enters at -infinity, not at ray.t_min: boxes behind count
   bool entry_is_exit = false;        // entry_distances[i] is where the ray leaves the box
   bool nodes_not_counted = false;    // stats.nodes_visited never incremented
+  bool nodes_counted_once = false;   // stats.nodes_visited incremented once per ray, before the loop
   bool primitives_not_counted = false;  // stats.primitives_tested never incremented
   bool any_hit_goes_on = false;      // any_hit: searches on for the closest hit (right answers, more work)
   // Correct variants.
@@ -160,6 +161,7 @@ std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const Prim
   Ray search = ray;
   std::optional<BvhHit> closest;
   std::vector<std::pair<float, std::uint32_t>> waiting{{ray.t_min, 0u}};
+  if (v.nodes_counted_once) ++stats.nodes_visited;
   while (!waiting.empty()) {
     const auto [enter, index] = waiting.back();
     waiting.pop_back();
@@ -167,7 +169,7 @@ std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const Prim
     const Bvh4Node& node = bvh.nodes[index];
     float entries[kBvh4Width];
     const unsigned mask = intersect_ray_box4(v.far_first_no_pruning ? ray : search, inverse, node, entries);
-    if (!v.nodes_not_counted) ++stats.nodes_visited;
+    if (!v.nodes_not_counted && !v.nodes_counted_once) ++stats.nodes_visited;
     std::vector<std::pair<float, int>> hit;
     for (int i = 0; i < node.child_count; ++i)
       if (mask & (1u << i)) hit.push_back({entries[i], i});
