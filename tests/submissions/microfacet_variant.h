@@ -17,6 +17,7 @@ struct MicrofacetVariant {
   bool f_no_masking = false;            // f without G1(wo) G1(wi)
   bool f_fresnel_at_normal = false;     // Schlick's Fresnel at wi.z instead of dot(wi, h)
   bool half_vector_no_sqrt = false;     // tan(theta) = alpha u / (1 - u)
+  bool half_vector_alpha_squared = false;  // the half vectors sampled with alpha^2 in place of alpha
   bool pdf_no_jacobian = false;         // microfacet_pdf = the half vector's density
   bool horizon_checks = true;           // false: D, G1, f and both densities never return 0 below the surface
   bool g1_tan_not_squared = false;      // G1 = 2 / (1 + sqrt(1 + alpha^2 tan(theta)))
@@ -70,6 +71,7 @@ glm::vec3 microfacet_f(const glm::vec3& wo, const glm::vec3& wi, float alpha, co
 glm::vec3 sample_ggx_half_vector(glm::vec2 uniform_random, float alpha) {
   const submission::MicrofacetVariant v = submission::microfacet_variant();
   const float u = uniform_random.x;
+  if (v.half_vector_alpha_squared) alpha = alpha * alpha;
   const float tan2 = v.half_vector_no_sqrt ? std::pow(alpha * u / (1.0f - u), 2.0f) : alpha * alpha * u / (1.0f - u);
   const float cos_theta = 1.0f / std::sqrt(1.0f + tan2);
   const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
