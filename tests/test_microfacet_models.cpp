@@ -56,7 +56,7 @@ TEST(MicrofacetModels, EverySmithG1ModelIsTheOneItsValuesFit) {
     EXPECT_TRUE(fit && *fit == m) << describe(m) << " is fitted as " << (fit ? describe(*fit) : "nothing");
     ++fitted;
   }
-  EXPECT_EQ(fitted, 12);  // no masking, and half x tan x 3 alphas: 12, less the exact one
+  EXPECT_EQ(fitted, 12);  // no masking, and half x tan x 3 alphas: 1 + 2 x 2 x 3 = 13, less the exact one
 }
 
 // f with each of its models, on each wrong D and wrong G1 the student may have beside it (the
@@ -100,6 +100,7 @@ TEST(MicrofacetModels, EveryFModelIsTheOneItsValuesFit) {
 }
 
 TEST(MicrofacetModels, EveryHalfVectorPdfModelIsTheOneItsValuesFit) {
+  int fitted = 0;
   for (const DistributionModel& d : distribution_models()) {
     const bool own_d = d.changes() > 0;
     for (const bool students_d : {false, true})
@@ -115,8 +116,10 @@ TEST(MicrofacetModels, EveryHalfVectorPdfModelIsTheOneItsValuesFit) {
         EXPECT_TRUE(fit && *fit == m) << "your D " << students_d << ", no cosine " << no_cosine << " beside D "
                                       << describe(d) << " is fitted as "
                                       << (fit ? std::to_string(fit->students_d) + std::to_string(fit->no_cosine) : "nothing");
+        ++fitted;
       }
   }
+  EXPECT_EQ(fitted, 1 + 11 * 3);  // no cosine beside the exact D; beside each wrong D, also yours with and without
 }
 
 TEST(MicrofacetModels, EveryPdfModelIsTheOneItsValuesFit) {

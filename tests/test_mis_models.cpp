@@ -1,7 +1,7 @@
 // Stage 09b's scripted tests against their modelled mistakes (autograder/suites/mis_models.h):
-// every mistake, and every pair made together, is named by the fit of the test it fails, and no
-// pair passes a test that one of its mistakes fails (issue: "mistakes made together are named
-// together"). The values of a model are what a path tracer making those mistakes returns; the
+// every mistake is named alone by the fit of a test it fails; every pair fails each test that
+// either of its mistakes fails, and the fit there names both, or, where the pair's values are
+// those of one of them alone, that one (issue: "mistakes made together are named together"). The values of a model are what a path tracer making those mistakes returns; the
 // reference path tracer's are the correct model's.
 #include "mis_models.h"
 
@@ -11,28 +11,29 @@
 #include <string>
 #include <vector>
 
-namespace raylab::grading {
+namespace raylab::grading::mis {
 namespace {
 
-// One of the scripted tests of 09_mis_test.cpp, with its paths' parts.
-struct ScriptedTest {
+// The scripted tests of 09b_mis_test.cpp (mis_models.h), each with its paths and their parts.
+struct ScriptedTestParts {
   std::string name;
   MisScene scene;
   std::vector<MisScriptedPath> paths;
   std::vector<PathParts> parts;
 };
-std::vector<ScriptedTest> scripted_tests() {
-  std::vector<ScriptedTest> tests = {{"LightAndBsdfSamplesWeighted", quad_light_scene(), scripted_paths(2), {}},
-                                     {"PointLightKeepsWeightOne", point_light_scene(), scripted_paths(2), {}},
-                                     {"LastVertexKeepsWeightOne", quad_light_scene(), scripted_paths(0), {}}};
-  for (ScriptedTest& test : tests) test.parts = parts_of(test.scene, test.paths);
+std::vector<ScriptedTestParts> tests_with_parts() {
+  std::vector<ScriptedTestParts> tests;
+  for (const ScriptedTest& test : scripted_tests()) {
+    const std::vector<MisScriptedPath> paths = scripted_paths(test.max_depth);
+    tests.push_back({test.test, test.scene, paths, parts_of(test.scene, paths)});
+  }
   return tests;
 }
 
 // A path tracer with a model's mistakes: the values it returns. A mistake that can be made in
 // more than one way (model_values) gives one path tracer per way, each taking the same way on
 // every path (the k-th value, or the last where a path has fewer).
-std::vector<std::vector<glm::vec3>> returned_values(const ScriptedTest& test, const MisModel& model) {
+std::vector<std::vector<glm::vec3>> returned_values(const ScriptedTestParts& test, const MisModel& model) {
   std::vector<std::vector<glm::dvec3>> values;
   std::size_t ways = 1;
   for (const PathParts& p : test.parts) {
@@ -45,12 +46,12 @@ std::vector<std::vector<glm::vec3>> returned_values(const ScriptedTest& test, co
   return tracers;
 }
 
-bool all_right(const ScriptedTest& test, const std::vector<glm::vec3>& got) {
+bool all_right(const ScriptedTestParts& test, const std::vector<glm::vec3>& got) {
   return fits(got, test.parts, MisModel{});
 }
 
 // Whether a mistake alone fails the test, whichever way it is made.
-bool fails(const ScriptedTest& test, const MisModel& model) {
+bool fails(const ScriptedTestParts& test, const MisModel& model) {
   for (const std::vector<glm::vec3>& got : returned_values(test, model))
     if (all_right(test, got)) return false;
   return true;
@@ -63,17 +64,17 @@ std::string names(const MisFit& fit) {
 }
 
 TEST(MisModels, TheReferencePathTracerIsTheCorrectModel) {
-  for (const ScriptedTest& test : scripted_tests()) {
+  for (const ScriptedTestParts& test : tests_with_parts()) {
     const std::vector<glm::vec3> got = mis_scripted_paths(test.scene, test.paths);
     EXPECT_TRUE(all_right(test, got)) << test.name;
   }
 }
 
 TEST(MisModels, EveryMistakeFailsATestThatNamesItAlone) {
-  const std::vector<ScriptedTest> tests = scripted_tests();
+  const std::vector<ScriptedTestParts> tests = tests_with_parts();
   for (const MisMistake& mistake : mis_mistakes()) {
     int failed = 0;
-    for (const ScriptedTest& test : tests) {
+    for (const ScriptedTestParts& test : tests) {
       if (!fails(test, mistake.model)) continue;
       ++failed;
       for (const std::vector<glm::vec3>& got : returned_values(test, mistake.model)) {
@@ -87,7 +88,7 @@ TEST(MisModels, EveryMistakeFailsATestThatNamesItAlone) {
 }
 
 // Whether the values are those of `model` made alone, in one of its ways.
-bool same_as(const ScriptedTest& test, const std::vector<glm::vec3>& got, const MisModel& model) {
+bool same_as(const ScriptedTestParts& test, const std::vector<glm::vec3>& got, const MisModel& model) {
   for (const std::vector<glm::vec3>& alone : returned_values(test, model))
     if (alone == got) return true;
   return false;
@@ -98,14 +99,14 @@ bool same_as(const ScriptedTest& test, const std::vector<glm::vec3>& got, const 
 // leaves no weight to get wrong; nor does the emission counted with weight 1 on both sides, the
 // light sample's way of that mistake) that one is named; never a mistake not made.
 TEST(MisModels, EveryPairFailsAndIsNamed) {
-  const std::vector<ScriptedTest> tests = scripted_tests();
+  const std::vector<ScriptedTestParts> tests = tests_with_parts();
   const std::vector<MisMistake>& all = mis_mistakes();
   int named_together = 0;
   for (std::size_t i = 0; i < all.size(); ++i)
     for (std::size_t j = i + 1; j < all.size(); ++j) {
       const MisModel pair = both(all[i].model, all[j].model);
       const std::string pair_name = std::string("'") + all[i].name + "' + '" + all[j].name + "'";
-      for (const ScriptedTest& test : tests) {
+      for (const ScriptedTestParts& test : tests) {
         const bool fails_i = fails(test, all[i].model), fails_j = fails(test, all[j].model);
         if (!fails_i && !fails_j) continue;
         for (const std::vector<glm::vec3>& got : returned_values(test, pair)) {
@@ -131,7 +132,7 @@ TEST(MisModels, EveryPairFailsAndIsNamed) {
             continue;
           }
           EXPECT_TRUE(fit.together && fit.named.size() == 2 &&
-                      ((fit.named[0] == &all[i] && fit.named[1] == &all[j])))
+                      fit.named[0] == &all[i] && fit.named[1] == &all[j])
               << pair_name << " in " << test.name << ": the fit names " << names(fit);
           ++named_together;
         }
@@ -144,4 +145,4 @@ TEST(MisModels, EveryPairFailsAndIsNamed) {
 }
 
 }  // namespace
-}  // namespace raylab::grading
+}  // namespace raylab::grading::mis

@@ -30,8 +30,9 @@ struct DirectLightScene {
   std::vector<DirectLightSphere> spheres;
   std::vector<DirectLightPoint> point_lights;
 };
-// A diffuse surface point that is not part of the scene: where, its unit normal, the unit
-// direction towards the viewer, its albedo, and how many independent samples to take there.
+// A diffuse surface point (on no surface of the scene, or on one of its triangles, as a hit point
+// rounded to float is): where, its unit normal, the unit direction towards the viewer, its albedo,
+// and how many independent samples to take there.
 struct DirectLightQuery {
   glm::vec3 point{0.0f}, normal{0.0f, 0.0f, 1.0f}, wo{0.0f, 0.0f, 1.0f}, albedo{0.5f};
   std::uint32_t sample_count = 1;

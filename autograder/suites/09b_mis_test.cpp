@@ -12,8 +12,9 @@
 //   models of the common mistakes (no MIS, the balance heuristic, an area density in the weight,
 //   the emission unweighted, a weighted point light, a weighted last vertex) are fitted to every
 //   path: a model that explains every value is named, or two made together (mis_models.h;
-//   tests/test_mis_models.cpp proves that the fit names every pair). These tests are exact (float
-//   tolerance).
+//   tests/test_mis_models.cpp proves that a pair fails each test either of its mistakes fails and
+//   is named there, both or, where its values are one mistake's, that one). These tests are exact
+//   (float tolerance).
 //   Is it unbiased? Two furnaces t-tested against their exact answer and the two Cornell boxes
 //   z-tested region by region against stage 09's converged reference (path_support.h), as in
 //   stage 09: an ordinary path tracer without MIS passes these and loses the scripted tests.
@@ -41,6 +42,8 @@
 
 namespace raylab::grading {
 namespace {
+
+using namespace mis;  // the scripted tests, power_heuristic's exact value, the models (mis_models.h)
 
 constexpr const char* kStage = "09b_mis";
 const double kLevel = mis_test_level();
@@ -147,22 +150,19 @@ GRADED_TEST(kStage, Stage09bMis, PowerHeuristicEdgeCases, 3) {
 
 // ---- Scripted paths -------------------------------------------------------------------------
 
-// A test scene's name in the failure texts, in English and Chinese.
-struct SceneName {
-  std::string english, chinese;
-  MessageArg arg() const { return MessageArg::bilingual("what", english, chinese); }
-};
 
 // Traces the paths with the student's path_radiance_mis and compares every value with the judge's;
 // names the first that differs and the mistakes whose model explains every value: one, or when
 // no single one does and exactly one pair does, two made together.
-void expect_scripted(const SceneName& what, const MisScene& test_scene, const std::vector<MisScriptedPath>& paths) {
-  const std::vector<glm::vec3> got = mis_scripted_paths(test_scene, paths);
-  const std::vector<PathParts> parts = parts_of(test_scene, paths);
+void expect_scripted(const ScriptedTest& test) {
+  const MessageArg what = MessageArg::bilingual("what", test.english, test.chinese);
+  const std::vector<MisScriptedPath> paths = scripted_paths(test.max_depth);
+  const std::vector<glm::vec3> got = mis_scripted_paths(test.scene, paths);
+  const std::vector<PathParts> parts = parts_of(test.scene, paths);
   for (std::size_t i = 0; i < got.size(); ++i) {
     const glm::vec3& v = got[i];
     if (hint_if_not_finite("path_radiance_mis", {v.x, v.y, v.z}, {MessageId::mis_advice_division, {}})) {
-      add_failure({MessageId::mis_failure_not_finite, {what.arg()}});
+      add_failure({MessageId::mis_failure_not_finite, {what}});
       return;
     }
   }
@@ -173,7 +173,7 @@ void expect_scripted(const SceneName& what, const MisScene& test_scene, const st
   const MisScriptedPath& path = paths[wrong];
   const PathParts& p = parts[wrong];
   add_failure({MessageId::mis_failure_path,
-               {what.arg(),
+               {what,
                 {"origin", gtest_text(path.origin)},
                 {"direction", gtest_text(path.direction)},
                 {"u1", gtest_text(path.u1)},
@@ -199,18 +199,17 @@ void expect_scripted(const SceneName& what, const MisScene& test_scene, const st
 GRADED_TEST(kStage, Stage09bMis, LightAndBsdfSamplesWeighted, 8) {
   // A floor under a quad light: every path's light sample, and its BSDF sample when that hits the
   // light, must count with their power-heuristic weights.
-  expect_scripted({"a floor under a quad light", "四边形光源下的地面"}, quad_light_scene(), scripted_paths(2));
+  expect_scripted(scripted_tests()[0]);
 }
 
 GRADED_TEST(kStage, Stage09bMis, PointLightKeepsWeightOne, 3) {
   // No direction hits a point: its light sample is the only way to find it, weight 1.
-  expect_scripted({"a floor under a point light", "点光源下的地面"}, point_light_scene(), scripted_paths(2));
+  expect_scripted(scripted_tests()[1]);
 }
 
 GRADED_TEST(kStage, Stage09bMis, LastVertexKeepsWeightOne, 2) {
   // max_depth 0: no BSDF sample follows the camera's hit, so its light sample has weight 1.
-  expect_scripted({"a floor under a quad light, max depth 0", "四边形光源下的地面，最大深度 0"}, quad_light_scene(),
-                  scripted_paths(0));
+  expect_scripted(scripted_tests()[2]);
 }
 
 // ---- Unbiased: furnaces and Cornell boxes ---------------------------------------------------

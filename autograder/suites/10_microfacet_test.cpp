@@ -4,16 +4,18 @@
 // precision (float tolerances). A wrong function is diagnosed from a fitted model of what it
 // computed: a small family of formulas, each a product of parts (which distribution, which
 // alpha, whether 1 / pi, the masking, the Fresnel cosine, the factor 4, the Jacobian), and the
-// judge looks for the member that reproduces EVERY value the student returned, fewest changed
-// parts first. Each changed part is a hint of its own, so two mistakes at once get two hints;
-// a part that is the student's own wrong function (f built on a wrong D) names that function,
-// not f.
+// judge looks for the member that reproduces EVERY value the student returned above the surface,
+// fewest changed parts first (microfacet_models.h; 0 below the surface is a rule with its own
+// hint). Each changed part is a hint of its own, so two mistakes at once get two hints, after a
+// line that says they were made together; a part that is the student's own wrong function (f
+// built on a wrong D) names that function, not f.
 //
 // The samplers run in bulk in the stage server (10_microfacet_calls.h). The judge maps every
 // half vector (for sample_microfacet_wi: h = normalize(wo + wi)) to the coordinates in which
 // GGX's density D(h) cos(theta_h) is uniform, (tan^2 / (alpha^2 + tan^2), phi / 2 pi), and
 // chi-square tests them on a 16 x 16 grid. A sampler that fails is held against the densities of
-// the known mistakes the same way; the one that fits (p above 1e-6) names the hint.
+// the known mistakes and pairs of them (a shape with an alpha) the same way; the first that fits
+// (p above 1e-6) names its hints.
 //
 // False failures: the 4 chi-square tests share kGraderFalseFailureRate (1 in 1,000 for the stage,
 // Sidak-corrected); the value tests are exact checks with tolerances for float rounding, which a
@@ -29,9 +31,7 @@
 #include "raylab/testkit/statistics.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,7 +43,7 @@ using namespace microfacet;  // the formulas and the models (microfacet_models.h
 
 constexpr const char* kStage = "10_microfacet";
 constexpr int kSampleCount = 100000;
-constexpr std::uint64_t kSeed = 10;
+constexpr std::uint64_t kSeed = kStageSeed;
 const double kLevel = testkit::sidak_level(testkit::kGraderFalseFailureRate, 4);
 
 const bool kRegistered = register_stage(kStage, [] {
@@ -84,9 +84,18 @@ std::string call_text(const char* function, std::initializer_list<std::string> a
 
 // ---- D -------------------------------------------------------------------------------------
 
-// Fails with the first case whose value is not exact(case). Returns whether the diagnosis should
-// go on: false when every value is right, or when it is done here (a value not finite; only the
-// values below the surface wrong, which must be 0).
+// The hint for values below the surface that are not 0: the only mistake, or one more. Returns
+// whether the diagnosis goes on, to the values above.
+bool hint_below_and_go_on(const char* function, bool above_right, bool below_right, int section_number) {
+  if (!below_right)
+    add_hint({above_right ? MessageId::microfacet_below_not_zero : MessageId::microfacet_also_below_not_zero,
+              {{"function", function}, section(section_number)}});
+  return !above_right;
+}
+
+// Fails with the first case whose value is not exact(case), and hints when a value below the
+// surface is not 0. Returns whether the diagnosis should go on, to the values above the surface:
+// false when every value is right, when a value is not finite, or when those above are all right.
 template <typename Exact>
 bool fail_first_wrong(const char* function, const std::vector<ValueCase>& cases, const Exact& exact, int section_number) {
   const auto wrong = std::find_if(cases.begin(), cases.end(), [&](const ValueCase& k) { return !close(k.got, exact(k)); });
@@ -95,12 +104,16 @@ bool fail_first_wrong(const char* function, const std::vector<ValueCase>& cases,
              text(static_cast<float>(exact(*wrong))));
   if (hint_if_not_finite(function, {wrong->got}, {MessageId::microfacet_advice_division, {section(section_number)}}))
     return false;
-  if (std::all_of(cases.begin(), cases.end(),
-                  [&](const ValueCase& k) { return k.vector.z <= 0.0f || close(k.got, exact(k)); })) {
-    add_hint({MessageId::microfacet_below_not_zero, {{"function", function}, section(section_number)}});
-    return false;
-  }
-  return true;
+  const auto right_where = [&](bool above) {
+    return std::all_of(cases.begin(), cases.end(),
+                       [&](const ValueCase& k) { return (k.vector.z > 0.0f) != above || close(k.got, exact(k)); });
+  };
+  return hint_below_and_go_on(function, right_where(true), right_where(false), section_number);
+}
+
+// The line before the hints of a fitted model with more than one changed part.
+void hint_together(int changes) {
+  if (changes > 1) add_hint({MessageId::microfacet_mistakes_together, {{"count", std::to_string(changes)}}});
 }
 
 double exact_distribution(const ValueCase& k) { return ggx_d(k.vector.z, k.alpha); }
@@ -127,6 +140,7 @@ GRADED_TEST(kStage, Stage10Microfacet, GgxDistribution, 5) {
   if (!fail_first_wrong("ggx_distribution", cases, exact_distribution, 2)) return;
   // The fitted model: GGX or Beckmann, alpha as it is or not, with or without 1 / pi.
   if (const std::optional<DistributionModel> m = fit_distribution(cases)) {
+    hint_together(m->changes());
     if (m->beckmann) add_hint({MessageId::microfacet_d_beckmann, {section(2)}});
     hint_alpha(m->alpha, 2);
     if (m->no_inverse_pi) add_hint({MessageId::microfacet_d_no_inverse_pi, {section(2)}});
@@ -141,7 +155,7 @@ GRADED_TEST(kStage, Stage10Microfacet, GgxDistribution, 5) {
     const double t = (i + 0.5) / kSteps;
     integral += ggx_distribution(direction(static_cast<float>(std::sqrt(t)), 0.3f), kAlpha);
   }
-  integral *= kPi / kSteps;
+  integral *= kPiD / kSteps;
   if (std::isfinite(integral) && std::fabs(integral - 1.0) > 0.01)
     add_hint({MessageId::microfacet_d_integral, {{"integral", stream_text(integral)}, {"alpha", text(kAlpha)}, section(2)}});
 }
@@ -153,6 +167,7 @@ GRADED_TEST(kStage, Stage10Microfacet, SmithG1, 4) {
   if (!fail_first_wrong("ggx_smith_g1", cases, exact_smith_g1, 3)) return;
   // The fitted model: no masking at all, or the numerator halved, tan not squared, alpha changed.
   if (const std::optional<SmithG1Model> m = fit_smith_g1(cases)) {
+    hint_together(m->changes());
     if (m->no_masking) add_hint({MessageId::microfacet_g1_no_masking, {section(3)}});
     if (m->half) add_hint({MessageId::microfacet_g1_half, {section(3)}});
     if (m->tan_not_squared) add_hint({MessageId::microfacet_g1_tan_not_squared, {section(3)}});
@@ -178,12 +193,12 @@ GRADED_TEST(kStage, Stage10Microfacet, MicrofacetF, 6) {
   if (hint_if_not_finite("microfacet_f", {wrong->got.x, wrong->got.y, wrong->got.z},
                          {MessageId::microfacet_advice_division, {section(4)}}))
     return;
-  if (std::all_of(cases.begin(), cases.end(), [](const FCase& k) {
-        return (k.wo.z > 0.0f && k.wi.z > 0.0f) == false || close(k.got, exact_f(k));
-      })) {
-    add_hint({MessageId::microfacet_below_not_zero, {{"function", "microfacet_f"}, section(4)}});
-    return;
-  }
+  const auto f_right_where = [&](bool above) {
+    return std::all_of(cases.begin(), cases.end(), [&](const FCase& k) {
+      return (k.wo.z > 0.0f && k.wi.z > 0.0f) != above || close(k.got, exact_f(k));
+    });
+  };
+  if (!hint_below_and_go_on("microfacet_f", f_right_where(true), f_right_where(false), 4)) return;
   // The fitted model, on the cases above the surface: D (exact or the student's), masking (exact,
   // the student's, none), the Fresnel cosine (dot(wi, h), wi.z, none: the specular colour, or 1)
   // and the factor 4 (there, missing).
@@ -196,6 +211,7 @@ GRADED_TEST(kStage, Stage10Microfacet, MicrofacetF, 6) {
   }
   const std::optional<FModel> m = fit_f(cases, own_d, own_g);
   if (!m) return;
+  hint_together(m->changes());
   if (m->students_d)
     add_hint({MessageId::microfacet_uses_your_function, {{"function", "microfacet_f"}, {"yours", "ggx_distribution"}}});
   if (m->masking == Masking::Students)
@@ -227,6 +243,7 @@ GRADED_TEST(kStage, Stage10Microfacet, HalfVectorPdf, 3) {
 
 // The hints of a mistaken sampler's parts: its shape, and its alpha.
 void hint_sampler(const SamplerModel& mistake) {
+  hint_together(int(mistake.shape != SamplerShape::Ggx) + int(mistake.alpha != AlphaUse::AsIs));
   if (mistake.shape == SamplerShape::NoSquareRoot) add_hint({MessageId::microfacet_samples_no_sqrt, {section(5)}});
   if (mistake.shape == SamplerShape::Beckmann) add_hint({MessageId::microfacet_samples_beckmann, {section(5)}});
   if (mistake.shape == SamplerShape::UniformCosine) add_hint({MessageId::microfacet_samples_uniform, {section(5)}});
@@ -302,7 +319,7 @@ bool half_vectors_follow_visible_normals(const glm::vec3& wo, const std::vector<
   const auto density = [&](double share, double phi) {
     const double tan2 = alpha * alpha * share / std::max(1e-300, 1.0 - share);
     const double cos_h = 1.0 / std::sqrt(1.0 + tan2), sin_h = std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h));
-    const glm::dvec3 h(sin_h * std::cos(2.0 * kPi * phi), sin_h * std::sin(2.0 * kPi * phi), cos_h);
+    const glm::dvec3 h(sin_h * std::cos(2.0 * kPiD * phi), sin_h * std::sin(2.0 * kPiD * phi), cos_h);
     return g1 * std::max(0.0, glm::dot(o, h)) / (o.z * cos_h);
   };
   bool fits = false;
@@ -403,12 +420,12 @@ GRADED_TEST(kStage, Stage10Microfacet, MicrofacetPdf, 3) {
   fail_value(call_text("microfacet_pdf", {"wo " + text(wrong->wo), "wi " + text(wrong->wi), text(wrong->alpha)}),
              text(wrong->got), text(static_cast<float>(exact(*wrong))));
   if (hint_if_not_finite("microfacet_pdf", {wrong->got}, {MessageId::microfacet_advice_division, {section(6)}})) return;
-  if (std::all_of(cases.begin(), cases.end(), [&](const PdfCase& k) {
-        return (k.wo.z > 0.0f && k.wi.z > 0.0f) == false || close(k.got, exact(k));
-      })) {
-    add_hint({MessageId::microfacet_below_not_zero, {{"function", "microfacet_pdf"}, section(6)}});
-    return;
-  }
+  const auto right_where = [&](bool above) {
+    return std::all_of(cases.begin(), cases.end(), [&](const PdfCase& k) {
+      return (k.wo.z > 0.0f && k.wi.z > 0.0f) != above || close(k.got, exact(k));
+    });
+  };
+  if (!hint_below_and_go_on("microfacet_pdf", right_where(true), right_where(false), 6)) return;
   const bool own_pdf_h = !all_close(value_cases(1.3f, ggx_half_vector_pdf), exact_half_vector_pdf);
   if (own_pdf_h)
     for (PdfCase& k : cases)

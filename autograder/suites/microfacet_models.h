@@ -2,20 +2,25 @@
 // function's model is a product of parts (which distribution, which alpha, whether 1 / pi, the
 // masking, the Fresnel cosine, the factor 4, the Jacobian), so that two or three mistakes made in
 // one function are one member of its family. A fit returns the member, fewest changed parts first,
-// that reproduces every value the student returned. tests/test_microfacet_models.cpp proves that
-// every member of every family is the one its own values fit, and that the samplers' mistakes,
-// alone and in pairs, are each named by their own samples.
+// that reproduces every value the student returned above the surface (0 below is a rule of its
+// own). tests/test_microfacet_models.cpp proves that every member of every family is the one its
+// own values fit, but where two members give the same values: f on your G1 without masking is f
+// without masking (named as your G1), and f on your G1 of half the value with the 4 missing is f
+// with the right masking (1/2 x 1/2 x 4 = 1). And that the samplers' mistakes, alone and in pairs,
+// are each named by their own samples.
 #pragma once
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <vector>
 
 namespace raylab::grading::microfacet {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPiD = 3.14159265358979323846;
+constexpr std::uint64_t kStageSeed = 10;  // the stage's seed (its cases and, mixed by round, its samples)
 
 // ---- The exact formulas, in double, with the parts a mistake may change ------------------
 
@@ -90,7 +95,7 @@ struct FCase {
   // The student's own D(h) and G1(wo) G1(wi), for the models built on them.
   double students_d = 0.0, students_g = 0.0;
 };
-std::vector<FCase> f_cases();  // without values
+std::vector<FCase> f_cases();  // without values; the same in every grading (kStageSeed)
 glm::dvec3 exact_f(const FCase& k);
 
 enum class Masking { Exact, Students, None };

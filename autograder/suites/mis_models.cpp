@@ -3,12 +3,16 @@
 #include "grader_geometry.h"
 
 #include "raylab/bsdf.h"
+#include "raylab/geometry.h"
+#include "raylab/lights.h"
+#include "raylab/scene.h"
 #include "raylab/shading.h"
 
 #include <cmath>
 #include <optional>
+#include <utility>
 
-namespace raylab::grading {
+namespace raylab::grading::mis {
 
 double exact_power(double count_f, double pdf_f, double count_g, double pdf_g) {
   const double f = count_f * pdf_f, g = count_g * pdf_g;
@@ -52,6 +56,16 @@ std::vector<MisScriptedPath> scripted_paths(int max_depth) {
         for (const float uy : grid_y)
           paths.push_back({camera, glm::normalize(target - camera), u1, glm::vec2(ux, uy), max_depth});
   return paths;
+}
+
+const std::vector<ScriptedTest>& scripted_tests() {
+  static const std::vector<ScriptedTest> tests = {
+      {"LightAndBsdfSamplesWeighted", "a floor under a quad light", "四边形光源下的地面", quad_light_scene(), 2},
+      {"PointLightKeepsWeightOne", "a floor under a point light", "点光源下的地面", point_light_scene(), 2},
+      {"LastVertexKeepsWeightOne", "a floor under a quad light, max depth 0", "四边形光源下的地面，最大深度 0",
+       quad_light_scene(), 0},
+  };
+  return tests;
 }
 
 namespace {
@@ -199,4 +213,4 @@ MisFit fit_mistakes(const std::vector<glm::vec3>& got, const std::vector<PathPar
   return fit;
 }
 
-}  // namespace raylab::grading
+}  // namespace raylab::grading::mis

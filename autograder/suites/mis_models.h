@@ -1,21 +1,20 @@
 // Stage 09b's scripted paths and the models the judge fits to them (09b_mis_test.cpp): the test
 // scenes, what each path is made of (its light sample and its BSDF sample, computed by the judge),
 // how a correct MIS path tracer weighs the two and how the common mistakes change that, alone or
-// two together. tests/test_mis_models.cpp proves with them that every pair of mistakes is named.
+// two together. tests/test_mis_models.cpp proves with them that every pair fails each scripted
+// test either of its mistakes fails, and that the fit there names both; or, where the pair's
+// values are those of one of them alone (no MIS, or the emission counted with weight 1, leaves the
+// other no weight to get wrong; or the test cannot show the other), that one.
 #pragma once
 
 #include "09b_mis_calls.h"
 #include "messages.h"
 
-#include "raylab/geometry.h"
-#include "raylab/lights.h"
-#include "raylab/scene.h"
-
 #include <glm/glm.hpp>
 
 #include <vector>
 
-namespace raylab::grading {
+namespace raylab::grading::mis {
 
 // The power heuristic (exponent 2) in double, with the contract's edge cases.
 double exact_power(double count_f, double pdf_f, double count_g, double pdf_g);
@@ -27,6 +26,17 @@ MisScene quad_light_scene();
 MisScene point_light_scene();
 // Paths from a camera in front of the floor to points on it, for every pair of numbers of a grid.
 std::vector<MisScriptedPath> scripted_paths(int max_depth);
+
+// The stage's scripted tests: the test's name, its scene's name in both languages, the scene and
+// the paths' max_depth.
+struct ScriptedTest {
+  const char* test;
+  const char* english;
+  const char* chinese;
+  MisScene scene;
+  int max_depth;
+};
+const std::vector<ScriptedTest>& scripted_tests();  // in the order of the suite's tests
 
 // What a path of the test scenes is made of, computed by the judge: the light sample at the floor
 // point and the light the BSDF sample finds, each before its weight, with the densities the
@@ -82,4 +92,4 @@ struct MisFit {
 };
 MisFit fit_mistakes(const std::vector<glm::vec3>& got, const std::vector<PathParts>& parts);
 
-}  // namespace raylab::grading
+}  // namespace raylab::grading::mis

@@ -2,8 +2,9 @@
 // watertight test written with "reject when" checks (det == 0, t <= t_min, t >= t_max), as many
 // texts write it, and no check of the direction. A zero direction shears by 1 / 0: every edge
 // function and t is NaN, every "reject when" comparison is false, and a hit at t = NaN comes back.
-// Every other input is answered as the reference answers it (its t error bound, its exact signs on
-// an edge). Only the test of degenerate inputs fails (also at its NaN corner), with its hint.
+// It rejects an infinite determinant, so every other input is answered as the reference answers it
+// (its t error bound, its exact signs on an edge) but the NaN corner, which the same NaN reaches.
+// Only the test of degenerate inputs fails, with its hint.
 #include "raylab/math.h"
 #include "raylab/stages/03b_watertight.h"
 
@@ -35,7 +36,7 @@ std::optional<TriangleHit> intersect_ray_triangle_watertight(const Ray& ray, con
   }
   if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return std::nullopt;
   const float det = u + v + w;
-  if (det == 0.0f) return std::nullopt;
+  if (det == 0.0f || std::isinf(det)) return std::nullopt;
   const float inverse = 1.0f / det;
   const float t = (u * s[0].z + v * s[1].z + w * s[2].z) * inverse;
   if (t <= ray.t_min || t >= ray.t_max) return std::nullopt;
