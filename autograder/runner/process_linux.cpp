@@ -313,7 +313,9 @@ bool write_text(const std::string& path, const std::string& text) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
   if (fd < 0) return false;
   const bool written = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+  const int write_error = errno;  // (the caller reports it: close must not replace it)
   ::close(fd);
+  errno = write_error;
   return written;
 }
 
@@ -405,17 +407,18 @@ Cgroups find_cgroups() {
 // was given open), and removed when the stage has stopped.
 class StageCgroup {
  public:
-  StageCgroup(const Cgroups& where, const SandboxLimits& limits) : version_(where.version) {
-    if (version_ == 0) return;
+  StageCgroup(const Cgroups& where, const SandboxLimits& limits) {
+    const int version = where.version;
+    if (version == 0) return;
     static std::atomic<unsigned> serial{0};
     const std::string name = "/raylab-stage-" + std::to_string(::getpid()) + "-" + std::to_string(++serial);
     const std::string memory = limits.memory_limit_mb > 0
                                    ? std::to_string(static_cast<long long>(limits.memory_limit_mb) * 1024 * 1024)
-                                   : std::string(version_ == 1 ? "-1" : "max");
+                                   : std::string(version == 1 ? "-1" : "max");
     // (process 1 of the stage's PID namespace is one task more than the stage's own)
     const std::string tasks = limits.max_processes > 0 ? std::to_string(limits.max_processes + 1) : "max";
     bool made = true;
-    if (version_ == 1) {
+    if (version == 1) {
       made = make(where.memory_parent + name) && write_text(folders_.back() + "/memory.limit_in_bytes", memory);
       // without swap (where the kernel accounts it): both limits the same
       if (made && ::access((folders_.back() + "/memory.memsw.limit_in_bytes").c_str(), W_OK) == 0)
@@ -482,7 +485,6 @@ class StageCgroup {
     return true;
   }
 
-  int version_ = 0;
   std::vector<std::string> folders_;
   std::vector<int> procs_;
   std::string events_;  // the file whose "oom_kill" counts the processes the kernel killed for memory
@@ -551,6 +553,8 @@ void prepare_judge() {
 std::string default_stage_server_path() {
   return std::filesystem::canonical("/proc/self/exe").string() + "-stage-server";
 }
+
+int stage_cgroup_version() { return sandbox().cgroups.version; }
 
 Message sandbox_description() {
   const Sandbox& box = sandbox();

@@ -227,6 +227,8 @@ std::string default_stage_server_path() {
 
 Message sandbox_description() { return MessageId::sandbox_windows_job; }
 
+int stage_cgroup_version() { return 0; }
+
 StageProcess::StageProcess() = default;
 
 bool StageProcess::running() const { return child_ != nullptr; }

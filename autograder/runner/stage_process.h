@@ -49,6 +49,9 @@ std::string default_stage_server_path();
 
 // What confines stage code on this machine, in one sentence, for the report (sandbox_ messages).
 Message sandbox_description();
+// The version (1 or 2) of the cgroups in which the judge gives each stage server a cgroup of its
+// own, with its memory and process limits; 0 where it gives none (Windows: a job object instead).
+int stage_cgroup_version();
 
 class StageProcess {
  public:
