@@ -341,7 +341,7 @@ endfunction()
 # raylab_add_program(NAME student|reference SOURCES...): one program linked with one variant.
 function(raylab_add_program name variant)
   add_executable(${name} ${ARGN})
-  target_link_libraries(${name} PRIVATE raylab_stages_${variant} raylab_framework raylab_options)
+  target_link_libraries(${name} PRIVATE raylab_stages_${variant} raylab_framework raylab_testkit raylab_options)
   if(variant STREQUAL "reference")
     target_compile_definitions(${name} PRIVATE RAYLAB_REFERENCE_STAGES)  # framework/app/main.cpp
   endif()

@@ -25,9 +25,9 @@ struct CountedTests {
 };
 std::optional<float> counting_test(void* counted_tests, const Ray& ray, std::uint32_t primitive);
 
-// The grader's own camera rays, sphere and triangle tests (in double, with stages 01-03's
-// conventions), which the later stages' pictures and scenes are traced with: so their grades do
-// not depend on your stages 01-05.
+// The grader's own camera rays, sphere and triangle tests (testkit::exact_tracing: in double, with
+// stages 01-03's conventions), which the later stages' pictures and scenes are traced with: so
+// their grades do not depend on your stages 01-05.
 TracingFunctions grader_tracing();
 
 }  // namespace raylab::grading

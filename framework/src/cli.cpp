@@ -4,6 +4,7 @@
 #include "raylab/image.h"
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
+#include "raylab/trace.h"
 
 #include <CLI/CLI.hpp>
 
@@ -15,6 +16,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 #if defined(_WIN32)
 #include <io.h>
 #define RAYLAB_ISATTY(stream) (::_isatty(::_fileno(stream)) != 0)
@@ -147,9 +149,23 @@ int run_render(const RenderOptions& options) {
   return kExitOk;
 }
 
+// `raylab trace`: one pixel's calls against the contract's answers.
+struct TraceOptions {
+  std::string scene_path;
+  std::vector<int> pixel;
+};
+
+int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
+  const Scene scene = load_scene(options.scene_path);
+  const PixelTrace trace = trace_pixel(scene, options.pixel[0], options.pixel[1], glm::vec2(0.5f), contract);
+  print_trace(std::cout, options.scene_path, trace);
+  return kExitOk;
+}
+
 }  // namespace
 
-int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunctions* reference_tree) {
+int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunctions* reference_tree,
+            const TracingFunctions* contract) {
   CLI::App app{"raylab: a step-by-step ray tracer (course kit)"};
   app.require_subcommand(1);
   RenderOptions options;
@@ -197,6 +213,17 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
                            "Use the watertight triangle test (bonus stage 06_robustness) instead of stage 03's");
   render_command->add_flag("-q,--quiet", options.quiet,
                            "No progress (shown on stderr for renders longer than a second or two) and no summary line");
+  TraceOptions trace_options;
+  CLI::App* trace_command = nullptr;
+  if (contract) {
+    trace_command = app.add_subcommand(
+        "trace", "Trace one pixel: each call of your stage functions along its camera ray, beside the contract's answer");
+    trace_command->add_option("scene", trace_options.scene_path, "Scene file (JSON), e.g. scenes/whitted.json")->required();
+    trace_command->add_option("--pixel", trace_options.pixel, "The pixel's column and row, from the top left: X Y")
+        ->required()
+        ->expected(2)
+        ->check(CLI::NonNegativeNumber);
+  }
 
   try {
     app.parse(argc, argv);
@@ -211,6 +238,7 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
 
   try {
     if (*render_command) return run_render(options);
+    if (trace_command && *trace_command) return run_trace(trace_options, *contract);
   } catch (const NotImplemented& e) {
     std::cerr << "raylab: " << e.what() << "\n";
     return kExitNotImplemented;

@@ -1,8 +1,8 @@
-# cmake -DEXPECTED_EXIT=N [-DSTDERR_REGEX=re] [-DSTDERR_FORBID=re] [-DEXPECTED_FILE=path] [-DREPEAT=n]
-#       -P expect_exit.cmake -- cmd args...
+# cmake -DEXPECTED_EXIT=N [-DSTDERR_REGEX=re] [-DSTDERR_FORBID=re] [-DSTDOUT_REGEX=re] [-DEXPECTED_FILE=path]
+#       [-DREPEAT=n] -P expect_exit.cmake -- cmd args...
 # Runs cmd (REPEAT times, default once) and fails (with the command, its status and its output)
-# unless it exits with N, its stderr matches STDERR_REGEX and not STDERR_FORBID, and
-# EXPECTED_FILE was written and is not empty, every time.
+# unless it exits with N, its stderr matches STDERR_REGEX and not STDERR_FORBID, its stdout
+# matches STDOUT_REGEX, and EXPECTED_FILE was written and is not empty, every time.
 set(command "")
 set(after_separator OFF)
 math(EXPR last "${CMAKE_ARGC} - 1")
@@ -33,6 +33,9 @@ foreach(run RANGE 1 ${REPEAT})
   endif()
   if(DEFINED STDERR_REGEX AND NOT err MATCHES "${STDERR_REGEX}")
     message(FATAL_ERROR "stderr does not match '${STDERR_REGEX}'\n${report}")
+  endif()
+  if(DEFINED STDOUT_REGEX AND NOT out MATCHES "${STDOUT_REGEX}")
+    message(FATAL_ERROR "stdout does not match '${STDOUT_REGEX}'\n${report}")
   endif()
   if(DEFINED STDERR_FORBID AND err MATCHES "${STDERR_FORBID}")
     message(FATAL_ERROR "stderr matches '${STDERR_FORBID}' ('${CMAKE_MATCH_0}'), which it must not\n${report}")
