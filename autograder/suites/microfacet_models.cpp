@@ -74,6 +74,21 @@ void sort_by_changes(std::vector<Model>& models) {
 
 const AlphaUse kAlphaUses[] = {AlphaUse::AsIs, AlphaUse::SquaredFirst, AlphaUse::SquareRoot};
 
+// The first of `models` (in their order, fewest changed parts first) but the exact one whose
+// value(model, cosine, alpha) matches every case above the surface.
+template <typename Model>
+std::optional<Model> first_fitting(const std::vector<Model>& models, const std::vector<ValueCase>& cases,
+                                   double (*value)(const Model&, double, double)) {
+  for (const Model& m : models) {
+    if (m.changes() == 0) continue;
+    if (std::all_of(cases.begin(), cases.end(), [&](const ValueCase& k) {
+          return !(k.vector.z > 0.0f) || close(k.got, value(m, k.vector.z, k.alpha), kModelTolerance);
+        }))
+      return m;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 // ---- D -------------------------------------------------------------------------------------
@@ -93,14 +108,7 @@ double distribution_value(const DistributionModel& m, double cos_h, double alpha
 }
 
 std::optional<DistributionModel> fit_distribution(const std::vector<ValueCase>& cases) {
-  for (const DistributionModel& m : distribution_models()) {
-    if (m.changes() == 0) continue;
-    if (std::all_of(cases.begin(), cases.end(), [&](const ValueCase& k) {
-          return !(k.vector.z > 0.0f) || close(k.got, distribution_value(m, k.vector.z, k.alpha), kModelTolerance);
-        }))
-      return m;
-  }
-  return std::nullopt;
+  return first_fitting(distribution_models(), cases, distribution_value);
 }
 
 // ---- G1 ------------------------------------------------------------------------------------
@@ -121,14 +129,7 @@ double smith_g1_value(const SmithG1Model& m, double cos_v, double alpha) {
 }
 
 std::optional<SmithG1Model> fit_smith_g1(const std::vector<ValueCase>& cases) {
-  for (const SmithG1Model& m : smith_g1_models()) {
-    if (m.changes() == 0) continue;
-    if (std::all_of(cases.begin(), cases.end(), [&](const ValueCase& k) {
-          return !(k.vector.z > 0.0f) || close(k.got, smith_g1_value(m, k.vector.z, k.alpha), kModelTolerance);
-        }))
-      return m;
-  }
-  return std::nullopt;
+  return first_fitting(smith_g1_models(), cases, smith_g1_value);
 }
 
 // ---- f -------------------------------------------------------------------------------------
