@@ -5,6 +5,7 @@
 #include "raylab/stages/07_sampling.h"
 #include "raylab/stages/08_direct_light.h"
 #include "raylab/stages/10_microfacet.h"
+#include "raylab/trace_recorder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -101,13 +102,26 @@ bool sample_f_into(BsdfSample& sample, const Bsdf& bsdf, const glm::vec3& normal
   return false;
 }
 
+// bsdf_sample_f while a trace records (raylab/trace_recorder.h).
+RAYLAB_RECORDED_VERSION std::optional<BsdfSample> bsdf_sample_f_recorded(const Bsdf& bsdf, const glm::vec3& normal,
+                                                                         const glm::vec3& wo, float u_lobe,
+                                                                         glm::vec2 u) {
+  PausedRecording paused;
+  return record_bsdf_sample(*paused.recorder, bsdf, normal, wo, u_lobe, u, bsdf_sample_f(bsdf, normal, wo, u_lobe, u));
+}
+
 }  // namespace
 
 std::optional<BsdfSample> bsdf_sample_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo,
                                         float u_lobe, glm::vec2 u) {
   // Filled where the caller reads it (one named return value), not copied there: see
   // SceneGeometry::intersect.
-  std::optional<BsdfSample> result(std::in_place);
+  std::optional<BsdfSample> result;
+  if (RAYLAB_UNLIKELY(active_trace_recorder)) {
+    result = bsdf_sample_f_recorded(bsdf, normal, wo, u_lobe, u);
+    return result;
+  }
+  result.emplace();
   if (!sample_f_into(*result, bsdf, normal, wo, u_lobe, u)) result.reset();
   return result;
 }

@@ -68,6 +68,26 @@ struct RenderOptions {
   const ReferenceTreeFunctions* reference_tree = nullptr;  // with reference_stages: run_cli's
 };
 
+// --integrator and --roulette of raylab render and raylab trace: checked before the scene loads
+// (an unknown name is a usage error, whatever the scene), then the integrator that runs (the
+// option's, else the scene's).
+void check_integrator_option(const std::string& name) {
+  if (!name.empty() && !integrator_from_name(name))
+    throw UsageError("--integrator: unknown integrator '" + name + "' (known: whitted, direct, path, mis)");
+}
+IntegratorKind integrator_of(const std::string& option, const Scene& scene) {
+  const std::optional<IntegratorKind> integrator = integrator_from_name(option.empty() ? scene.integrator : option);
+  if (!integrator) throw UsageError("unknown integrator '" + scene.integrator + "'");
+  return *integrator;
+}
+RussianRoulette roulette_option(const std::string& text) {
+  const std::optional<RussianRoulette> roulette = RussianRoulette::from_text(text);
+  if (!roulette)
+    throw UsageError("--roulette: expected a probability in [" + least_roulette_text() + ", 1] or auto, got '" + text +
+                     "'");
+  return *roulette;
+}
+
 int run_render(const RenderOptions& options) {
   check_image_extension(options.output_path);
   if (!options.variance_path.empty()) check_image_extension(options.variance_path);
@@ -78,16 +98,10 @@ int run_render(const RenderOptions& options) {
   }
   if (options.adaptive != 0.0f && options.samples_by_noise)
     throw UsageError("--adaptive and --spp-by-noise: choose one (each decides how many samples a pixel gets)");
-  if (!options.integrator.empty() && !integrator_from_name(options.integrator))
-    throw UsageError("--integrator: unknown integrator '" + options.integrator + "' (known: whitted, direct, path, mis)");
-  const std::optional<RussianRoulette> roulette = RussianRoulette::from_text(options.roulette);
-  if (!roulette)
-    throw UsageError("--roulette: expected a probability in [" + least_roulette_text() + ", 1] or auto, got '" +
-                     options.roulette + "'");
+  check_integrator_option(options.integrator);
+  const RussianRoulette roulette = roulette_option(options.roulette);
   Scene scene = load_scene(options.scene_path);
-  const std::optional<IntegratorKind> integrator =
-      integrator_from_name(options.integrator.empty() ? scene.integrator : options.integrator);
-  if (!integrator) throw UsageError("unknown integrator '" + scene.integrator + "'");
+  const IntegratorKind integrator = integrator_of(options.integrator, scene);
   if (options.width > 0) scene.camera.width = options.width;
   if (options.height > 0) scene.camera.height = options.height;
   try {
@@ -96,7 +110,7 @@ int run_render(const RenderOptions& options) {
     throw UsageError(std::string("--width/--height: ") + e.what());
   }
   RenderSettings settings;
-  settings.integrator = *integrator;
+  settings.integrator = integrator;
   settings.samples_per_pixel = options.samples_per_pixel;
   settings.seed = options.seed;
   settings.track_variance = !options.variance_path.empty();
@@ -104,7 +118,7 @@ int run_render(const RenderOptions& options) {
   settings.adaptive_batch = options.adaptive_batch;
   settings.samples_by_noise = options.samples_by_noise;
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
-  settings.roulette = *roulette;
+  settings.roulette = roulette;
   settings.threads = options.threads;
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
   settings.tracing.reference_stages = options.reference_stages;
@@ -153,11 +167,30 @@ int run_render(const RenderOptions& options) {
 struct TraceOptions {
   std::string scene_path;
   std::vector<int> pixel;
+  int sample = 0;
+  int samples_per_pixel = 1;
+  std::uint64_t seed = 0;
+  int max_depth = -1;  // -1: the scene's
+  std::string roulette = "1";
+  std::string integrator;  // empty: the scene's
 };
 
 int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
+  check_integrator_option(options.integrator);
+  const RussianRoulette roulette = roulette_option(options.roulette);
+  if (options.sample >= options.samples_per_pixel)
+    throw UsageError("--sample " + std::to_string(options.sample) + ": the pixel has " +
+                     std::to_string(options.samples_per_pixel) + " sample" +
+                     (options.samples_per_pixel == 1 ? "" : "s") + " (--spp), numbered from 0");
   const Scene scene = load_scene(options.scene_path);
-  const PixelTrace trace = trace_pixel(scene, options.pixel[0], options.pixel[1], glm::vec2(0.5f), contract);
+  TraceSettings settings;
+  settings.integrator = integrator_of(options.integrator, scene);
+  settings.samples_per_pixel = options.samples_per_pixel;
+  settings.sample = options.sample;
+  settings.seed = options.seed;
+  settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
+  settings.roulette = roulette;
+  const PixelTrace trace = trace_pixel(scene, options.pixel[0], options.pixel[1], settings, contract);
   print_trace(std::cout, options.scene_path, trace);
   return kExitOk;
 }
@@ -223,6 +256,19 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
         ->required()
         ->expected(2)
         ->check(CLI::NonNegativeNumber);
+    trace_command->add_option("--sample", trace_options.sample, "Which of the pixel's samples, from 0 (default 0)")
+        ->check(CLI::NonNegativeNumber);
+    trace_command
+        ->add_option("--spp", trace_options.samples_per_pixel,
+                     "Samples per pixel of the render traced (default 1): with --sample, the same random numbers")
+        ->check(CLI::Range(1, kMaxSamplesPerPixel));
+    trace_command->add_option(
+        "--integrator", trace_options.integrator,
+        "As raylab render's (default: the scene's): direct and path trace the sample's whole path");
+    trace_command->add_option("--max-depth", trace_options.max_depth, "As raylab render's (default: the scene's)")
+        ->check(CLI::Range(0, 64));
+    trace_command->add_option("--roulette", trace_options.roulette, "As raylab render's (default 1: no roulette)");
+    trace_command->add_option("--seed", trace_options.seed, "As raylab render's (default 0)");
   }
 
   try {

@@ -5,6 +5,8 @@
 // (geometry_build.cpp builds the trees.)
 #include "geometry_query.h"
 
+#include "raylab/trace_recorder.h"
+
 #include <cmath>
 #include <limits>
 
@@ -33,12 +35,26 @@ std::optional<BvhHit> SceneGeometry::traverse_the_4_wide_tree(const Ray& ray, bo
   return intersect_bvh4(meshes_.front().wide, ray, intersector, any_hit, stats);
 }
 
+RAYLAB_RECORDED_VERSION std::optional<SurfaceHit> SceneGeometry::intersect_recorded(const Ray& ray) const {
+  PausedRecording paused;
+  return record_intersect(*paused.recorder, ray, intersect(ray));
+}
+
+RAYLAB_RECORDED_VERSION bool SceneGeometry::occluded_recorded(const Ray& ray) const {
+  PausedRecording paused;
+  return record_occluded(*paused.recorder, ray, occluded(ray));
+}
+
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
   // Every return hands back `result`, so that the hit is written where the caller reads it
   // (one named return value) and not copied: a copy reads back in 16-byte pieces what was
   // just written in 4- and 8-byte ones, which the processor cannot forward from its stores,
   // and the next ray waits for it (docs/performance.md, "Stores read back whole").
   std::optional<SurfaceHit> result;
+  if (RAYLAB_UNLIKELY(active_trace_recorder)) {  // returned as `result` too: see above
+    result = intersect_recorded(ray);
+    return result;
+  }
   if (straight_into_the_one_tree_) {
     TriangleHit details{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
     if (the_one_reference_tree_) {
@@ -107,6 +123,7 @@ void SceneGeometry::fill_triangle_surface_hit(SurfaceHit& hit, std::uint32_t tri
 }
 
 bool SceneGeometry::occluded(const Ray& ray) const {
+  if (RAYLAB_UNLIKELY(active_trace_recorder)) return occluded_recorded(ray);
   if (straight_into_the_one_tree_)
     return the_one_reference_tree_
                ? reference_tree_functions_->any_triangle(the_one_reference_tree_, ray, the_one_tree_columns_)

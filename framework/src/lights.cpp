@@ -2,6 +2,7 @@
 
 #include "raylab/shapes.h"
 #include "raylab/stages/08_direct_light.h"
+#include "raylab/trace_recorder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,9 +39,17 @@ double solid_angle_density(double pdf_area, double t, const glm::dvec3& directio
   return cos_light > 0.0 ? pdf_area * t * t / cos_light : 0.0;
 }
 
+// sample_li while a trace records (raylab/trace_recorder.h).
+RAYLAB_RECORDED_VERSION std::optional<LightSample> sample_li_recorded(const Light& light,
+                                                                      const glm::vec3& reference_point, glm::vec2 u) {
+  PausedRecording paused;
+  return record_light_sample(*paused.recorder, light, reference_point, u, sample_li(light, reference_point, u));
+}
+
 }  // namespace
 
 std::optional<LightSample> sample_li(const Light& light, const glm::vec3& reference_point, glm::vec2 u) {
+  if (RAYLAB_UNLIKELY(active_trace_recorder)) return sample_li_recorded(light, reference_point, u);
   switch (light.kind) {
     case LightKind::Point: {
       const glm::vec3 to_light = light.position - reference_point;
@@ -157,7 +166,10 @@ LightSet::LightSet(const Scene& scene) {
 std::size_t LightSet::choose(float u, float* probability) const {
   const std::size_t count = lights_.size();
   if (probability) *probability = 1.0f / static_cast<float>(count);
-  return std::min(count - 1, static_cast<std::size_t>(u * static_cast<float>(count)));
+  const std::size_t index = std::min(count - 1, static_cast<std::size_t>(u * static_cast<float>(count)));
+  if (RAYLAB_UNLIKELY(active_trace_recorder))
+    return record_light_choice(*active_trace_recorder, u, index, 1.0f / static_cast<float>(count));
+  return index;
 }
 
 float LightSet::pdf_li(const glm::vec3& reference_point, const glm::vec3& direction) const {

@@ -1,65 +1,19 @@
 #include "raylab/trace.h"
 
-#include "raylab/error.h"
+#include "trace_text.h"
+
 #include "raylab/math.h"
+#include "raylab/sampler.h"
 #include "raylab/stage_table.h"
 #include "raylab/stages/01_camera_rays.h"
 #include "raylab/stages/02_sphere.h"
-#include "raylab/stages/03_triangle.h"
 
-#include <cmath>
-#include <iomanip>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 namespace raylab {
 
-namespace {
-
-std::string text(float v) {
-  std::ostringstream out;
-  out << std::setprecision(7) << v;
-  return out.str();
-}
-std::string text(const glm::vec3& v) { return "(" + text(v.x) + ", " + text(v.y) + ", " + text(v.z) + ")"; }
-std::string text(const glm::vec2& v) { return "(" + text(v.x) + ", " + text(v.y) + ")"; }
-std::string text(const Ray& ray) {
-  return "origin " + text(ray.origin) + "  direction " + text(ray.direction);
-}
-std::string text(const std::optional<float>& t) { return t ? "hit at t = " + text(*t) : "no hit"; }
-std::string text(const std::optional<TriangleHit>& hit) {
-  return hit ? "hit at t = " + text(hit->t_hit) + ", b1 = " + text(hit->barycentric_b1) + ", b2 = " + text(hit->barycentric_b2)
-             : "no hit";
-}
-
-// Agreement within float rounding: relative 1e-4 of the larger magnitude, or 1e-5 near 0.
-bool near(float a, float b) {
-  if (!std::isfinite(a) || !std::isfinite(b)) return a == b;
-  return std::fabs(a - b) <= 1e-4f * std::max(std::fabs(a), std::fabs(b)) + 1e-5f;
-}
-bool near(const glm::vec3& a, const glm::vec3& b) { return near(a.x, b.x) && near(a.y, b.y) && near(a.z, b.z); }
-bool near(const std::optional<float>& a, const std::optional<float>& b) {
-  return a.has_value() == b.has_value() && (!a || near(*a, *b));
-}
-bool near(const std::optional<TriangleHit>& a, const std::optional<TriangleHit>& b) {
-  return a.has_value() == b.has_value() &&
-         (!a || (near(a->t_hit, b->t_hit) && near(a->barycentric_b1, b->barycentric_b1) &&
-                 near(a->barycentric_b2, b->barycentric_b2)));
-}
-
-// Your function's answer, or nullopt with `not_written` set when it is a stub.
-template <typename Call>
-auto yours(const Call& call, bool& not_written) -> std::optional<decltype(call())> {
-  try {
-    return call();
-  } catch (const NotImplemented&) {
-    not_written = true;
-    return std::nullopt;
-  }
-}
-
-}  // namespace
+using namespace trace_text;
 
 int PixelTrace::first_disagreement() const {
   for (std::size_t i = 0; i < steps.size(); ++i)
@@ -67,14 +21,25 @@ int PixelTrace::first_disagreement() const {
   return -1;
 }
 
-PixelTrace trace_pixel(const Scene& scene, int x, int y, glm::vec2 position_in_pixel, const TracingFunctions& contract) {
+PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& settings,
+                       const TracingFunctions& contract) {
   const Camera& camera = scene.camera;
   if (x < 0 || y < 0 || x >= camera.width || y >= camera.height)
     throw std::invalid_argument("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
                                 std::to_string(camera.width) + "x" + std::to_string(camera.height) + " image");
+  if (settings.sample < 0 || settings.sample >= settings.samples_per_pixel)
+    throw std::invalid_argument("sample " + std::to_string(settings.sample) + " is outside the pixel's " +
+                                std::to_string(settings.samples_per_pixel) + " (from 0 to " +
+                                std::to_string(settings.samples_per_pixel - 1) + ": --spp sets how many)");
   PixelTrace trace;
   trace.x = x;
   trace.y = y;
+  trace.settings = settings;
+  // The sample's random numbers, as the renderer draws them (render.cpp): the point in the pixel
+  // first, then the integrator's.
+  Sampler sampler(settings.samples_per_pixel, settings.seed);
+  sampler.start_pixel_sample(x, y, settings.sample);
+  const glm::vec2 position_in_pixel = sampler.get_pixel_2d();
   trace.position_in_pixel = position_in_pixel;
 
   // Stage 01: the camera ray.
@@ -156,20 +121,31 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, glm::vec2 position_in_p
                     closest_text(closest_contract)};
   closest.agrees = closest_yours.what == closest_contract.what && near(closest_yours.t, closest_contract.t);
   trace.steps.push_back(closest);
+  if (settings.integrator == IntegratorKind::DirectLight || settings.integrator == IntegratorKind::Path)
+    trace_monte_carlo(scene, ray, sampler, contract, trace);
   return trace;
 }
 
 void print_trace(std::ostream& out, const std::string& scene_path, const PixelTrace& trace) {
-  out << "raylab trace " << scene_path << ": pixel (" << trace.x << ", " << trace.y << "), through "
-      << text(trace.position_in_pixel) << " in the pixel\n"
-      << "Each call of your stage functions along this pixel's camera ray, beside what the contract gives for the\n"
-      << "same inputs (the kit's own exact versions). The sphere and triangle tests use the contract's camera ray.\n\n";
+  const TraceSettings& settings = trace.settings;
+  const bool monte_carlo =
+      settings.integrator == IntegratorKind::DirectLight || settings.integrator == IntegratorKind::Path;
+  out << "raylab trace " << scene_path << ": pixel (" << trace.x << ", " << trace.y << "), sample " << settings.sample
+      << " of " << settings.samples_per_pixel << " (seed " << settings.seed << "), through "
+      << text(trace.position_in_pixel) << " in the pixel, integrator " << integrator_name(settings.integrator) << "\n"
+      << "Each call of your stage functions along this sample's " << (monte_carlo ? "path" : "camera ray")
+      << ", beside what the contract gives for the\n"
+      << "same inputs and the same random numbers (the kit's own exact versions). The sphere and triangle tests use\n"
+      << "the contract's camera ray.\n\n";
+  if (settings.integrator == IntegratorKind::PathMis)
+    out << "(The mis integrator's path is not traced yet: only its camera ray.)\n\n";
   const int first = trace.first_disagreement();
   for (std::size_t i = 0; i < trace.steps.size(); ++i) {
     const TraceStep& step = trace.steps[i];
     out << "  " << i + 1 << ". " << (step.stage.empty() ? "" : "stage " + step.stage + "  ") << step.call << "\n"
         << "       yours     " << step.yours << "\n"
         << "       contract  " << step.expected << "\n";
+    if (!step.note.empty()) out << "       note      " << step.note << "\n";
     if (static_cast<int>(i) == first) {
       out << "       ^ the first disagreement";
       if (!step.function.empty()) {
@@ -188,8 +164,9 @@ void print_trace(std::ostream& out, const std::string& scene_path, const PixelTr
         << count(trace.untouched_triangles, "triangle") << " that neither your tests nor the contract's hit (or a\n"
         << "  stub's calls after its first).\n";
   out << "\n"
-      << (first < 0 ? "Every call agrees with the contract along this ray.\n"
-                    : "Start at the first disagreement: the steps after it may differ only because of it.\n");
+      << (first < 0
+              ? std::string("Every call agrees with the contract along this ") + (monte_carlo ? "path" : "ray") + ".\n"
+              : "Start at the first disagreement: the steps after it may differ only because of it.\n");
 }
 
 }  // namespace raylab

@@ -220,6 +220,9 @@ class SceneGeometry {
   const void* the_one_reference_tree_ = nullptr;  // meshes_.front().reference_tree, or nullptr
   TriangleColumns the_one_tree_columns_;           // of meshes_.front().columns
   std::optional<BvhHit> traverse_the_4_wide_tree(const Ray& ray, bool any_hit, TriangleHit* closest_hit) const;
+  // intersect() and occluded() while a trace records (raylab/trace_recorder.h).
+  std::optional<SurfaceHit> intersect_recorded(const Ray& ray) const;
+  bool occluded_recorded(const Ray& ray) const;
   // What shading needs of a hit on triangles_[triangle] with the test's details, written into
   // `hit` (a SurfaceHit as constructed: no texture coordinates).
   void fill_triangle_surface_hit(SurfaceHit& hit, std::uint32_t triangle, const TriangleHit& details,

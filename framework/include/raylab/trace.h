@@ -1,34 +1,66 @@
-// One pixel traced step by step (`raylab trace`): each call of your stage functions along the
-// pixel's camera ray, its inputs and result beside the result the contract gives for the same
-// inputs, from the kit's own exact versions (raylab/testkit/exact_tracing.h, which the student
-// release has). The first call that disagrees is the place to look.
-//   What is traced today: the camera ray (stage 01), and along the contract's camera ray every
-// sphere and triangle test (stages 02 and 03) that your code or the contract hits, and the
-// closest hit. Bounces, trees and the Monte Carlo stages are not traced yet.
+// One pixel sample traced step by step (`raylab trace`): each call of your stage functions along
+// the sample's path, its inputs and result beside the result the contract gives for the same
+// inputs and the same random numbers, from the kit's own exact versions
+// (raylab/testkit/exact_tracing.h, which the student release has). The first call that disagrees
+// is the place to look.
+//   What is traced:
+//   - the camera ray (stage 01), and along the contract's camera ray every sphere and triangle
+//     test (stages 02 and 03) that your code or the contract hits, and the closest hit;
+//   - with --integrator direct or path (trace_monte_carlo.cpp): the path your code took, vertex
+//     by vertex: the closest hit of each bounce ray, lambertian_f, area_pdf_to_solid_angle and
+//     estimate_direct_light (stage 08) at each diffuse surface, each bounce's direction, density
+//     (stage 07) and Russian roulette, and path_radiance's value (stage 09) against the value
+//     the contract's rules give for the same path.
+//   Not traced: the trees' nodes (stages 04-05), Whitted's bounces, and the mis integrator's
+// vertices (stage 09b).
 #pragma once
 
 #include "raylab/geometry.h"
+#include "raylab/integrator.h"
 #include "raylab/scene.h"
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace raylab {
 
 struct TraceStep {
+  TraceStep(std::string stage_, std::string function_, std::string call_, std::string yours_, std::string expected_,
+            std::string note_ = "", bool agrees_ = true)
+      : stage(std::move(stage_)),
+        function(std::move(function_)),
+        call(std::move(call_)),
+        yours(std::move(yours_)),
+        expected(std::move(expected_)),
+        note(std::move(note_)),
+        agrees(agrees_) {}
   std::string stage;     // "01_camera_rays"
   std::string function;  // "generate_camera_ray"
   std::string call;      // the call with its arguments, as C++ writes it
   std::string yours;     // what your function returned ("not written yet" for a stub)
   std::string expected;  // what the contract gives
+  std::string note;      // what the difference means, or what else happened at this step
   bool agrees = true;
+};
+
+// Which sample of the pixel, and the render settings it is taken with (raylab render's).
+struct TraceSettings {
+  IntegratorKind integrator = IntegratorKind::Whitted;
+  int samples_per_pixel = 1;
+  int sample = 0;  // 0 .. samples_per_pixel - 1
+  std::uint64_t seed = 0;
+  int max_depth = 5;
+  RussianRoulette roulette;
 };
 
 struct PixelTrace {
   int x = 0, y = 0;
+  TraceSettings settings;
   glm::vec2 position_in_pixel{0.5f};
   std::vector<TraceStep> steps;
   // Not listed: missed by yours and the contract alike, or a stub's calls after its first.
@@ -37,10 +69,16 @@ struct PixelTrace {
   int first_disagreement() const;
 };
 
-// Traces pixel (x, y) of the scene's camera, through `position_in_pixel`, with the stage functions
+// Traces sample settings.sample of pixel (x, y) of the scene's camera with the stage functions
 // this program links, against `contract` (every function set). Throws std::invalid_argument for a
-// pixel outside the image.
-PixelTrace trace_pixel(const Scene& scene, int x, int y, glm::vec2 position_in_pixel, const TracingFunctions& contract);
+// pixel outside the image or a sample outside [0, samples_per_pixel).
+PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& settings,
+                       const TracingFunctions& contract);
+
+// The Monte Carlo part (trace_monte_carlo.cpp): the steps of the sample's path, from the
+// `sampler` positioned after the camera ray's numbers, appended to `trace`.
+void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampler, const TracingFunctions& contract,
+                       PixelTrace& trace);
 
 // The trace as the terminal shows it: every step, the first disagreement marked with its stage and
 // function, and what to do next.

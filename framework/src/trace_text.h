@@ -1,0 +1,69 @@
+// raylab trace's helpers (trace.cpp, trace_monte_carlo.cpp): values as the
+// trace prints them, agreement within rounding, and a stage call that may be a
+// stub.
+#pragma once
+
+#include "raylab/error.h"
+#include "raylab/ray.h"
+#include "raylab/stages/03_triangle.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <optional>
+#include <sstream>
+#include <string>
+
+namespace raylab::trace_text {
+
+inline std::string text(double v) {
+  std::ostringstream out;
+  out << std::setprecision(7) << v;
+  return out.str();
+}
+inline std::string text(const glm::vec3& v) { return "(" + text(v.x) + ", " + text(v.y) + ", " + text(v.z) + ")"; }
+inline std::string text(const glm::dvec3& v) { return "(" + text(v.x) + ", " + text(v.y) + ", " + text(v.z) + ")"; }
+inline std::string text(const glm::vec2& v) { return "(" + text(v.x) + ", " + text(v.y) + ")"; }
+inline std::string text(const Ray& ray) { return "origin " + text(ray.origin) + "  direction " + text(ray.direction); }
+inline std::string text(const std::optional<float>& t) { return t ? "hit at t = " + text(*t) : "no hit"; }
+inline std::string text(const std::optional<TriangleHit>& hit) {
+  return hit ? "hit at t = " + text(hit->t_hit) + ", b1 = " + text(hit->barycentric_b1) +
+                   ", b2 = " + text(hit->barycentric_b2)
+             : "no hit";
+}
+
+// Agreement within float rounding: relative `relative` of the larger magnitude,
+// or 1e-5 near 0.
+inline bool near(double a, double b, double relative = 1e-4) {
+  if (!std::isfinite(a) || !std::isfinite(b)) return a == b;
+  return std::fabs(a - b) <= relative * std::max(std::fabs(a), std::fabs(b)) + 1e-5;
+}
+inline bool near(const glm::vec3& a, const glm::vec3& b, double relative = 1e-4) {
+  return near(a.x, b.x, relative) && near(a.y, b.y, relative) && near(a.z, b.z, relative);
+}
+inline bool near(const glm::dvec3& a, const glm::dvec3& b, double relative = 1e-4) {
+  return near(a.x, b.x, relative) && near(a.y, b.y, relative) && near(a.z, b.z, relative);
+}
+inline bool near(const std::optional<float>& a, const std::optional<float>& b) {
+  return a.has_value() == b.has_value() && (!a || near(*a, *b));
+}
+inline bool near(const std::optional<TriangleHit>& a, const std::optional<TriangleHit>& b) {
+  return a.has_value() == b.has_value() &&
+         (!a || (near(a->t_hit, b->t_hit) && near(a->barycentric_b1, b->barycentric_b1) &&
+                 near(a->barycentric_b2, b->barycentric_b2)));
+}
+
+// Your function's answer, or nullopt with `not_written` set when it is a stub.
+template <typename Call>
+auto yours(const Call& call, bool& not_written) -> std::optional<decltype(call())> {
+  try {
+    return call();
+  } catch (const NotImplemented&) {
+    not_written = true;
+    return std::nullopt;
+  }
+}
+
+}  // namespace raylab::trace_text
