@@ -1,7 +1,6 @@
-// raylab trace (raylab/trace.h) with the reference stages: along every path it
-// follows, each of the reference's calls agrees with the contract, whatever the
-// scene, integrator, roulette or sample; and recording never outlives the
-// trace.
+// raylab trace (raylab/trace.h) with the reference stages: along every path it follows, each of the
+// reference's calls agrees with the contract, whatever the scene, integrator, roulette or sample;
+// and recording never outlives the trace.
 #include "raylab/scene_loader.h"
 #include "raylab/testkit/exact_tracing.h"
 #include "raylab/trace.h"
@@ -45,8 +44,7 @@ TEST(Trace, TheReferenceAgreesAlongEveryPath) {
           }
   }
   EXPECT_EQ(paths, 5 * 2 * 3 * 4 * 4);
-  // The paths go on past their first surface (the trace follows bounces, not
-  // only camera hits).
+  // The paths go on past their first surface (the trace follows bounces, not only camera hits).
   EXPECT_GT(surfaces_after_the_first, 100);
 }
 

@@ -12,10 +12,12 @@
 #include "messages.h"
 
 #include "raylab/error.h"
+#include "raylab/trace.h"
 
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -107,6 +109,11 @@ struct ImageComparison {
   Message yours_label{MessageId::report_yours};
   Message reference_label{MessageId::report_reference};
   Message difference_label{MessageId::report_difference};
+  // A failing picture's pixel that differs most, traced through the stage code
+  // (stage_image.h: trace_stage_image_pixel), and the command that shows it on the student's
+  // machine; nullopt where there is none.
+  std::optional<PixelTrace> worst_pixel{};
+  std::string trace_command{};
 };
 void add_image(const ImageComparison& images);
 

@@ -1,5 +1,7 @@
 #include "report_html.h"
 
+#include "raylab/stage_table.h"
+
 #include <cctype>
 #include <filesystem>
 #include <regex>
@@ -66,6 +68,14 @@ pre { white-space: pre-wrap; overflow-wrap: anywhere; font-size: 14px; line-heig
       padding: 8px 10px; border-radius: 4px; margin: 6px 0; }
 .hint { background: #fff8c5; border: 1px solid #d4a72c; padding: 7px 10px; border-radius: 4px; margin: 6px 0; }
 .note { color: var(--muted); font-size: .93rem; margin: 4px 0; }
+details.trace { margin: 10px 0; }
+details.trace summary { cursor: pointer; font-weight: 600; color: inherit; }
+table.trace { border-collapse: collapse; font-family: ui-monospace, monospace; font-size: .82rem; margin: 6px 0; }
+table.trace th, table.trace td { text-align: left; vertical-align: top; padding: 3px 8px;
+  border-bottom: 1px solid var(--line); overflow-wrap: anywhere; }
+table.trace tr.agrees td { color: var(--muted); }
+table.trace tr.first td { background: #ffebe9; color: inherit; }
+table.trace .mark { color: #cf222e; font-weight: 600; }
 .row { display: flex; flex-wrap: wrap; gap: 14px; margin: 10px 0 0; }
 .row figure { margin: 0; }
 .row img { display: block; max-width: 100%; outline: 1px solid var(--line); }
@@ -211,6 +221,44 @@ std::string figure(const std::string& file, const std::string& caption) {
          caption + "</figcaption></figure>";
 }
 
+// A failing picture's pixel traced through the stage code (raylab/trace.h): one row per step, the
+// first disagreement marked with its function and file. Every text is the stage server's, escaped.
+std::string trace_html(const PixelTrace& trace, const std::string& command, Language language) {
+  std::string html = "<details class=\"trace\" open><summary>" +
+                     escape_html(text_of({MessageId::report_trace_heading,
+                                          {{"x", std::to_string(trace.x)}, {"y", std::to_string(trace.y)}}},
+                                         language)) +
+                     "</summary>\n<table class=\"trace\"><thead><tr><th>#</th><th>" +
+                     escape_html(text_of(MessageId::report_trace_call, language)) + "</th><th>" +
+                     escape_html(text_of(MessageId::report_yours, language)) + "</th><th>" +
+                     escape_html(text_of(MessageId::report_trace_contract, language)) + "</th></tr></thead><tbody>\n";
+  const int first = trace.first_disagreement();
+  for (std::size_t i = 0; i < trace.steps.size(); ++i) {
+    const TraceStep& step = trace.steps[i];
+    const bool is_first = static_cast<int>(i) == first;
+    std::string call = escape_html((step.stage.empty() ? "" : step.stage + "  ") + step.call);
+    if (!step.note.empty()) call += "<br>" + escape_html(step.note);
+    if (is_first) {
+      const StageDescription* stage = find_stage_description(step.stage);
+      const std::string mark =
+          step.function.empty()
+              ? text_of(MessageId::report_trace_first, language)
+              : text_of({MessageId::report_trace_first_at,
+                         {{"function", step.function},
+                          {"file", stage && !stage->files.empty() ? "assignments/" + std::string(stage->files.front())
+                                                                  : step.stage}}},
+                        language);
+      call += "<br><span class=\"mark\">" + escape_html(mark) + "</span>";
+    }
+    html += std::string("<tr class=\"") + (is_first ? "first" : step.agrees ? "agrees" : "differs") + "\"><td>" +
+            std::to_string(i + 1) + "</td><td>" + call + "</td><td>" + escape_html(step.yours) + "</td><td>" +
+            escape_html(step.expected) + "</td></tr>\n";
+  }
+  html += "</tbody></table>\n<p class=\"note\">" +
+          escape_html(text_of({MessageId::report_trace_command, {{"command", command}}}, language)) + "</p></details>\n";
+  return html;
+}
+
 // yours | reference | difference, then the slider: yours over the reference, cut at the line.
 std::string pictures_html(const ImageComparison& images, Language language) {
   const std::string yours = escape_html(text_of(images.yours_label, language));
@@ -228,6 +276,7 @@ std::string pictures_html(const ImageComparison& images, Language language) {
           "<div class=\"line\"></div></div>"
           "<input type=\"range\" min=\"0\" max=\"100\" step=\"0.1\" value=\"50\" aria-label=\"" + slider_text + "\">"
           "<p>" + slider_text + "</p></div>\n";
+  if (images.worst_pixel) html += trace_html(*images.worst_pixel, images.trace_command, language);
   return html;
 }
 

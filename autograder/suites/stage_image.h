@@ -3,6 +3,7 @@
 #pragma once
 
 #include "raylab/image.h"
+#include "raylab/trace.h"
 
 #include <string>
 
@@ -17,5 +18,15 @@ constexpr int kImageWidth = 320, kImageHeight = 240;
 //   spheres         the scene's spheres, its meshes left out
 //   everything      the whole scene, through whatever stages the renderer uses
 Image render_stage_image(const std::string& stage_id);
+
+// Pixel (x, y) of that picture traced through the same functions (raylab/trace.h: the stage
+// code's calls beside the contract's answers), for the report of a picture that fails. The judge
+// keeps at most kMostTracedSteps steps, each text cut at kMostTracedTextBytes: the stage server
+// runs the student's code, and what it sends is shown, never believed.
+constexpr std::size_t kMostTracedSteps = 200, kMostTracedTextBytes = 300;
+// `chinese`: the steps' words in Chinese (TraceSettings::chinese).
+PixelTrace trace_stage_image_pixel(const std::string& stage_id, int x, int y, bool chinese);
+// The command that prints the same trace on the student's machine.
+std::string stage_image_trace_command(const std::string& stage_id, int x, int y, bool chinese);
 
 }  // namespace raylab::grading

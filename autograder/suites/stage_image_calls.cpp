@@ -9,6 +9,7 @@
 #include "raylab/scene_loader.h"
 #include "raylab/stage_table.h"
 #include "raylab/stages/01_camera_rays.h"
+#include "raylab/testkit/exact_tracing.h"
 
 #include <algorithm>
 #include <cstring>
@@ -23,8 +24,17 @@ using protocol::Writer;
 
 constexpr StageCall kRenderStageImage{"render_stage_image", "rendering the stage's picture",
                                       MessageId::lost_during_stage_picture};
+constexpr StageCall kTraceStageImagePixel{"trace_stage_image_pixel", "tracing a pixel of the stage's picture",
+                                          MessageId::lost_during_stage_picture_trace};
 
 }  // namespace
+
+std::string stage_image_trace_command(const std::string& stage_id, int x, int y, bool chinese) {
+  const StageDescription* stage = find_stage_description(stage_id);
+  return std::string("build/bin/raylab trace ") + (chinese ? "--lang zh " : "") + "--width " +
+         std::to_string(kImageWidth) + " --height " + std::to_string(kImageHeight) + " --pixel " + std::to_string(x) +
+         " " + std::to_string(y) + " " + (stage ? std::string(stage->image_scene) : std::string("SCENE"));
+}
 
 #if RAYLAB_JUDGE
 Image render_stage_image(const std::string& stage_id) {
@@ -43,21 +53,50 @@ Image render_stage_image(const std::string& stage_id) {
   }, {}, reply_limit(2 * sizeof(int) + sizeof(std::uint64_t) + std::uint64_t{kImageWidth} * kImageHeight * sizeof(glm::vec3)));
 }
 
+PixelTrace trace_stage_image_pixel(const std::string& stage_id, int x, int y, bool chinese) {
+  Writer arguments;
+  arguments.put_string(stage_id);
+  arguments.put<int>(x);
+  arguments.put<int>(y);
+  arguments.put<std::uint8_t>(chinese);
+  return remote(kTraceStageImagePixel, arguments, [&](Reader& in) {
+    PixelTrace trace;
+    trace.x = x;
+    trace.y = y;
+    const auto count = in.get<std::uint32_t>();
+    const auto cut = [](const std::string& text) { return protocol::cut_text(text, kMostTracedTextBytes, " [...]"); };
+    for (std::uint32_t i = 0; i < count; ++i) {
+      std::string stage = in.get_string(), function = in.get_string(), call = in.get_string(), yours = in.get_string(),
+                  expected = in.get_string(), note = in.get_string();
+      const bool agrees = in.get<std::uint8_t>() != 0;
+      if (trace.steps.size() < kMostTracedSteps)
+        trace.steps.emplace_back(cut(stage), cut(function), cut(call), cut(yours), cut(expected), cut(note), agrees);
+    }
+    trace.untouched_spheres = in.get<int>();
+    trace.untouched_triangles = in.get<int>();
+    in.expect_end();
+    return trace;
+  }, {}, reply_limit(1u << 20));
+}
+
 #else
-Image render_stage_image(const std::string& stage_id) {
+// The scene and settings of a stage's picture (stages.json: "image").
+struct StageImageSetup {
+  Scene scene;
+  RenderSettings settings;
+};
+StageImageSetup stage_image_setup(const std::string& stage_id) {
   const StageDescription* stage = find_stage_description(stage_id);
   if (!stage || stage->image_scene.empty())
     throw std::logic_error("stages.json gives the stage " + stage_id + " no image test");
-  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + std::string(stage->image_scene));
+  StageImageSetup setup{load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + std::string(stage->image_scene)), {}};
+  Scene& scene = setup.scene;
   scene.camera.width = kImageWidth;
   scene.camera.height = kImageHeight;
-  if (stage->image_shows == "ray_directions") {
-    // Only camera rays: each pixel shows its ray's direction, (d + 1) / 2, as a colour.
-    Image image(kImageWidth, kImageHeight);
-    for (int y = 0; y < kImageHeight; ++y)
-      for (int x = 0; x < kImageWidth; ++x)
-        image.at(x, y) = 0.5f * (generate_camera_ray(scene.camera, x, y).direction + 1.0f);
-    return image;
+  if (stage->image_shows == "ray_directions") {  // only the camera rays: nothing is hit
+    scene.spheres.clear();
+    scene.meshes.clear();
+    return setup;
   }
   if (stage->image_shows == "spheres") scene.meshes.clear();
   // The picture runs this stage's own functions and the grader's for the rest: its own camera
@@ -67,13 +106,35 @@ Image render_stage_image(const std::string& stage_id) {
   const auto has_function = [&](std::string_view function) {
     return std::find(stage->functions.begin(), stage->functions.end(), function) != stage->functions.end();
   };
-  RenderSettings settings;
+  RenderSettings& settings = setup.settings;
   settings.max_depth = scene.max_depth;
   settings.tracing = grader_tracing();
   if (has_function("intersect_ray_sphere")) settings.tracing.sphere = nullptr;
   if (has_function("intersect_ray_triangle")) settings.tracing.triangle = nullptr;
   settings.tracing.keep_trees = has_function("intersect_bvh");
-  return render(scene, settings);
+  return setup;
+}
+
+Image render_stage_image(const std::string& stage_id) {
+  const StageImageSetup setup = stage_image_setup(stage_id);
+  if (find_stage_description(stage_id)->image_shows == "ray_directions") {
+    // Each pixel shows its camera ray's direction, (d + 1) / 2, as a colour.
+    Image image(kImageWidth, kImageHeight);
+    for (int y = 0; y < kImageHeight; ++y)
+      for (int x = 0; x < kImageWidth; ++x)
+        image.at(x, y) = 0.5f * (generate_camera_ray(setup.scene.camera, x, y).direction + 1.0f);
+    return image;
+  }
+  return render(setup.scene, setup.settings);
+}
+
+PixelTrace trace_stage_image_pixel(const std::string& stage_id, int x, int y, bool chinese) {
+  const StageImageSetup setup = stage_image_setup(stage_id);
+  TraceSettings settings;
+  settings.chinese = chinese;
+  settings.max_depth = setup.settings.max_depth;
+  settings.yours = setup.settings.tracing;
+  return trace_pixel(setup.scene, x, y, settings, testkit::exact_tracing());
 }
 
 namespace {
@@ -86,6 +147,23 @@ void serve_render_stage_image(Reader& in, Writer& out) {
 }
 
 const bool kServed = serve(kRenderStageImage, serve_render_stage_image);
+
+void serve_trace_stage_image_pixel(Reader& in, Writer& out) {
+  const std::string stage_id = in.get_string();
+  const int x = in.get<int>(), y = in.get<int>();
+  const bool chinese = in.get<std::uint8_t>() != 0;
+  const PixelTrace trace = trace_stage_image_pixel(stage_id, x, y, chinese);
+  out.put<std::uint32_t>(static_cast<std::uint32_t>(trace.steps.size()));
+  for (const TraceStep& step : trace.steps) {
+    for (const std::string* text : {&step.stage, &step.function, &step.call, &step.yours, &step.expected, &step.note})
+      out.put_string(*text);
+    out.put<std::uint8_t>(step.agrees);
+  }
+  out.put<int>(trace.untouched_spheres);
+  out.put<int>(trace.untouched_triangles);
+}
+
+const bool kTraceServed = serve(kTraceStageImagePixel, serve_trace_stage_image_pixel);
 
 }  // namespace
 #endif

@@ -129,6 +129,42 @@ std::string seed_shown(const nlohmann::json& case_file) {
 
 std::string reference_image_name(const std::string& stage_id) { return stage_id + ".png"; }
 
+namespace {
+
+// A failing picture's pixel that differs most, traced through the stage code, on the pictures and
+// as a note; nothing when the trace cannot be had (its stage server lost: the picture's failure
+// stands alone).
+void add_worst_pixel_trace(ImageComparison& images, const std::string& stage_id, const ImageDifference& difference) {
+  const int x = difference.max_x, y = difference.max_y;
+  const bool chinese = language() == Language::Chinese;
+  try {
+    images.worst_pixel = trace_stage_image_pixel(stage_id, x, y, chinese);
+  } catch (const std::exception&) {
+    return;
+  }
+  images.trace_command = stage_image_trace_command(stage_id, x, y, chinese);
+  const PixelTrace& trace = *images.worst_pixel;
+  std::vector<MessageArg> args{{"x", std::to_string(x)}, {"y", std::to_string(y)}, {"command", images.trace_command}};
+  const int first = trace.first_disagreement();
+  if (first < 0) {
+    add_note({MessageId::note_trace_agrees, args});
+    return;
+  }
+  const TraceStep& step = trace.steps[static_cast<std::size_t>(first)];
+  args.insert(args.end(), {{"step", std::to_string(first + 1)}, {"yours", step.yours}, {"expected", step.expected}});
+  if (step.function.empty()) {
+    args.emplace_back("call", step.call);
+    add_note({MessageId::note_trace_disagrees_at_step, args});
+    return;
+  }
+  const StageDescription* stage = find_stage_description(step.stage);
+  args.emplace_back("function", step.function);
+  args.emplace_back("file", stage && !stage->files.empty() ? "assignments/" + std::string(stage->files.front()) : step.stage);
+  add_note({MessageId::note_trace_disagrees, args});
+}
+
+}  // namespace
+
 void expect_image_matches_reference(const std::string& stage_id, float channel_threshold, double max_fraction) {
   const std::string directory = output_directory();
   std::filesystem::create_directories(directory);
@@ -149,7 +185,9 @@ void expect_image_matches_reference(const std::string& stage_id, float channel_t
   for (int y = 0; y < heat_map.height(); ++y)
     for (int x = 0; x < heat_map.width(); ++x) heat_map.at(x, y) = comparison.at(2 * yours.width() + x, y);
   write_image(heat_map, directory + "/" + difference_name);
-  add_image({stage_id + "-yours.png", reference_name, difference_name});
+  ImageComparison images{stage_id + "-yours.png", reference_name, difference_name};
+  if (difference.fraction_over_threshold > max_fraction) add_worst_pixel_trace(images, stage_id, difference);
+  add_image(images);
 
   add_note({MessageId::note_image,
             {{"width", std::to_string(kImageWidth)}, {"height", std::to_string(kImageHeight)},

@@ -167,12 +167,14 @@ int run_render(const RenderOptions& options) {
 struct TraceOptions {
   std::string scene_path;
   std::vector<int> pixel;
+  int width = 0, height = 0;  // 0: the scene's
   int sample = 0;
   int samples_per_pixel = 1;
   std::uint64_t seed = 0;
   int max_depth = -1;  // -1: the scene's
   std::string roulette = "1";
   std::string integrator;  // empty: the scene's
+  std::string language = "en";
 };
 
 int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
@@ -182,7 +184,9 @@ int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
     throw UsageError("--sample " + std::to_string(options.sample) + ": the pixel has " +
                      std::to_string(options.samples_per_pixel) + " sample" +
                      (options.samples_per_pixel == 1 ? "" : "s") + " (--spp), numbered from 0");
-  const Scene scene = load_scene(options.scene_path);
+  Scene scene = load_scene(options.scene_path);
+  if (options.width > 0) scene.camera.width = options.width;
+  if (options.height > 0) scene.camera.height = options.height;
   TraceSettings settings;
   settings.integrator = integrator_of(options.integrator, scene);
   settings.samples_per_pixel = options.samples_per_pixel;
@@ -190,6 +194,7 @@ int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
   settings.seed = options.seed;
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.roulette = roulette;
+  settings.chinese = options.language == "zh";
   const PixelTrace trace = trace_pixel(scene, options.pixel[0], options.pixel[1], settings, contract);
   print_trace(std::cout, options.scene_path, trace);
   return kExitOk;
@@ -256,6 +261,10 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
         ->required()
         ->expected(2)
         ->check(CLI::NonNegativeNumber);
+    trace_command->add_option("--width", trace_options.width, "As raylab render's (default: the scene's)")
+        ->check(CLI::Range(1, 16384));
+    trace_command->add_option("--height", trace_options.height, "As raylab render's (default: the scene's)")
+        ->check(CLI::Range(1, 16384));
     trace_command->add_option("--sample", trace_options.sample, "Which of the pixel's samples, from 0 (default 0)")
         ->check(CLI::NonNegativeNumber);
     trace_command
@@ -269,6 +278,10 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
         ->check(CLI::Range(0, 64));
     trace_command->add_option("--roulette", trace_options.roulette, "As raylab render's (default 1: no roulette)");
     trace_command->add_option("--seed", trace_options.seed, "As raylab render's (default 0)");
+    trace_command
+        ->add_option("--lang", trace_options.language,
+                     "en or zh: the words of the trace (default en; the Monte Carlo steps are English)")
+        ->check(CLI::IsMember({"en", "zh"}));
   }
 
   try {

@@ -42,15 +42,35 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
   const glm::vec2 position_in_pixel = sampler.get_pixel_2d();
   trace.position_in_pixel = position_in_pixel;
 
+  // The steps' words in the trace's language.
+  const auto words = [&](const char* english, const char* chinese) {
+    return std::string(settings.chinese ? chinese : english);
+  };
+  const std::string not_written = words("not written yet", "尚未编写");
+  const auto ray_text = [&](const Ray& r) {
+    return words("origin ", "起点 ") + text(r.origin) + words("  direction ", "  方向 ") + text(r.direction);
+  };
+  const auto t_text = [&](const std::optional<float>& t) {
+    return t ? words("hit at t = ", "在 t = ") + text(*t) + words("", " 处击中") : words("no hit", "没有击中");
+  };
+  const auto triangle_text = [&](const std::optional<TriangleHit>& hit) {
+    return hit ? t_text(hit->t_hit) + words(", b1 = ", "，b1 = ") + text(hit->barycentric_b1) +
+                     words(", b2 = ", "，b2 = ") + text(hit->barycentric_b2)
+               : words("no hit", "没有击中");
+  };
+  const auto your_camera_ray = settings.yours.camera_ray ? settings.yours.camera_ray : generate_camera_ray;
+  const auto your_sphere_test = settings.yours.sphere ? settings.yours.sphere : intersect_ray_sphere;
+  const auto your_triangle_test = settings.yours.triangle ? settings.yours.triangle : intersect_ray_triangle;
+
   // Stage 01: the camera ray.
   const Ray ray = contract.camera_ray(camera, x, y, position_in_pixel);
   {
     bool stub = false;
-    const std::optional<Ray> got = yours([&] { return generate_camera_ray(camera, x, y, position_in_pixel); }, stub);
+    const std::optional<Ray> got = yours([&] { return your_camera_ray(camera, x, y, position_in_pixel); }, stub);
     TraceStep step{"01_camera_rays", "generate_camera_ray",
                    "generate_camera_ray(camera, " + std::to_string(x) + ", " + std::to_string(y) + ", " +
                        text(position_in_pixel) + ")",
-                   stub ? "not written yet" : text(*got), text(ray)};
+                   stub ? not_written : ray_text(*got), ray_text(ray)};
     step.agrees = !stub && near(got->origin, ray.origin) && near(got->direction, ray.direction);
     trace.steps.push_back(step);
   }
@@ -69,9 +89,9 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
     const Sphere& sphere = scene.spheres[i];
     bool stub = false;
     const std::optional<std::optional<float>> got =
-        yours([&] { return intersect_ray_sphere(ray, sphere.center, sphere.radius); }, stub);
+        yours([&] { return your_sphere_test(ray, sphere.center, sphere.radius); }, stub);
     const std::optional<float> expected = contract.sphere(ray, sphere.center, sphere.radius);
-    const std::string what = "sphere " + std::to_string(i);
+    const std::string what = words("sphere ", "球 ") + std::to_string(i);
     if (got) record(closest_yours, *got, what);
     record(closest_contract, expected, what);
     if ((!stub && !*got && !expected) || (stub && sphere_stub_shown)) {
@@ -80,9 +100,9 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
     }
     sphere_stub_shown = sphere_stub_shown || stub;
     TraceStep step{"02_sphere", "intersect_ray_sphere",
-                   "intersect_ray_sphere(ray, center " + text(sphere.center) + ", radius " + text(sphere.radius) + ")   [" +
-                       what + "]",
-                   stub ? "not written yet" : text(*got), text(expected)};
+                   "intersect_ray_sphere(ray, " + words("center ", "球心 ") + text(sphere.center) + ", " +
+                       words("radius ", "半径 ") + text(sphere.radius) + ")   [" + what + "]",
+                   stub ? not_written : t_text(*got), t_text(expected)};
     step.agrees = !stub && near(*got, expected);
     trace.steps.push_back(step);
   }
@@ -94,10 +114,11 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       const glm::vec3& p2 = mesh.positions[mesh.indices[3 * k + 2]];
       bool stub = false;
       const std::optional<std::optional<TriangleHit>> got =
-          yours([&] { return intersect_ray_triangle(ray, p0, p1, p2); }, stub);
+          yours([&] { return your_triangle_test(ray, p0, p1, p2); }, stub);
       const std::optional<TriangleHit> expected = contract.triangle(ray, p0, p1, p2);
-      const std::string what = "triangle " + std::to_string(k) + " of mesh " +
-                               (mesh.name.empty() ? std::to_string(m) : "\"" + mesh.name + "\"");
+      const std::string mesh_name = mesh.name.empty() ? std::to_string(m) : "\"" + mesh.name + "\"";
+      const std::string what = settings.chinese ? "网格 " + mesh_name + " 的三角形 " + std::to_string(k)
+                                                : "triangle " + std::to_string(k) + " of mesh " + mesh_name;
       if (got && *got) record(closest_yours, (*got)->t_hit, what);
       if (expected) record(closest_contract, expected->t_hit, what);
       if ((!stub && !*got && !expected) || (stub && triangle_stub_shown)) {
@@ -107,20 +128,45 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       triangle_stub_shown = triangle_stub_shown || stub;
       TraceStep step{"03_triangle", "intersect_ray_triangle",
                      "intersect_ray_triangle(ray, " + text(p0) + ", " + text(p1) + ", " + text(p2) + ")   [" + what + "]",
-                     stub ? "not written yet" : text(*got), text(expected)};
+                     stub ? not_written : triangle_text(*got), triangle_text(expected)};
       step.agrees = !stub && near(*got, expected);
       trace.steps.push_back(step);
     }
   }
 
   // The closest hit, as the renderer picks it from the answers above.
-  const auto closest_text = [](const Closest& closest) {
-    return closest.what.empty() ? std::string("nothing: the background") : closest.what + " at t = " + text(closest.t);
+  const std::string background = words("nothing: the background", "什么也没有击中：背景");
+  const auto closest_text = [&](const Closest& closest) {
+    return closest.what.empty() ? background : closest.what + words(" at t = ", "，t = ") + text(closest.t);
   };
-  TraceStep closest{"", "", "the closest hit along the camera ray", closest_text(closest_yours),
-                    closest_text(closest_contract)};
+  TraceStep closest{"", "", words("the closest hit along the camera ray", "沿相机光线的最近交点"),
+                    closest_text(closest_yours), closest_text(closest_contract)};
   closest.agrees = closest_yours.what == closest_contract.what && near(closest_yours.t, closest_contract.t);
   trace.steps.push_back(closest);
+
+  // The closest hit through your trees (stage 04's box test, stage 05's build and traversal),
+  // where the renderer uses them: the same as the tests above give, or a hit the trees lost.
+  try {
+    const SceneGeometry geometry(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, settings.yours);
+    if (geometry.bvh_count() > 0) {
+      const std::optional<SurfaceHit> hit = geometry.intersect(ray);
+      const bool contract_hits = !closest_contract.what.empty();
+      const auto hit_text = [&](bool hits, float t) { return hits ? "t = " + text(t) : background; };
+      TraceStep step{"", "",
+                     words("the closest hit through your trees (intersect_bvh on your build_bvh's tree)",
+                           "经过你的树的最近交点（在你的 build_bvh 建的树上调用 intersect_bvh）"),
+                     hit_text(hit.has_value(), hit ? hit->t_hit : 0.0f), hit_text(contract_hits, closest_contract.t)};
+      step.agrees = hit.has_value() == contract_hits && (!hit || near(hit->t_hit, closest_contract.t));
+      if (!step.agrees)
+        step.note = words("the tests above find the contract's hit, the trees another: look at stage 05 (build_bvh, "
+                          "intersect_bvh) and stage 04 (intersect_ray_box)",
+                          "上面的测试找到了契约的交点，树却找到了另一个：请检查阶段 05（build_bvh、intersect_bvh）和阶段 04"
+                          "（intersect_ray_box）");
+      trace.steps.push_back(step);
+    }
+  } catch (const NotImplemented&) {
+    // A tree's stub: the renderer tests every primitive then, as the steps above do.
+  }
   if (settings.integrator == IntegratorKind::DirectLight || settings.integrator == IntegratorKind::Path)
     trace_monte_carlo(scene, ray, sampler, contract, trace);
   return trace;
@@ -128,45 +174,71 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
 
 void print_trace(std::ostream& out, const std::string& scene_path, const PixelTrace& trace) {
   const TraceSettings& settings = trace.settings;
+  const bool zh = settings.chinese;
   const bool monte_carlo =
       settings.integrator == IntegratorKind::DirectLight || settings.integrator == IntegratorKind::Path;
-  out << "raylab trace " << scene_path << ": pixel (" << trace.x << ", " << trace.y << "), sample " << settings.sample
-      << " of " << settings.samples_per_pixel << " (seed " << settings.seed << "), through "
-      << text(trace.position_in_pixel) << " in the pixel, integrator " << integrator_name(settings.integrator) << "\n"
-      << "Each call of your stage functions along this sample's " << (monte_carlo ? "path" : "camera ray")
-      << ", beside what the contract gives for the\n"
-      << "same inputs and the same random numbers (the kit's own exact versions). The sphere and triangle tests use\n"
-      << "the contract's camera ray.\n\n";
+  const std::string pixel = "(" + std::to_string(trace.x) + ", " + std::to_string(trace.y) + ")";
+  const std::string sample = std::to_string(settings.sample), count_of_samples = std::to_string(settings.samples_per_pixel);
+  if (zh)
+    out << "raylab trace " << scene_path << "：像素 " << pixel << "，" << count_of_samples << " 个样本中的第 " << sample
+        << " 个（种子 " << settings.seed << "），穿过像素中的 " << text(trace.position_in_pixel) << "，积分器 "
+        << integrator_name(settings.integrator) << "\n"
+        << "沿这个样本的" << (monte_carlo ? "路径" : "相机光线")
+        << "列出你的阶段函数的每次调用，旁边是契约对同样的输入和同样的随机数给出的结果（本套件自己的精确版本）。\n"
+        << "球和三角形的求交测试使用契约的相机光线。\n\n";
+  else
+    out << "raylab trace " << scene_path << ": pixel " << pixel << ", sample " << sample << " of " << count_of_samples
+        << " (seed " << settings.seed << "), through " << text(trace.position_in_pixel)
+        << " in the pixel, integrator " << integrator_name(settings.integrator) << "\n"
+        << "Each call of your stage functions along this sample's " << (monte_carlo ? "path" : "camera ray")
+        << ", beside what the contract gives for the\n"
+        << "same inputs and the same random numbers (the kit's own exact versions). The sphere and triangle tests use\n"
+        << "the contract's camera ray.\n\n";
   if (settings.integrator == IntegratorKind::PathMis)
-    out << "(The mis integrator's path is not traced yet: only its camera ray.)\n\n";
+    out << (zh ? "（mis 积分器的路径还不能跟踪：只有它的相机光线。）\n\n"
+               : "(The mis integrator's path is not traced yet: only its camera ray.)\n\n");
   const int first = trace.first_disagreement();
   for (std::size_t i = 0; i < trace.steps.size(); ++i) {
     const TraceStep& step = trace.steps[i];
-    out << "  " << i + 1 << ". " << (step.stage.empty() ? "" : "stage " + step.stage + "  ") << step.call << "\n"
-        << "       yours     " << step.yours << "\n"
-        << "       contract  " << step.expected << "\n";
-    if (!step.note.empty()) out << "       note      " << step.note << "\n";
+    out << "  " << i + 1 << ". " << (step.stage.empty() ? "" : (zh ? "阶段 " : "stage ") + step.stage + "  ")
+        << step.call << "\n"
+        << (zh ? "       你的      " : "       yours     ") << step.yours << "\n"
+        << (zh ? "       契约      " : "       contract  ") << step.expected << "\n";
+    if (!step.note.empty()) out << (zh ? "       说明      " : "       note      ") << step.note << "\n";
     if (static_cast<int>(i) == first) {
-      out << "       ^ the first disagreement";
+      out << (zh ? "       ^ 第一个不一致之处" : "       ^ the first disagreement");
       if (!step.function.empty()) {
         const StageDescription* stage = find_stage_description(step.stage);
-        out << ": your " << step.function;
-        if (stage && !stage->files.empty()) out << " (assignments/" << stage->files.front() << ")";
+        const std::string file =
+            stage && !stage->files.empty() ? "assignments/" + std::string(stage->files.front()) : std::string();
+        if (zh)
+          out << "：你的 " << step.function << (file.empty() ? "" : "（" + file + "）");
+        else
+          out << ": your " << step.function << (file.empty() ? "" : " (" + file + ")");
       }
       out << "\n";
     } else if (!step.agrees) {
-      out << "       ^ differs too\n";
+      out << (zh ? "       ^ 也不一致\n" : "       ^ differs too\n");
     }
   }
   const auto count = [](int n, const char* noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); };
-  if (trace.untouched_spheres + trace.untouched_triangles > 0)
-    out << "\n  Not listed: " << count(trace.untouched_spheres, "sphere") << " and "
-        << count(trace.untouched_triangles, "triangle") << " that neither your tests nor the contract's hit (or a\n"
-        << "  stub's calls after its first).\n";
-  out << "\n"
-      << (first < 0
-              ? std::string("Every call agrees with the contract along this ") + (monte_carlo ? "path" : "ray") + ".\n"
-              : "Start at the first disagreement: the steps after it may differ only because of it.\n");
+  if (trace.untouched_spheres + trace.untouched_triangles > 0) {
+    if (zh)
+      out << "\n  没有列出：" << trace.untouched_spheres << " 个球和 " << trace.untouched_triangles
+          << " 个三角形，你的测试和契约的测试都没有击中它们（或者是桩函数第一次之后的调用）。\n";
+    else
+      out << "\n  Not listed: " << count(trace.untouched_spheres, "sphere") << " and "
+          << count(trace.untouched_triangles, "triangle") << " that neither your tests nor the contract's hit (or a\n"
+          << "  stub's calls after its first).\n";
+  }
+  out << "\n";
+  if (zh)
+    out << (first < 0 ? std::string("沿这条") + (monte_carlo ? "路径" : "光线") + "的每个调用都与契约一致。\n"
+                      : "从第一个不一致之处开始看：它之后的步骤可能只是因为它才不同。\n");
+  else
+    out << (first < 0
+                ? std::string("Every call agrees with the contract along this ") + (monte_carlo ? "path" : "ray") + ".\n"
+                : "Start at the first disagreement: the steps after it may differ only because of it.\n");
 }
 
 }  // namespace raylab

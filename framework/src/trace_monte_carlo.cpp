@@ -1,15 +1,12 @@
-// raylab trace, the Monte Carlo part (raylab/trace.h): the path one pixel
-// sample took through your code, rebuilt from the framework calls your code
-// made (raylab/trace_recorder.h), and at each of its surfaces your stage
-// functions beside what the contract gives for the same inputs and the same
-// random numbers.
-//   Your estimate_direct_light and path_radiance are opaque, so what the
-//   contract gives for them is
-// computed from the calls they made: the light chosen (LightSet::choose), its
-// point (sample_li), the shadow ray, the bounce (bsdf_sample_f). A correct
-// function whose random numbers come in another order makes other calls, and
-// the contract follows them: only the rules are held to, never one order of the
-// random numbers.
+// raylab trace, the Monte Carlo part (raylab/trace.h): the path one pixel sample took through your
+// code, rebuilt from the framework calls your code made (raylab/trace_recorder.h), and at each of
+// its surfaces your stage functions beside what the contract gives for the same inputs and the
+// same random numbers.
+//   Your estimate_direct_light and path_radiance are opaque, so what the contract gives for them
+// is computed from the calls they made: the light chosen (LightSet::choose), its point
+// (sample_li), the shadow ray, the bounce (bsdf_sample_f). A correct function whose random numbers
+// come in another order makes other calls, and the contract follows them: only the rules are held
+// to, never one order of the random numbers.
 #include "raylab/trace.h"
 
 #include "trace_text.h"
@@ -41,8 +38,8 @@ namespace {
 constexpr double kPiInDouble = 3.14159265358979323846;
 using Kind = RecordedCall::Kind;
 
-// Composite values (a light's estimate, a path's radiance) summed in another
-// order by a correct function agree to this fraction.
+// Composite values (a light's estimate, a path's radiance) summed in another order by a correct
+// function agree to this fraction.
 constexpr double kValueTolerance = 1e-3;
 
 bool same_direction(const glm::vec3& a, const glm::vec3& b) {
@@ -75,59 +72,61 @@ const char* bsdf_name(const Bsdf& bsdf) {
   return "?";
 }
 
-// One surface of the path your code took: the ray it traced there and what your
-// geometry found, and the calls made there (after that intersect, before the
-// next surface's).
+// One surface of the path your code took: the ray it traced there and what your geometry found, and
+// the calls made there (after that intersect, up to the next ray that is no shadow ray).
 struct PathVertex {
   Ray ray;
   std::optional<SurfaceHit> hit;
   std::size_t first = 0, end = 0;        // the calls [first, end)
   const RecordedCall* bounce = nullptr;  // the first bsdf_sample_f among them
+  // The ray traced next (calls[end]) does not follow the bounce: your code sampled its own.
+  bool own_next_ray = false;
 };
 
-// The path: from the camera ray's intersect, each next surface is the first
-// intersect along the direction bsdf_sample_f gave at the last one.
+// A ray towards a light point sampled before it, among the calls [first, at): a shadow ray.
+bool is_shadow_ray(const std::vector<RecordedCall>& calls, std::size_t first, std::size_t at) {
+  for (std::size_t i = first; i < at; ++i)
+    if (calls[i].kind == Kind::LightSample && calls[i].light_sample &&
+        same_direction(calls[at].ray.direction, calls[i].light_sample->point - calls[at].ray.origin))
+      return true;
+  return false;
+}
+
+// The path: from the camera ray's intersect, each surface's calls run up to the next intersect that
+// is no shadow ray, and that intersect is the next surface when it follows the direction
+// bsdf_sample_f gave there.
 std::vector<PathVertex> path_of(const std::vector<RecordedCall>& calls, const Ray& camera_ray) {
   std::vector<PathVertex> path;
-  glm::vec3 direction = camera_ray.direction;
-  std::size_t from = 0;
-  const auto next_intersect = [&](std::size_t i) {
-    while (i < calls.size() && !(calls[i].kind == Kind::Intersect && same_direction(calls[i].ray.direction, direction)))
-      ++i;
-    return i;
-  };
-  std::size_t at = next_intersect(from);
+  std::size_t at = 0;
+  while (at < calls.size() && !(calls[at].kind == Kind::Intersect && same_direction(calls[at].ray.direction, camera_ray.direction)))
+    ++at;
   while (at < calls.size()) {
     PathVertex vertex;
     vertex.ray = calls[at].ray;
     vertex.hit = calls[at].hit;
     vertex.first = at + 1;
-    vertex.end = calls.size();
-    for (std::size_t k = vertex.first; k < calls.size(); ++k)
-      if (calls[k].kind == Kind::BsdfSample) {
-        vertex.bounce = &calls[k];
-        break;
-      }
-    const bool goes_on = vertex.hit && vertex.bounce && vertex.bounce->bsdf_sample;
-    if (goes_on) {
-      direction = vertex.bounce->bsdf_sample->wi;
-      from = static_cast<std::size_t>(vertex.bounce - calls.data()) + 1;
-      at = next_intersect(from);
-      vertex.end = at;
-    } else {
-      at = calls.size();
+    std::size_t next = vertex.first;
+    for (; next < calls.size(); ++next) {
+      if (calls[next].kind == Kind::BsdfSample && !vertex.bounce) vertex.bounce = &calls[next];
+      if (calls[next].kind == Kind::Intersect && !is_shadow_ray(calls, vertex.first, next)) break;
     }
+    vertex.end = next;
+    const bool follows_the_bounce = next < calls.size() && vertex.hit && vertex.bounce && vertex.bounce->bsdf_sample &&
+                                    same_direction(calls[next].ray.direction, vertex.bounce->bsdf_sample->wi);
+    vertex.own_next_ray = next < calls.size() && !follows_the_bounce;
     path.push_back(vertex);
+    if (!follows_the_bounce) break;
+    at = next;
   }
   return path;
 }
 
-// The light sampled among the calls [first, end): the choice, the point, your
-// shadow ray's answer.
+// The light sampled among the calls [first, end): the choice, the point, your shadow ray's answer.
 struct LightCalls {
   const RecordedCall* choice = nullptr;
   const RecordedCall* sample = nullptr;
   std::optional<bool> your_blocked;  // nullopt: your code traced no shadow ray towards the point
+  const RecordedCall* shadow = nullptr;  // that shadow ray
 };
 
 LightCalls light_calls(const std::vector<RecordedCall>& calls, std::size_t first, std::size_t end) {
@@ -138,11 +137,13 @@ LightCalls light_calls(const std::vector<RecordedCall>& calls, std::size_t first
     if (call.kind == Kind::LightSample && !found.sample) found.sample = &call;
     if (!found.sample || !found.sample->light_sample || found.your_blocked) continue;
     const LightSample& sample = *found.sample->light_sample;
-    if (call.kind == Kind::Occluded && same_direction(call.ray.direction, sample.point - call.ray.origin))
+    if (call.kind == Kind::Occluded && same_direction(call.ray.direction, sample.point - call.ray.origin)) {
       found.your_blocked = call.blocked;
+      found.shadow = &call;
+    }
     if (call.kind == Kind::Intersect && same_direction(call.ray.direction, sample.point - call.ray.origin)) {
-      // A shadow ray traced as a closest hit: blocked by a hit short of the
-      // light's point.
+      found.shadow = &call;
+      // A shadow ray traced as a closest hit: blocked by a hit short of the light's point.
       const float to_point = glm::length(sample.point - call.ray.origin);
       found.your_blocked = call.hit && call.hit->t_hit * glm::length(call.ray.direction) < to_point * (1.0f - 1e-3f);
     }
@@ -150,9 +151,8 @@ LightCalls light_calls(const std::vector<RecordedCall>& calls, std::size_t first
   return found;
 }
 
-// The contract's f for a pair of directions: stage 08's albedo / pi on wo's
-// side for a diffuse surface; the framework's (stage 10's) for a rough metal; 0
-// for mirrors and glass.
+// The contract's f for a pair of directions: stage 08's albedo / pi on wo's side for a diffuse
+// surface; the framework's (stage 10's) for a rough metal; 0 for mirrors and glass.
 glm::dvec3 contract_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, const glm::vec3& wi) {
   if (bsdf.is_specular()) return glm::dvec3(0.0);
   if (!(glm::dot(normal, wo) * glm::dot(normal, wi) > 0.0f)) return glm::dvec3(0.0);
@@ -160,8 +160,8 @@ glm::dvec3 contract_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3
   return glm::dvec3(bsdf_f(bsdf, normal, wo, wi));
 }
 
-// A sampled light point's density per steradian as the contract gives it (stage
-// 08's area_pdf_to_solid_angle of uniform area sampling), and its inputs.
+// A sampled light point's density per steradian as the contract gives it (stage 08's
+// area_pdf_to_solid_angle of uniform area sampling), and its inputs.
 struct LightDensity {
   double pdf_area = 0.0, distance = 0.0, cos_at_light = 0.0, per_steradian = 1.0;
 };
@@ -173,18 +173,30 @@ LightDensity contract_light_density(const Light& light, const LightSample& sampl
   const glm::dvec3 normal = light.kind == LightKind::Triangle
                                 ? glm::dvec3(light.normal)
                                 : glm::normalize(glm::dvec3(sample.point) - glm::dvec3(light.sphere.center));
-  // The sphere's normal points out; from inside (an enclosure) the light leaves
-  // the other side.
+  // The sphere's normal points out; from inside (an enclosure) the light leaves the other side.
   density.cos_at_light = std::fabs(glm::dot(normal, glm::dvec3(sample.direction)));
   density.per_steradian = density.pdf_area * density.distance * density.distance / density.cos_at_light;
   return density;
 }
 
-// What the contract's estimate_direct_light gives at `hit` for the light sample
-// your code drew.
+bool same_light(const Light& a, const Light& b) {
+  if (a.kind != b.kind) return false;
+  switch (a.kind) {
+    case LightKind::Point: return a.position == b.position;
+    case LightKind::Triangle: return a.p0 == b.p0 && a.p1 == b.p1 && a.p2 == b.p2;
+    case LightKind::Sphere: return a.sphere.center == b.sphere.center && a.sphere.radius == b.sphere.radius;
+  }
+  return false;
+}
+
+// What the contract's estimate_direct_light gives at `hit` for the light sample your code drew. The
+// shadow ray's answer is your geometry's where your code traced one (a different answer is your
+// geometry's disagreement, `shadow`, not the estimator's).
 struct ContractDirect {
   std::optional<glm::dvec3> value;  // nullopt: not known from your calls (`why`)
   std::string why, what;            // what: the light sample, in words
+  std::string wrong_light;          // your code sampled another light than the one it chose
+  std::optional<bool> your_blocked, contract_blocked;  // both set: the shadow ray, when your code traced one
 };
 
 ContractDirect contract_direct(const RenderContext& contract, const SurfaceHit& hit, const Bsdf& bsdf,
@@ -202,6 +214,10 @@ ContractDirect contract_direct(const RenderContext& contract, const SurfaceHit& 
   double chosen_with = 1.0;
   if (found.choice) {
     chosen_with = found.choice->choice_probability;
+    if (found.choice->light_index < contract.lights.size() &&
+        !same_light(contract.lights[found.choice->light_index], found.sample->light))
+      direct.wrong_light = "your code chose light " + std::to_string(found.choice->light_index) +
+                           " (context.lights.choose) but sampled a point on another light";
   } else if (contract.lights.size() > 1) {
     direct.why = "your code chose its light without context.lights.choose";
     return direct;
@@ -215,23 +231,56 @@ ContractDirect contract_direct(const RenderContext& contract, const SurfaceHit& 
   const LightDensity density = contract_light_density(found.sample->light, sample);
   const glm::vec3& normal = hit.geometric_normal;
   const glm::dvec3 f = contract_f(bsdf, normal, wo, sample.direction);
-  Ray shadow;  // from just off the surface to just short of the light's point
-  shadow.origin = offset_ray_origin(hit, sample.direction);
-  shadow.direction = sample.point - shadow.origin;
-  shadow.t_max = 1.0f - 1e-4f;
-  const bool blocked = f != glm::dvec3(0.0) && contract.geometry.occluded(shadow);
+  bool blocked = false;
+  if (f != glm::dvec3(0.0)) {
+    Ray shadow;  // from just off the surface to just short of the light's point
+    shadow.origin = offset_ray_origin(hit, sample.direction);
+    shadow.direction = sample.point - shadow.origin;
+    shadow.t_max = 1.0f - 1e-4f;
+    blocked = contract.geometry.occluded(shadow);
+    if (found.your_blocked && *found.your_blocked != blocked) {
+      direct.your_blocked = found.your_blocked;
+      direct.contract_blocked = blocked;
+      blocked = *found.your_blocked;
+    }
+  }
   const double cosine = std::fabs(glm::dot(glm::dvec3(normal), glm::dvec3(sample.direction)));
-  direct.value =
-      blocked ? glm::dvec3(0.0) : f * glm::dvec3(sample.radiance) * (cosine / (density.per_steradian * chosen_with));
+  direct.value = blocked ? glm::dvec3(0.0)
+                         : f * glm::dvec3(sample.radiance) * (cosine / (density.per_steradian * chosen_with));
   direct.what = "light " + std::to_string(found.choice ? found.choice->light_index : 0) + " (chosen with probability " +
                 text(chosen_with) + "), its point " + text(sample.point) + ", pdf " + text(density.per_steradian) +
                 " per sr; the shadow ray " +
-                (f == glm::dvec3(0.0) ? "not needed (f = 0)"
-                 : blocked            ? "blocked"
-                                      : "clear");
-  if (found.your_blocked && f != glm::dvec3(0.0) && *found.your_blocked != blocked)
-    direct.what += std::string("; your shadow ray found it ") + (*found.your_blocked ? "blocked" : "clear");
+                (f == glm::dvec3(0.0) ? "not needed (f = 0)" : blocked ? "blocked" : "clear");
+  if (!direct.wrong_light.empty()) direct.what += "; " + direct.wrong_light;
   return direct;
+}
+
+// Your shadow ray, where its answer is not the contract's: marked at `function` (the code that
+// built it) when the ray itself breaks the contract's rules (it reaches the light's point, or
+// starts on the surface), else at your geometry (stages 02-05).
+std::optional<TraceStep> shadow_ray_step(const std::string& at, const LightCalls& found, const ContractDirect& direct,
+                                         const SurfaceHit& hit, const std::string& stage, const std::string& function) {
+  if (!direct.your_blocked || !found.shadow || !found.sample || !found.sample->light_sample) return std::nullopt;
+  const Ray& ray = found.shadow->ray;
+  const auto words = [](bool blocked) { return std::string(blocked ? "blocked" : "clear"); };
+  TraceStep step{"", "", at + ": the shadow ray (" + text(ray) + ", t_max " + text(ray.t_max) + ")",
+                 words(*direct.your_blocked), words(*direct.contract_blocked), "", false};
+  const glm::vec3 point = found.sample->light_sample->point;
+  const float reach = ray.t_max * glm::length(ray.direction), to_point = glm::length(point - ray.origin);
+  if (found.shadow->kind == Kind::Occluded && *direct.your_blocked && reach >= to_point * (1.0f - 1e-6f)) {
+    step.stage = stage;
+    step.function = function;
+    step.note = "your shadow ray reaches the light's point and hits the light itself: stop it just short of the "
+                "point (direction = point - origin, t_max = 1 - 1e-4: docs/08_direct_light.md, section 5)";
+  } else if (ray.origin == hit.point) {
+    step.stage = stage;
+    step.function = function;
+    step.note = "your shadow ray starts on the surface, where rounding puts it a little below, not at "
+                "offset_ray_origin(hit, direction)";
+  } else {
+    step.note = "your geometry (stages 02-05) answers this shadow ray otherwise than the contract's exact tests";
+  }
+  return step;
 }
 
 // Your stage function's value, or why there is none.
@@ -239,9 +288,8 @@ template <typename Value>
 struct Outcome {
   std::optional<Value> value;
   std::string failure;  // "... not written yet", or what it threw
-  // A stub reached from the call (perhaps of another stage:
-  // estimate_direct_light samples lights with stage 07's warps): the step is
-  // marked at it.
+  // A stub reached from the call (perhaps of another stage: estimate_direct_light samples lights
+  // with stage 07's warps): the step is marked at it.
   std::string stub_stage, stub_function;
 };
 template <typename Call>
@@ -259,8 +307,7 @@ auto outcome_of(const Call& call) -> Outcome<decltype(call())> {
   return result;
 }
 
-// A step whose call reached a stub: marked at the stub, not at the function
-// that called it.
+// A step whose call reached a stub: marked at the stub, not at the function that called it.
 template <typename Value>
 TraceStep marked_at_stub(TraceStep step, const Outcome<Value>& outcome) {
   if (!outcome.stub_function.empty() && outcome.stub_function != step.function) {
@@ -271,9 +318,9 @@ TraceStep marked_at_stub(TraceStep step, const Outcome<Value>& outcome) {
   return step;
 }
 
-// What the contract's rules make of a path (stage 09's path_radiance), given
-// each surface's terms; each rule can be broken on purpose, to name the mistake
-// that gives your value.
+// What the contract's rules make of a path (stage 09's path_radiance), given each surface's terms;
+// each rule can be broken on purpose, to name the mistake that gives your value.
+enum class OwnRoulette { None, Fixed, ByThroughputBefore, ByThroughputAfter };
 struct PathRules {
   bool divide_by_p = true;
   bool cosine = true;
@@ -282,12 +329,16 @@ struct PathRules {
   bool emission_after_specular = true;
   bool emission_after_diffuse = false;
   bool background = true;
-  bool last_surface = true;  // the surface at depth == max_depth counts
-  // Correct variants: Russian roulette with a probability of your own instead
-  // of context.continue_probability's (the same mean): a fixed one, or
-  // pbrt-v4's, the throughput's largest channel kept within [0.05, 1].
-  float own_fixed_p = 0.0f;  // 0: none
-  bool own_p_by_throughput = false;
+  bool last_surface = true;            // the surface at depth == max_depth counts
+  bool no_light_sample_is_zero = false;  // a diffuse surface whose light your code did not sample adds 0
+  // Correct variants: Russian roulette with a probability of your own instead of
+  // context.continue_probability's (the same mean): a fixed one, or the throughput's largest
+  // channel (before or after the bounce's weight, from depth `own_from_depth` on, at least
+  // `own_floor`).
+  OwnRoulette own = OwnRoulette::None;
+  float own_fixed_p = 1.0f;
+  int own_from_depth = 0;
+  double own_floor = 0.0;
 };
 
 struct SurfaceTerms {
@@ -306,26 +357,34 @@ std::optional<glm::dvec3> path_value(const std::vector<SurfaceTerms>& surfaces, 
                                      const PathRules& rules) {
   glm::dvec3 radiance(0.0), throughput(1.0);
   bool after_specular = true;
+  const auto own_p = [&](int depth, const glm::dvec3& weight) {
+    if (rules.own == OwnRoulette::Fixed) return double(rules.own_fixed_p);
+    if (depth < rules.own_from_depth) return 1.0;
+    const glm::dvec3 t = rules.own == OwnRoulette::ByThroughputAfter ? throughput * weight : throughput;
+    return std::min(1.0, std::max(rules.own_floor, std::max(t.x, std::max(t.y, t.z))));
+  };
   for (std::size_t depth = 0; depth < surfaces.size(); ++depth) {
     const SurfaceTerms& surface = surfaces[depth];
     if (!surface.hit) return rules.background ? radiance + throughput * glm::dvec3(context.scene.background) : radiance;
     if (!rules.last_surface && static_cast<int>(depth) >= context.max_depth) return radiance;
-    const bool counts = depth == 0       ? rules.camera_emission
+    const bool counts = depth == 0        ? rules.camera_emission
                         : after_specular ? rules.emission_after_specular
                                          : rules.emission_after_diffuse;
     if (counts) radiance += throughput * surface.emission;
     if (!surface.specular) {
-      if (!surface.direct) return std::nullopt;
-      radiance += throughput * *surface.direct;
+      if (surface.direct)
+        radiance += throughput * *surface.direct;
+      else if (!rules.no_light_sample_is_zero)
+        return std::nullopt;
     }
     if (static_cast<int>(depth) >= context.max_depth || !surface.went_on) return radiance;
-    float p = context.continue_probability(static_cast<int>(depth), glm::vec3(throughput));
-    if (rules.own_fixed_p > 0.0f) p = rules.own_fixed_p;
-    if (rules.own_p_by_throughput)
-      p = float(std::min(1.0, std::max(0.05, std::max(throughput.x, std::max(throughput.y, throughput.z)))));
-    if (p < 1.0f && rules.divide_by_p) throughput /= double(p);
     const glm::dvec3 f = surface.diffuse_bounce && !rules.f_over_pi ? surface.albedo : surface.f;
-    throughput *= f * ((rules.cosine ? surface.cosine : 1.0) / surface.pdf);
+    const glm::dvec3 weight = f * ((rules.cosine ? surface.cosine : 1.0) / surface.pdf);
+    const double p = rules.own == OwnRoulette::None
+                         ? double(context.continue_probability(static_cast<int>(depth), glm::vec3(throughput)))
+                         : own_p(static_cast<int>(depth), weight);
+    throughput *= weight;
+    if (p < 1.0 && rules.divide_by_p) throughput /= p;
     after_specular = surface.specular_bounce;
   }
   return radiance;
@@ -353,39 +412,42 @@ const std::vector<PathMistake>& path_mistakes() {
   return mistakes;
 }
 
-// Your value as a correct path's with a Russian roulette probability of its own
-// (PathRules), in words, or "".
+// Your value as a correct path's with a Russian roulette probability of its own (PathRules), in
+// words, or "".
 std::string fitted_own_roulette(const std::vector<SurfaceTerms>& surfaces, const RenderContext& context,
                                 const glm::vec3& yours) {
   const auto fits = [&](const PathRules& rules) {
     const std::optional<glm::dvec3> value = path_value(surfaces, context, rules);
     return value && near(glm::dvec3(yours), *value, kValueTolerance);
   };
-  PathRules by_throughput;
-  by_throughput.own_p_by_throughput = true;
-  if (fits(by_throughput))
-    return "your path plays Russian roulette with a probability of its own, "
-           "the throughput's largest channel "
-           "(as pbrt-v4 does), not context.continue_probability's: the same "
-           "mean, and right along this path";
-  // A fixed probability of the common ones (GAMES101 assignment 7 uses 0.8).
-  // Not any number: with one bounce, some fixed probability gives every value
-  // that a wrong factor on the bounce gives.
+  for (const OwnRoulette own : {OwnRoulette::ByThroughputBefore, OwnRoulette::ByThroughputAfter})
+    for (const int from_depth : {0, 1, 2})
+      for (const double floor : {0.0, 0.05}) {
+        PathRules rules;
+        rules.own = own;
+        rules.own_from_depth = from_depth;
+        rules.own_floor = floor;
+        if (fits(rules))
+          return std::string("your path plays Russian roulette with a probability of its own, the largest channel of "
+                             "the throughput ") +
+                 (own == OwnRoulette::ByThroughputAfter ? "after" : "before") + " the bounce's weight (from depth " +
+                 std::to_string(from_depth) + " on), not context.continue_probability's: the same mean, and right "
+                 "along this path";
+      }
+  // A fixed probability of the common ones (GAMES101 assignment 7 uses 0.8). Not any number: with
+  // one bounce, some fixed probability gives every value that a wrong factor on the bounce gives.
   for (const float p : {0.5f, 0.6f, 0.7f, 0.75f, 0.8f, 0.85f, 0.9f, 0.95f, 0.99f}) {
-    PathRules fixed;
-    fixed.own_fixed_p = p;
-    if (fits(fixed))
-      return "your path plays Russian roulette with a fixed probability of its "
-             "own, " +
-             text(p) +
-             ", not context.continue_probability's: the same mean, and right "
-             "along this path";
+    PathRules rules;
+    rules.own = OwnRoulette::Fixed;
+    rules.own_fixed_p = p;
+    if (fits(rules))
+      return "your path plays Russian roulette with a fixed probability of its own, " + text(p) +
+             ", not context.continue_probability's: the same mean, and right along this path";
   }
   return "";
 }
 
-// The mistakes (one, or two together) whose rules give `yours` where the
-// contract's do not.
+// The mistakes (one, or two together) whose rules give `yours` where the contract's do not.
 std::string fitted_mistakes(const std::vector<SurfaceTerms>& surfaces, const RenderContext& context,
                             const glm::vec3& yours, const glm::dvec3& contract) {
   const auto& mistakes = path_mistakes();
@@ -418,11 +480,10 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
                        PixelTrace& trace) {
   const TraceSettings& settings = trace.settings;
   const bool path_tracer = settings.integrator == IntegratorKind::Path;
-  // Yours: the geometry your stages 02-05 trace (as raylab render's); the
-  // contract's: every primitive tested with the kit's exact tests. Every ray is
-  // traced (no skip of rays outside the scene's bounds), so that each one is
-  // seen.
-  const SceneGeometry your_geometry(scene);
+  // Yours: the geometry your stages 02-05 trace (as raylab render's); the contract's: every
+  // primitive tested with the kit's exact tests. Every ray is traced (no skip of rays outside the
+  // scene's bounds), so that each one is seen.
+  const SceneGeometry your_geometry(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, settings.yours);
   const SceneGeometry contract_geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, contract);
   const RenderContext yours(scene, your_geometry, settings.max_depth, Skips::none(), settings.roulette);
   const RenderContext contracts(scene, contract_geometry, settings.max_depth, Skips::none(), settings.roulette);
@@ -435,20 +496,21 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
     RecordingCalls recording(recorder);
     ShadingStats stats;
     radiance = outcome_of([&] {
-      return path_tracer ? path_radiance(yours, camera_ray, sampler)
-                         : direct_light_li(yours, camera_ray, sampler, stats);
+      return path_tracer ? path_radiance(yours, camera_ray, sampler) : direct_light_li(yours, camera_ray, sampler, stats);
     });
   }
   const std::vector<RecordedCall>& calls = recorder.calls;
   const std::vector<PathVertex> path = path_of(calls, camera_ray);
 
   std::vector<SurfaceTerms> surfaces;
-  glm::dvec3 throughput(1.0);  // the contract's, for the roulette's p
-  bool own_bounce_sampling = false;
-  std::optional<int> ended_early;  // the surface where your path stopped and the
-                                   // contract's goes on
+  glm::dvec3 throughput(1.0);        // the contract's, for the roulette's p
+  std::string not_followed;          // why your path's value cannot be checked
+  std::vector<int> unsampled_light;  // the diffuse surfaces where your path sampled no light
+  std::string light_not_followed;    // why a light sample of your path could not be followed
+  std::string stopped_short;         // your path ended where the contract's goes on
   for (std::size_t depth = 0; depth < path.size(); ++depth) {
     const PathVertex& vertex = path[depth];
+    const int d = static_cast<int>(depth);
     const std::string at = "surface " + std::to_string(depth);
     SurfaceTerms surface;
     // The closest hit of a bounce ray (the camera ray's is above).
@@ -459,10 +521,7 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
       step.agrees =
           vertex.hit.has_value() == expected.has_value() &&
           (!expected || (near(vertex.hit->t_hit, expected->t_hit) && vertex.hit->material == expected->material));
-      if (!step.agrees)
-        step.note =
-            "your geometry (stages 02-05: spheres, triangles, boxes, "
-            "trees) finds another closest hit";
+      if (!step.agrees) step.note = "your geometry (stages 02-05: spheres, triangles, boxes, trees) finds another hit";
       steps.push_back(step);
     }
     if (!vertex.hit) {
@@ -480,17 +539,19 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
     if (bsdf.kind == BsdfKind::Lambertian) {
       const Outcome<glm::vec3> f = outcome_of([&] { return lambertian_f(bsdf.albedo); });
       const glm::dvec3 expected = glm::dvec3(bsdf.albedo) / kPiInDouble;
-      TraceStep step{
-          "08_direct_light", "lambertian_f",
-          at + " (" + material_text(scene, hit) + ", diffuse): lambertian_f(albedo " + text(bsdf.albedo) + ")",
-          f.value ? text(*f.value) : f.failure, text(expected) + "  (albedo / pi)"};
+      TraceStep step{"08_direct_light", "lambertian_f",
+                     at + " (" + material_text(scene, hit) + ", diffuse): lambertian_f(albedo " + text(bsdf.albedo) + ")",
+                     f.value ? text(*f.value) : f.failure, text(expected) + "  (albedo / pi)"};
       step.agrees = f.value && near(glm::dvec3(*f.value), expected);
-      steps.push_back(step);
+      steps.push_back(marked_at_stub(step, f));
     }
 
-    if (!surface.specular) {
-      // Your estimate_direct_light on its own, on a sampler of its own, with
-      // its calls recorded: the contract's value for the light sample it drew.
+    if (bsdf.is_black()) {
+      surface.direct = glm::dvec3(0.0);  // reflects nothing: no light to sample
+    } else if (!surface.specular) {
+      // Your estimate_direct_light called once more on its own, on a sampler of its own, with its
+      // calls recorded: the contract's estimate for the light, the point and the shadow ray that
+      // call drew. (With --integrator direct, the sample's own estimate is checked below too.)
       TraceRecorder probe_recorder;
       Outcome<glm::vec3> estimate;
       {
@@ -500,10 +561,30 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
         estimate = outcome_of([&] { return estimate_direct_light(yours, hit, bsdf, wo, probe); });
       }
       const LightCalls probe_calls = light_calls(probe_recorder.calls, 0, probe_recorder.calls.size());
-      if (probe_calls.sample && probe_calls.sample->light_sample &&
-          probe_calls.sample->light.kind != LightKind::Point) {
-        const LightDensity density =
-            contract_light_density(probe_calls.sample->light, *probe_calls.sample->light_sample);
+      if (probe_calls.sample && probe_calls.sample->light_sample && probe_calls.sample->light.kind != LightKind::Point) {
+        const Light& light = probe_calls.sample->light;
+        const LightDensity density = contract_light_density(light, *probe_calls.sample->light_sample);
+        // Stage 07's density of the light's points (sample_li's, through sample_triangle or
+        // sample_sphere), then stage 08's conversion.
+        if (light.kind == LightKind::Triangle) {
+          const Outcome<float> pdf = outcome_of([&] { return uniform_triangle_pdf(light.p0, light.p1, light.p2); });
+          TraceStep step{"07_sampling", "uniform_triangle_pdf",
+                         at + ": the light's points, uniform_triangle_pdf(" + text(light.p0) + ", " + text(light.p1) +
+                             ", " + text(light.p2) + ")",
+                         pdf.value ? text(*pdf.value) : pdf.failure, text(density.pdf_area) + "  (1 / area)"};
+          step.agrees = pdf.value && near(*pdf.value, density.pdf_area);
+          steps.push_back(marked_at_stub(step, pdf));
+        } else {
+          const glm::vec3 outward =
+              glm::normalize(probe_calls.sample->light_sample->point - light.sphere.center);
+          const Outcome<float> pdf = outcome_of([&] { return uniform_sphere_pdf(outward); });
+          TraceStep step{"07_sampling", "uniform_sphere_pdf",
+                         at + ": the light's points, uniform_sphere_pdf(" + text(outward) + ")",
+                         pdf.value ? text(*pdf.value) : pdf.failure,
+                         text(1.0 / (4.0 * kPiInDouble)) + "  (1 / (4 pi))"};
+          step.agrees = pdf.value && near(*pdf.value, 1.0 / (4.0 * kPiInDouble));
+          steps.push_back(marked_at_stub(step, pdf));
+        }
         const Outcome<float> pdf = outcome_of([&] {
           return area_pdf_to_solid_angle(float(density.pdf_area), float(density.distance), float(density.cos_at_light));
         });
@@ -513,70 +594,83 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
                        pdf.value ? text(*pdf.value) : pdf.failure,
                        text(density.per_steradian) + "  (pdf_area * distance^2 / cos_at_light)"};
         step.agrees = pdf.value && near(*pdf.value, density.per_steradian);
-        steps.push_back(step);
+        steps.push_back(marked_at_stub(step, pdf));
       }
       const ContractDirect expected = contract_direct(contracts, hit, bsdf, wo, probe_calls);
-      TraceStep step{"08_direct_light",
-                     "estimate_direct_light",
-                     at + ": estimate_direct_light(context, hit, bsdf, wo, sampler)",
+      // A shadow ray whose answer differs is a step of its own; the estimate below takes your
+      // answer, so that only the estimator's arithmetic is held to the contract there.
+      if (auto shadow = shadow_ray_step(at, probe_calls, expected, hit, "08_direct_light", "estimate_direct_light"))
+        steps.push_back(*shadow);
+      TraceStep step{"08_direct_light", "estimate_direct_light",
+                     at + ": estimate_direct_light(context, hit, bsdf, wo, sampler), called once more on its own",
                      estimate.value ? text(*estimate.value) : estimate.failure,
-                     expected.value ? text(*expected.value) : "not checked: " + expected.why,
-                     expected.what};
-      step.agrees =
-          estimate.value && (!expected.value || near(glm::dvec3(*estimate.value), *expected.value, kValueTolerance));
+                     expected.value ? text(*expected.value) : "not checked: " + expected.why, expected.what};
+      step.agrees = estimate.value && expected.wrong_light.empty() &&
+                    (!expected.value || near(glm::dvec3(*estimate.value), *expected.value, kValueTolerance));
       steps.push_back(marked_at_stub(step, estimate));
 
-      // The same for the light sample of your path itself (its value is not
-      // seen, only its calls).
+      // The light sample of your path itself: its value is not seen, only its calls.
       const LightCalls path_calls = light_calls(calls, vertex.first, vertex.end);
-      surface.direct = contract_direct(contracts, hit, bsdf, wo, path_calls).value;
+      const ContractDirect path_direct = contract_direct(contracts, hit, bsdf, wo, path_calls);
+      surface.direct = path_direct.value;
+      if (auto shadow = shadow_ray_step(at + " (your path's own light sample)", path_calls, path_direct, hit,
+                                      path_tracer ? "09_path" : "08_direct_light",
+                                      path_tracer ? "path_radiance" : "estimate_direct_light"))
+        steps.push_back(*shadow);
+      if (!path_calls.sample && !contracts.lights.empty())
+        unsampled_light.push_back(d);
+      else if (!path_direct.value && light_not_followed.empty())
+        light_not_followed = path_direct.why + " at " + at;
     } else {
       surface.direct = glm::dvec3(0.0);
     }
 
     // The bounce.
     surface.went_on = depth + 1 < path.size();
+    const float p = contracts.continue_probability(d, glm::vec3(throughput));
+    std::string roulette;
+    if (path_tracer && d < settings.max_depth && (p < 1.0f || !surface.went_on))
+      roulette = "Russian roulette: p = context.continue_probability(" + std::to_string(depth) + ", throughput " +
+                 text(glm::vec3(throughput)) + ") = " + text(p) +
+                 (surface.went_on ? (p < 1.0f ? "; your path went on (the contract divides by p)" : "; your path went on")
+                                  : "; your path ended here");
     if (vertex.bounce) {
       const RecordedCall& bounce = *vertex.bounce;
-      std::string roulette;
-      const float p = contracts.continue_probability(static_cast<int>(depth), glm::vec3(throughput));
-      if (path_tracer && static_cast<int>(depth) < settings.max_depth && (p < 1.0f || !surface.went_on)) {
-        roulette =
-            "Russian roulette: p = context.continue_probability(" + std::to_string(depth) + ", throughput " +
-            text(glm::vec3(throughput)) + ") = " + text(p) +
-            (surface.went_on ? (p < 1.0f ? "; your path went on (the contract divides by p)" : "; your path went on")
-                             : "; your path ended here");
-      }
       const std::string call =
           at + ": bsdf_sample_f(" + bsdf_name(bsdf) + ", u_lobe " + text(bounce.u_lobe) + ", u " + text(bounce.u) + ")";
-      if (!bounce.bsdf_sample) {
-        steps.push_back(
-            TraceStep{"", "", call, "no sample: the path ends", "no sample: the path ends", roulette, true});
+      // Its arguments: this surface's BSDF, its normal (either side) and minus the ray's direction.
+      std::string wrong_arguments;
+      if (std::fabs(glm::dot(bounce.normal, hit.geometric_normal)) < 1.0f - 1e-4f)
+        wrong_arguments = "the normal " + text(bounce.normal) + ", not the hit's geometric_normal " +
+                          text(hit.geometric_normal);
+      else if (!same_direction(bounce.wo, wo))
+        wrong_arguments = "wo " + text(bounce.wo) + ", not minus the ray's direction " + text(wo);
+      else if (bounce.bsdf.kind != bsdf.kind || bounce.bsdf.albedo != bsdf.albedo)
+        wrong_arguments = "another BSDF than bsdf_of(material, diffuse_color_at(material, hit))";
+      if (!wrong_arguments.empty()) {
+        steps.push_back(TraceStep{"09_path", "path_radiance", call, "called with " + wrong_arguments,
+                                  "this surface's BSDF, normal and wo", "", false});
+        not_followed = "your bounce at " + at + " was sampled with other arguments";
+      } else if (!bounce.bsdf_sample) {
+        steps.push_back(TraceStep{"", "", call, "no sample: the path ends", "no sample: the path ends", roulette, true});
       } else {
         const BsdfSample& sample = *bounce.bsdf_sample;
-        const glm::vec3 facing =
-            glm::dot(hit.geometric_normal, wo) > 0.0f ? hit.geometric_normal : -hit.geometric_normal;
+        const glm::vec3 facing = glm::dot(hit.geometric_normal, wo) > 0.0f ? hit.geometric_normal : -hit.geometric_normal;
         const double cosine = std::fabs(glm::dot(glm::dvec3(hit.geometric_normal), glm::dvec3(sample.wi)));
         surface.cosine = cosine;
         surface.specular_bounce = sample.is_specular;
         const std::string got =
             "wi " + text(sample.wi) + ", f " + text(sample.f) + ", pdf " + text(sample.pdf) + ", |cos| " + text(cosine);
         if (bsdf.kind == BsdfKind::Lambertian) {
-          // Stage 07's warp and density: any cosine-weighted warp is right (the
-          // grader tests the distribution); its direction must be unit and
-          // above the surface, and its pdf cos / pi.
+          // Stage 07's warp and density: any cosine-weighted warp is right (the grader tests the
+          // distribution); its direction must be unit and above the surface, its pdf cos / pi.
           const double length = glm::length(glm::dvec3(sample.wi));
           const double cos_facing = glm::dot(glm::dvec3(facing), glm::dvec3(sample.wi)) / length;
           const bool direction_ok = std::fabs(length - 1.0) < 1e-3 && cos_facing > 0.0;
-          TraceStep step{"07_sampling",
-                         direction_ok ? "cosine_hemisphere_pdf" : "sample_cosine_hemisphere",
-                         call +
-                             ": your sample_cosine_hemisphere(u) and "
-                             "cosine_hemisphere_pdf",
-                         got,
+          TraceStep step{"07_sampling", direction_ok ? "cosine_hemisphere_pdf" : "sample_cosine_hemisphere",
+                         call + ": your sample_cosine_hemisphere(u) and cosine_hemisphere_pdf", got,
                          direction_ok ? "pdf " + text(cos_facing / kPiInDouble) + "  (cos / pi for this direction)"
-                                      : "a unit direction above the surface (|wi| = 1, "
-                                        "z > 0 locally)",
+                                      : "a unit direction above the surface (|wi| = 1, z > 0 locally)",
                          roulette};
           step.agrees = direction_ok && near(sample.pdf, cos_facing / kPiInDouble);
           steps.push_back(step);
@@ -592,34 +686,30 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
         }
         if (p < 1.0f) throughput /= double(p);
         throughput *= surface.f * (surface.cosine / surface.pdf);
+        if (path_tracer && !surface.went_on && !vertex.own_next_ray && p >= 1.0f && d == settings.max_depth - 1 &&
+            throughput != glm::dvec3(0.0))
+          stopped_short = "your path stopped after sampling the bounce at " + at + ", the surface before depth " +
+                          "max_depth = " + std::to_string(settings.max_depth) + ", which counts too (a loop "
+                          "depth < max_depth?)";
       }
-    } else if (path_tracer && static_cast<int>(depth) < settings.max_depth && !bsdf.is_black()) {
-      const float p = contracts.continue_probability(static_cast<int>(depth), glm::vec3(throughput));
-      if (p < 1.0f)
-        steps.push_back(TraceStep{"", "",
-                                  at + ": Russian roulette, p = context.continue_probability(" + std::to_string(depth) +
-                                      ", throughput " + text(glm::vec3(throughput)) + ")",
-                                  "the path ended here", "p = " + text(p) + ": the path goes on with probability p", "",
-                                  true});
-      // No bsdf_sample_f: your code sampled the bounce itself (a ray traced
-      // here that is no shadow ray), or the path ended here, which without
-      // roulette (p = 1) the contract does not.
-      const LightCalls light = light_calls(calls, vertex.first, vertex.end);
-      for (std::size_t i = vertex.first; i < vertex.end; ++i)
-        if (calls[i].kind == Kind::Intersect &&
-            !(light.sample && light.sample->light_sample &&
-              same_direction(calls[i].ray.direction, light.sample->light_sample->point - calls[i].ray.origin)))
-          own_bounce_sampling = true;
-      if (!own_bounce_sampling &&
-          contracts.continue_probability(static_cast<int>(depth), glm::vec3(throughput)) >= 1.0f)
-        ended_early = static_cast<int>(depth);
+    } else if (path_tracer && d < settings.max_depth && !bsdf.is_black() && !vertex.own_next_ray && p < 1.0f) {
+      steps.push_back(TraceStep{"", "",
+                                at + ": Russian roulette, p = context.continue_probability(" + std::to_string(depth) +
+                                    ", throughput " + text(glm::vec3(throughput)) + ")",
+                                "the path ended here", "p = " + text(p) + ": the path goes on with probability p", "",
+                                true});
     }
+    if (path_tracer && vertex.own_next_ray && not_followed.empty())
+      not_followed = "your path samples its bounce at " + at + " without bsdf_sample_f, which the trace follows";
     surfaces.push_back(surface);
   }
 
-  if (!path_tracer) return;
-  // path_radiance's value against the contract's rules on the same path.
-  TraceStep step{"09_path", "path_radiance", "path_radiance(context, camera_ray, sampler): this sample's value",
+  // The sample's value: path_radiance's against the contract's rules on the same surfaces, light
+  // samples and bounces; or, for the direct-light integrator (the framework's, around your
+  // estimate_direct_light), the light of this very sample's light sample.
+  TraceStep step{path_tracer ? "09_path" : "08_direct_light", path_tracer ? "path_radiance" : "estimate_direct_light",
+                 path_tracer ? "path_radiance(context, camera_ray, sampler): this sample's value"
+                             : "this sample's value: the framework's direct_light_li with your estimate_direct_light",
                  radiance.value ? text(*radiance.value) : radiance.failure, ""};
   if (!radiance.value) {
     step.expected = "a radiance, three finite numbers";
@@ -627,27 +717,47 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
     steps.push_back(marked_at_stub(step, radiance));
     return;
   }
+  const glm::dvec3 value(*radiance.value);
+  const int last_depth = static_cast<int>(path.size()) - 1;
   const std::optional<glm::dvec3> expected =
-      own_bounce_sampling ? std::nullopt : path_value(surfaces, contracts, PathRules{});
-  if (own_bounce_sampling) {
-    step.expected =
-        "not checked: your path samples its bounces without "
-        "bsdf_sample_f, which the trace follows";
+      not_followed.empty() ? path_value(surfaces, contracts, PathRules{}) : std::nullopt;
+  if (!not_followed.empty()) {
+    step.expected = "not checked: " + not_followed;  // (other arguments are marked at the bounce)
+  } else if (path_tracer && last_depth > settings.max_depth) {
+    step.expected = "a path that ends at the surface at depth max_depth";
+    step.agrees = false;
+    step.note = "your path went on after the surface at depth max_depth = " + std::to_string(settings.max_depth);
+  } else if (!expected && (!path_tracer || !light_not_followed.empty() || unsampled_light.empty())) {
+    step.expected = "not checked: " + (light_not_followed.empty() ? std::string("a light sample could not be followed")
+                                                                  : light_not_followed);
   } else if (!expected) {
-    step.expected = "not checked: a light sample of your path could not be followed";
-  } else {
-    step.expected = text(*expected) +
-                    "  (the contract's rules on your path's "
-                    "surfaces, light samples and bounces)";
-    step.agrees = near(glm::dvec3(*radiance.value), *expected, kValueTolerance);
-    const int last_depth = static_cast<int>(path.size()) - 1;
-    if (last_depth > settings.max_depth) {
+    // A diffuse surface whose light your path did not sample.
+    const std::string where = "surface " + std::to_string(unsampled_light.empty() ? 0 : unsampled_light.front());
+    PathRules none;
+    none.no_light_sample_is_zero = true;
+    PathRules emission_only = none;
+    emission_only.emission_after_diffuse = true;
+    const std::optional<glm::dvec3> without = path_value(surfaces, contracts, none);
+    const std::optional<glm::dvec3> by_emission = path_value(surfaces, contracts, emission_only);
+    if (by_emission && without && near(value, *by_emission, kValueTolerance) &&
+        !near(value, *without, kValueTolerance)) {
+      step.expected = text(*by_emission) + "  (your path's emission, without light sampling)";
+      step.note = "your path samples no light and counts the emission its bounces reach instead: the same mean, "
+                  "with more noise; the contract asks for estimate_direct_light at every diffuse surface";
+    } else if (without && near(value, *without, kValueTolerance)) {
+      step.expected = "the direct light at " + where;
       step.agrees = false;
-      step.note = "your path went on after the surface at depth max_depth = " + std::to_string(settings.max_depth);
-    } else if (!step.agrees) {
-      // A mistake that gives your value comes first; a roulette of your own
-      // that gives it too is named beside it (one sample cannot tell them
-      // apart), and alone it is no disagreement.
+      step.note = "your path adds no direct light at " + where +
+                  ", a diffuse surface: call estimate_direct_light there (docs/09_path.md, section 2)";
+    } else {
+      step.expected = "not checked: your path sampled no light at " + where + " with sample_li";
+    }
+  } else {
+    step.expected = text(*expected) + "  (the contract's rules on your path's surfaces, light samples and bounces)";
+    step.agrees = near(value, *expected, kValueTolerance);
+    if (!step.agrees && path_tracer) {
+      // A mistake that gives your value comes first; a roulette of your own that gives it too is
+      // named beside it (one sample cannot tell them apart), and alone it is no disagreement.
       const std::string mistake = fitted_mistakes(surfaces, contracts, *radiance.value, *expected);
       const std::string own_roulette = fitted_own_roulette(surfaces, contracts, *radiance.value);
       if (!mistake.empty()) {
@@ -659,14 +769,14 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
         step.note = own_roulette;
       }
     }
-    if (ended_early && step.agrees)
-      step.note += (step.note.empty() ? "" : "; ") + std::string("your path ended at surface ") +
-                   std::to_string(*ended_early) +
-                   ", where context.continue_probability's p = 1 goes on: "
-                   "right only with a roulette of your own";
+    if (!step.agrees && !path_tracer)
+      step.note = "the light sample your estimate_direct_light drew in this sample gives the contract's value above";
+    if (step.agrees && !stopped_short.empty()) {
+      step.agrees = false;
+      step.note = stopped_short;
+    }
   }
-  if (recorder.overflowed)
-    step.note += (step.note.empty() ? "" : "; ") + std::string("only the first calls were followed");
+  if (recorder.overflowed) step.note += (step.note.empty() ? "" : "; ") + std::string("only the first calls were followed");
   steps.push_back(step);
 }
 

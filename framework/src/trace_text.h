@@ -1,6 +1,5 @@
-// raylab trace's helpers (trace.cpp, trace_monte_carlo.cpp): values as the
-// trace prints them, agreement within rounding, and a stage call that may be a
-// stub.
+// raylab trace's helpers (trace.cpp, trace_monte_carlo.cpp): values as the trace prints them,
+// agreement within rounding, and a stage call that may be a stub.
 #pragma once
 
 #include "raylab/error.h"
@@ -34,8 +33,7 @@ inline std::string text(const std::optional<TriangleHit>& hit) {
              : "no hit";
 }
 
-// Agreement within float rounding: relative `relative` of the larger magnitude,
-// or 1e-5 near 0.
+// Agreement within float rounding: relative `relative` of the larger magnitude, or 1e-5 near 0.
 inline bool near(double a, double b, double relative = 1e-4) {
   if (!std::isfinite(a) || !std::isfinite(b)) return a == b;
   return std::fabs(a - b) <= relative * std::max(std::fabs(a), std::fabs(b)) + 1e-5;

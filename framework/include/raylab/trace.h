@@ -6,11 +6,14 @@
 //   What is traced:
 //   - the camera ray (stage 01), and along the contract's camera ray every sphere and triangle
 //     test (stages 02 and 03) that your code or the contract hits, and the closest hit;
-//   - with --integrator direct or path (trace_monte_carlo.cpp): the path your code took, vertex
-//     by vertex: the closest hit of each bounce ray, lambertian_f, area_pdf_to_solid_angle and
-//     estimate_direct_light (stage 08) at each diffuse surface, each bounce's direction, density
-//     (stage 07) and Russian roulette, and path_radiance's value (stage 09) against the value
-//     the contract's rules give for the same path.
+//   - the closest hit through your trees (stages 04-05), where the renderer uses them;
+//   - with --integrator direct or path (trace_monte_carlo.cpp): the path your code took, surface
+//     by surface: the closest hit of each bounce ray, at each diffuse surface lambertian_f, the
+//     light's point density (stage 07) and area_pdf_to_solid_angle, estimate_direct_light called
+//     once more on its own (stage 08), the shadow rays, each bounce's direction, density (stage
+//     07) and Russian roulette, and the sample's value (path_radiance, stage 09; or, with
+//     direct, the framework's around your estimate_direct_light) against the value the
+//     contract's rules give for the same surfaces, light samples and bounces.
 //   Not traced: the trees' nodes (stages 04-05), Whitted's bounces, and the mis integrator's
 // vertices (stage 09b).
 #pragma once
@@ -56,6 +59,12 @@ struct TraceSettings {
   std::uint64_t seed = 0;
   int max_depth = 5;
   RussianRoulette roulette;
+  // The functions traced as yours: each left nullptr is the stage's own that this program links
+  // (a grader's stage server gives its own for the stages it does not grade, as its pictures use).
+  TracingFunctions yours;
+  // The words of the camera ray's steps in Simplified Chinese (values and code as they are); the
+  // Monte Carlo part's are English.
+  bool chinese = false;
 };
 
 struct PixelTrace {

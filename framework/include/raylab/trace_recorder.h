@@ -1,15 +1,12 @@
-// What `raylab trace` sees of a Monte Carlo sample (raylab/trace.h): the
-// framework calls that the stage code makes while one pixel sample is traced,
-// each with its inputs and its result, in the order they were made. The
-// integrators' stage functions (estimate_direct_light, path_radiance) are
-// opaque; their calls into the framework are not, and from them the trace
-// rebuilds the path the student's code took and what the contract gives along
-// it.
+// What `raylab trace` sees of a Monte Carlo sample (raylab/trace.h): the framework calls that the
+// stage code makes while one pixel sample is traced, each with its inputs and its result, in the
+// order they were made. The integrators' stage functions (estimate_direct_light, path_radiance)
+// are opaque; their calls into the framework are not, and from them the trace rebuilds the path
+// the student's code took and what the contract gives along it.
 //
-// Recording is off (active_trace_recorder is nullptr) but inside a
-// RecordingCalls scope, on the thread that made it; a render never records. The
-// hooks: SceneGeometry::intersect and occluded, bsdf_sample_f, LightSet::choose
-// and sample_li.
+// Recording is off (active_trace_recorder is nullptr) but inside a RecordingCalls scope, on the
+// thread that made it; a render never records. The hooks: SceneGeometry::intersect and occluded,
+// bsdf_sample_f, LightSet::choose and sample_li.
 #pragma once
 
 #include "raylab/bsdf.h"
@@ -44,8 +41,7 @@ struct RecordedCall {
 };
 
 struct TraceRecorder {
-  // At most this many calls are kept (a path that never ends would otherwise
-  // fill memory).
+  // At most this many calls are kept (a path that never ends would otherwise fill memory).
   static constexpr std::size_t kMostCalls = 100000;
   std::vector<RecordedCall> calls;
   bool overflowed = false;
@@ -57,10 +53,9 @@ struct TraceRecorder {
   }
 };
 
-// The recorder of this thread's traced sample, or nullptr (always, but under
-// RecordingCalls). Defined here, constant-initialised: a hook reads it directly
-// (an extern thread_local defined elsewhere is read through a call that checks
-// for its initialisation).
+// The recorder of this thread's traced sample, or nullptr (always, but under RecordingCalls).
+// Defined here, constant-initialised: a hook reads it directly (an extern thread_local defined
+// elsewhere is read through a call that checks for its initialisation).
 inline thread_local TraceRecorder* active_trace_recorder = nullptr;
 
 // While it lives, this thread records nothing; `recorder` is the recorder it
