@@ -1,7 +1,5 @@
 #include "report_html.h"
 
-#include "raylab/stage_table.h"
-
 #include <cctype>
 #include <filesystem>
 #include <regex>
@@ -239,14 +237,12 @@ std::string trace_html(const PixelTrace& trace, const std::string& command, Lang
     std::string call = escape_html((step.stage.empty() ? "" : step.stage + "  ") + step.call);
     if (!step.note.empty()) call += "<br>" + escape_html(step.note);
     if (is_first) {
-      const StageDescription* stage = find_stage_description(step.stage);
+      const std::string file = step.file();
       const std::string mark =
           step.function.empty()
               ? text_of(MessageId::report_trace_first, language)
               : text_of({MessageId::report_trace_first_at,
-                         {{"function", step.function},
-                          {"file", stage && !stage->files.empty() ? "assignments/" + std::string(stage->files.front())
-                                                                  : step.stage}}},
+                         {{"function", step.function}, {"file", file.empty() ? step.stage : file}}},
                         language);
       call += "<br><span class=\"mark\">" + escape_html(mark) + "</span>";
     }

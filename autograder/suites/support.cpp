@@ -157,9 +157,9 @@ void add_worst_pixel_trace(ImageComparison& images, const std::string& stage_id,
     add_note({MessageId::note_trace_disagrees_at_step, args});
     return;
   }
-  const StageDescription* stage = find_stage_description(step.stage);
+  const std::string file = step.file();
   args.emplace_back("function", step.function);
-  args.emplace_back("file", stage && !stage->files.empty() ? "assignments/" + std::string(stage->files.front()) : step.stage);
+  args.emplace_back("file", file.empty() ? step.stage : file);
   add_note({MessageId::note_trace_disagrees, args});
 }
 

@@ -15,6 +15,12 @@ namespace raylab {
 
 using namespace trace_text;
 
+std::string TraceStep::file() const {
+  const StageDescription* description = find_stage_description(stage);
+  return description && !description->files.empty() ? "assignments/" + std::string(description->files.front())
+                                                    : std::string();
+}
+
 int PixelTrace::first_disagreement() const {
   for (std::size_t i = 0; i < steps.size(); ++i)
     if (!steps[i].agrees) return static_cast<int>(i);
@@ -208,9 +214,7 @@ void print_trace(std::ostream& out, const std::string& scene_path, const PixelTr
     if (static_cast<int>(i) == first) {
       out << (zh ? "       ^ 第一个不一致之处" : "       ^ the first disagreement");
       if (!step.function.empty()) {
-        const StageDescription* stage = find_stage_description(step.stage);
-        const std::string file =
-            stage && !stage->files.empty() ? "assignments/" + std::string(stage->files.front()) : std::string();
+        const std::string file = step.file();
         if (zh)
           out << "：你的 " << step.function << (file.empty() ? "" : "（" + file + "）");
         else

@@ -26,12 +26,6 @@ inline std::string text(const glm::vec3& v) { return "(" + text(v.x) + ", " + te
 inline std::string text(const glm::dvec3& v) { return "(" + text(v.x) + ", " + text(v.y) + ", " + text(v.z) + ")"; }
 inline std::string text(const glm::vec2& v) { return "(" + text(v.x) + ", " + text(v.y) + ")"; }
 inline std::string text(const Ray& ray) { return "origin " + text(ray.origin) + "  direction " + text(ray.direction); }
-inline std::string text(const std::optional<float>& t) { return t ? "hit at t = " + text(*t) : "no hit"; }
-inline std::string text(const std::optional<TriangleHit>& hit) {
-  return hit ? "hit at t = " + text(hit->t_hit) + ", b1 = " + text(hit->barycentric_b1) +
-                   ", b2 = " + text(hit->barycentric_b2)
-             : "no hit";
-}
 
 // Agreement within float rounding: relative `relative` of the larger magnitude, or 1e-5 near 0.
 inline bool near(double a, double b, double relative = 1e-4) {

@@ -49,6 +49,9 @@ struct TraceStep {
   std::string expected;  // what the contract gives
   std::string note;      // what the difference means, or what else happened at this step
   bool agrees = true;
+  // The file the stage's function is written in ("assignments/01_camera_rays/camera_rays.cpp"),
+  // or "" for a step of no known stage.
+  std::string file() const;
 };
 
 // Which sample of the pixel, and the render settings it is taken with (raylab render's).
