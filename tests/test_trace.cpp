@@ -48,6 +48,40 @@ TEST(Trace, TheReferenceAgreesAlongEveryPath) {
   EXPECT_GT(surfaces_after_the_first, 100);
 }
 
+// Through the trees (the bunny's, the Cornell box's over its objects): on every pixel that hits,
+// the nodes from the root down to the leaf of the closest hit, each box entered, the primitive
+// tested; and the camera ray drawn to the hit.
+TEST(Trace, TheReferenceAgreesThroughTheTrees) {
+  const TracingFunctions contract = testkit::exact_tracing();
+  for (const char* name : {"bunny", "cornell"}) {
+    Scene scene = scene_named(name);
+    scene.camera.width = 64;
+    scene.camera.height = 48;
+    int box_steps = 0, hits = 0;
+    for (int y = 1; y < 48; y += 4)
+      for (int x = 1; x < 64; x += 4) {
+        const PixelTrace trace = trace_pixel(scene, x, y, TraceSettings{}, contract);
+        EXPECT_EQ(trace.first_disagreement(), -1) << name << " (" << x << ", " << y << ")";
+        ASSERT_EQ(trace.segments.size(), 1u);
+        EXPECT_EQ(trace.segments[0].kind, TraceSegment::Kind::Camera);
+        int boxes = 0, tested = 0;
+        for (const TraceStep& step : trace.steps) {
+          boxes += step.function == "intersect_ray_box";
+          if (step.function == "intersect_bvh") {
+            ++tested;
+            EXPECT_EQ(step.yours.rfind("tested ", 0), 0u) << step.yours;
+          }
+        }
+        // A hit on a primitive under a tree: its path (at least the root), then the traversal's step.
+        EXPECT_EQ(tested, boxes > 0 ? 1 : 0) << name << " (" << x << ", " << y << ")";
+        box_steps += boxes;
+        hits += tested;
+      }
+    EXPECT_GT(hits, 20) << name << ": few pixels hit a primitive under a tree";
+    EXPECT_GE(box_steps, 2 * hits) << name << ": fewer than two boxes on the way to a hit";
+  }
+}
+
 TEST(Trace, RecordsOnlyWhileItTraces) {
   const Scene scene = scene_named("cornell");
   TraceSettings settings;

@@ -5,12 +5,15 @@
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
 #include "raylab/trace.h"
+#include "raylab/view_worker.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <optional>
@@ -88,14 +91,12 @@ RussianRoulette roulette_option(const std::string& text) {
   return *roulette;
 }
 
-int run_render(const RenderOptions& options) {
-  check_image_extension(options.output_path);
-  if (!options.variance_path.empty()) check_image_extension(options.variance_path);
-  if (!options.sample_rate_path.empty()) {
-    check_image_extension(options.sample_rate_path);
-    if (options.adaptive == 0.0f && !options.samples_by_noise)
-      throw UsageError("--sample-rate: only with --adaptive or --spp-by-noise (without them every pixel gets --spp samples)");
-  }
+// The scene and the settings of raylab render (and of the view's worker) from their options.
+struct RenderSetup {
+  Scene scene;
+  RenderSettings settings;
+};
+RenderSetup render_setup(const RenderOptions& options) {
   if (options.adaptive != 0.0f && options.samples_by_noise)
     throw UsageError("--adaptive and --spp-by-noise: choose one (each decides how many samples a pixel gets)");
   check_integrator_option(options.integrator);
@@ -123,6 +124,20 @@ int run_render(const RenderOptions& options) {
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
   settings.tracing.reference_stages = options.reference_stages;
   if (options.reference_stages) settings.tracing.reference_tree = options.reference_tree;
+  return {std::move(scene), settings};
+}
+
+int run_render(const RenderOptions& options) {
+  check_image_extension(options.output_path);
+  if (!options.variance_path.empty()) check_image_extension(options.variance_path);
+  if (!options.sample_rate_path.empty()) {
+    check_image_extension(options.sample_rate_path);
+    if (options.adaptive == 0.0f && !options.samples_by_noise)
+      throw UsageError("--sample-rate: only with --adaptive or --spp-by-noise (without them every pixel gets --spp samples)");
+  }
+  RenderSetup setup = render_setup(options);
+  const Scene& scene = setup.scene;
+  RenderSettings& settings = setup.settings;
   // Progress on stderr for renders longer than a second or two (progress.h): on a terminal one
   // line redrawn in place, elsewhere (a pipe, a file, an IDE's console) a line every few seconds.
   settings.progress.show = !options.quiet;
@@ -175,6 +190,7 @@ struct TraceOptions {
   std::string roulette = "1";
   std::string integrator;  // empty: the scene's
   std::string language = "en";
+  bool json = false;
 };
 
 int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
@@ -196,8 +212,48 @@ int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
   settings.roulette = roulette;
   settings.chinese = options.language == "zh";
   const PixelTrace trace = trace_pixel(scene, options.pixel[0], options.pixel[1], settings, contract);
-  print_trace(std::cout, options.scene_path, trace);
+  if (options.json)
+    write_trace_json(std::cout, scene.camera, trace);
+  else
+    print_trace(std::cout, options.scene_path, trace);
   return kExitOk;
+}
+
+// `raylab view-worker` (not listed in --help): the view server's renderer (view_worker.h).
+int run_view_worker_command(const RenderOptions& options, int first_sample, int frames_fd, bool send_tree) {
+  RenderSetup setup = render_setup(options);
+  setup.settings.first_sample = first_sample;
+  if (first_sample >= setup.settings.samples_per_pixel)
+    throw UsageError("--first-sample " + std::to_string(first_sample) + ": the render has " +
+                     std::to_string(setup.settings.samples_per_pixel) + " samples per pixel (--spp)");
+  return run_view_worker(setup.scene, setup.settings, frames_fd, send_tree);
+}
+
+// `raylab view ...`: the view's server is a program of its own, raylab-view beside this one (it
+// links the HTTP library, which every other command would load for nothing, and no stage code
+// runs in it); it is handed this program's path, whose view-worker and trace commands it runs.
+int run_view(const char* program, const std::vector<std::string>& arguments) {
+#if defined(_WIN32)
+  (void)program;
+  (void)arguments;
+  throw UsageError("view: not available on Windows yet (raylab render and raylab trace are)");
+#else
+  std::string self = program;
+  char resolved[4096];
+  const ssize_t length = ::readlink("/proc/self/exe", resolved, sizeof resolved - 1);
+  if (length > 0) self.assign(resolved, static_cast<std::size_t>(length));
+  const std::string::size_type slash = self.rfind('/');
+  const std::string server = (slash == std::string::npos ? std::string() : self.substr(0, slash + 1)) + "raylab-view";
+  std::vector<std::string> words{server, "--renderer", self};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  std::fflush(nullptr);
+  ::execv(server.c_str(), argv.data());
+  throw InputError(server + ": cannot start the view's server (" + std::strerror(errno) +
+                   "): build it with cmake --build build (the target raylab-view; it needs libcpp-httplib-dev)");
+#endif
 }
 
 }  // namespace
@@ -278,11 +334,41 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
         ->check(CLI::Range(0, 64));
     trace_command->add_option("--roulette", trace_options.roulette, "As raylab render's (default 1: no roulette)");
     trace_command->add_option("--seed", trace_options.seed, "As raylab render's (default 0)");
+    trace_command->add_flag("--json", trace_options.json,
+                            "Print the trace as JSON (the steps, and the rays as segments on the picture)");
     trace_command
         ->add_option("--lang", trace_options.language,
                      "en or zh: the words of the trace (default en; the Monte Carlo steps are English)")
         ->check(CLI::IsMember({"en", "zh"}));
   }
+
+  // raylab view: everything after it goes to the view's server, which has its own --help.
+  CLI::App* view_command =
+      app.add_subcommand("view", "Watch a scene render in your browser, and trace a pixel by clicking it (raylab view --help)");
+  view_command->prefix_command();
+  view_command->set_help_flag();
+  // raylab view-worker: the view server's renderer; not listed.
+  RenderOptions worker_options = options;
+  int first_sample = 0, frames_fd = -1;
+  bool send_tree = false;
+  CLI::App* worker_command = app.add_subcommand("view-worker", "");
+  worker_command->group("");
+  worker_command->add_option("scene", worker_options.scene_path)->required();
+  worker_command->add_option("--frames-fd", frames_fd)->required()->check(CLI::NonNegativeNumber);
+  worker_command->add_option("--first-sample", first_sample)->check(CLI::NonNegativeNumber);
+  worker_command->add_flag("--tree", send_tree);
+  worker_command->add_option("--width", worker_options.width)->check(CLI::Range(1, 16384));
+  worker_command->add_option("--height", worker_options.height)->check(CLI::Range(1, 16384));
+  worker_command->add_option("--max-depth", worker_options.max_depth)->check(CLI::Range(0, 64));
+  worker_command->add_option("--threads", worker_options.threads)->check(CLI::Range(1, 1024));
+  worker_command->add_option("--spp", worker_options.samples_per_pixel)->check(CLI::Range(1, kMaxSamplesPerPixel));
+  worker_command->add_option("--integrator", worker_options.integrator);
+  worker_command->add_option("--roulette", worker_options.roulette);
+  worker_command->add_option("--seed", worker_options.seed);
+  worker_command->add_option("--adaptive", worker_options.adaptive)->check(CLI::Range(0.0001f, 1.0f));
+  worker_command->add_option("--adaptive-batch", worker_options.adaptive_batch)->check(CLI::Range(2, kMaxSamplesPerPixel));
+  worker_command->add_flag("--spp-by-noise", worker_options.samples_by_noise);
+  worker_command->add_flag("--watertight", worker_options.watertight);
 
   try {
     app.parse(argc, argv);
@@ -298,6 +384,8 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
   try {
     if (*render_command) return run_render(options);
     if (trace_command && *trace_command) return run_trace(trace_options, *contract);
+    if (*view_command) return run_view(argv[0], view_command->remaining());
+    if (*worker_command) return run_view_worker_command(worker_options, first_sample, frames_fd, send_tree);
   } catch (const NotImplemented& e) {
     std::cerr << "raylab: " << e.what() << "\n";
     return kExitNotImplemented;

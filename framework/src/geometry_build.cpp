@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace raylab {
 
@@ -160,6 +162,43 @@ std::size_t SceneGeometry::bvh_count() const {
   std::size_t count = objects_bvh_.nodes.empty() ? 0 : 1;
   for (const MeshPart& mesh : meshes_) count += mesh.bvh.nodes.empty() ? 0 : 1;
   return count;
+}
+
+std::vector<std::vector<Bounds3>> SceneGeometry::tree_boxes_by_level() const {
+  std::vector<std::vector<Bounds3>> levels;
+  // Adds the boxes of `tree`'s nodes, its root at `depth`; calls leaf(node, depth) at each leaf.
+  const auto add_tree = [&](const Bvh& tree, int root_depth, const auto& leaf) {
+    if (tree.nodes.empty()) return;
+    std::vector<std::pair<std::uint32_t, int>> stack{{0u, root_depth}};
+    while (!stack.empty()) {
+      const auto [index, depth] = stack.back();
+      stack.pop_back();
+      const BvhNode& node = tree.nodes[index];
+      if (levels.size() <= static_cast<std::size_t>(depth)) levels.resize(static_cast<std::size_t>(depth) + 1);
+      levels[static_cast<std::size_t>(depth)].push_back(node.bounds);
+      if (node.is_leaf()) {
+        leaf(node, depth);
+      } else {
+        stack.push_back({node.first_index + 1, depth + 1});
+        stack.push_back({node.first_index, depth + 1});
+      }
+    }
+  };
+  const auto mesh_tree_at = [&](std::size_t mesh, int depth) {
+    add_tree(meshes_[mesh].bvh, depth, [](const BvhNode&, int) {});
+  };
+  if (objects_bvh_.nodes.empty()) {
+    for (std::size_t m = 0; m < meshes_.size(); ++m) mesh_tree_at(m, 0);
+  } else {
+    // A mesh's tree hangs below the leaf of the objects' tree that holds the mesh.
+    add_tree(objects_bvh_, 0, [&](const BvhNode& leaf, int depth) {
+      for (std::uint32_t i = leaf.first_index; i < leaf.first_index + leaf.primitive_count; ++i) {
+        const std::size_t object = objects_bvh_.primitive_order[i];
+        if (object >= spheres_.size()) mesh_tree_at(object - spheres_.size(), depth + 1);
+      }
+    });
+  }
+  return levels;
 }
 
 }  // namespace raylab

@@ -36,6 +36,14 @@ std::optional<float> SceneGeometry::test_triangle(void* context, const Ray& ray,
   return hit->t_hit;
 }
 
+// The same, counted for walk_to.
+std::optional<float> SceneGeometry::test_triangle_watched(void* context, const Ray& ray, std::uint32_t triangle) {
+  Query& query = *static_cast<Query*>(context);
+  ++query.watch->tests;
+  if (query.mesh_first_triangle + triangle == query.watch->triangle) query.watch->tested = true;
+  return test_triangle(context, ray, triangle);
+}
+
 std::optional<float> SceneGeometry::test_object(void* context, const Ray& ray, std::uint32_t object) {
   Query& query = *static_cast<Query*>(context);
   return query.geometry->intersect_object(object, ray, query);
@@ -46,11 +54,12 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
   query.mesh_first_triangle = mesh.first_triangle;
   if (!mesh.bvh.nodes.empty()) {
     BvhTraversalStats stats;
-    PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
+    PrimitiveIntersector intersector{query.watch ? &SceneGeometry::test_triangle_watched : &SceneGeometry::test_triangle,
+                                     &query};
     // hand_triangles_to_traversal_: the closest hit's details, from the traversal's own test
-    // (t NaN until it writes them).
+    // (t NaN until it writes them). Not while walk_to watches the tests.
     TriangleHit inlined_hit{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
-    if (hand_triangles_to_traversal_) {
+    if (hand_triangles_to_traversal_ && !query.watch) {
       intersector.triangles = triangle_edges_.data() + mesh.first_triangle;
       if (!mesh.columns.empty()) intersector.columns = TriangleColumns::of(mesh.columns);
       if (!query.any_hit) intersector.closest_triangle_hit = &inlined_hit;
@@ -94,7 +103,8 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
   Ray search = ray;
   std::optional<float> closest;
   for (std::uint32_t i = 0; i < mesh.triangle_count; ++i) {
-    if (const std::optional<float> t = test_triangle(&query, search, i)) {
+    if (const std::optional<float> t =
+            query.watch ? test_triangle_watched(&query, search, i) : test_triangle(&query, search, i)) {
       search.t_max = *t;
       closest = t;
       if (query.any_hit) break;
@@ -105,6 +115,10 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
 
 std::optional<float> SceneGeometry::intersect_object(std::uint32_t object, const Ray& ray, Query& query) const {
   if (object < spheres_.size()) {
+    if (query.watch) {
+      ++query.watch->tests;
+      if (object == query.watch->sphere) query.watch->tested = true;
+    }
     const Sphere& sphere = spheres_[object];
     const std::optional<float> t = intersect_sphere_(ray, sphere.center, sphere.radius);
     if (t && *t < query.record->t_hit) query.record->set_sphere(object, *t);
@@ -127,6 +141,73 @@ std::optional<float> SceneGeometry::intersect_objects_through_bvh(const Ray& ray
     *query.record = returned;
   }
   return hit->t_hit;
+}
+
+SceneGeometry::TreeWalk SceneGeometry::walk_to(const Ray& ray, std::optional<std::size_t> sphere, std::size_t mesh,
+                                               std::size_t triangle) const {
+  TreeWalk walk;
+  Query::Watch watch;
+  // The primitive as the geometry holds it, and the object (a sphere, or a part of the meshes).
+  std::optional<std::uint32_t> object, in_part;
+  if (sphere) {
+    if (*sphere >= spheres_.size()) return walk;
+    watch.sphere = static_cast<std::uint32_t>(*sphere);
+    object = watch.sphere;
+  } else {
+    for (std::uint32_t i = 0; i < triangles_.size() && !object; ++i) {
+      if (triangles_[i].mesh != mesh || triangles_[i].first_index != 3 * triangle) continue;
+      watch.triangle = i;
+      for (std::uint32_t p = 0; p < meshes_.size(); ++p)
+        if (i >= meshes_[p].first_triangle && i - meshes_[p].first_triangle < meshes_[p].triangle_count) {
+          object = static_cast<std::uint32_t>(spheres_.size()) + p;
+          in_part = i - meshes_[p].first_triangle;
+        }
+    }
+  }
+  // The nodes from a tree's root to the leaf that holds primitive `primitive`, at depth `depth` on.
+  const auto path_in = [&](const Bvh& tree, std::uint32_t primitive, int mesh_index, int depth) {
+    if (tree.nodes.empty()) return false;
+    // Depth first, keeping the path: each entry a node and whether its second child is next.
+    std::vector<std::pair<std::uint32_t, int>> stack{{0u, 0}};
+    while (!stack.empty()) {
+      auto& [index, visited] = stack.back();
+      const BvhNode& node = tree.nodes[index];
+      if (node.is_leaf()) {
+        for (std::uint32_t i = node.first_index; i < node.first_index + node.primitive_count; ++i)
+          if (tree.primitive_order[i] == primitive) {
+            for (std::size_t k = 0; k < stack.size(); ++k)
+              walk.path.push_back(
+                  {mesh_index, stack[k].first, depth + static_cast<int>(k), tree.nodes[stack[k].first].bounds});
+            return true;
+          }
+        stack.pop_back();
+        continue;
+      }
+      if (visited == 2) {
+        stack.pop_back();
+        continue;
+      }
+      const std::uint32_t child = node.first_index + static_cast<std::uint32_t>(visited++);
+      stack.push_back({child, 0});
+    }
+    return false;
+  };
+  if (object) {
+    int depth = 0;
+    if (!objects_bvh_.nodes.empty() && path_in(objects_bvh_, *object, -1, 0)) depth = walk.path.back().depth + 1;
+    if (in_part) {
+      const MeshPart& part = meshes_[*object - spheres_.size()];
+      path_in(part.bvh, *in_part, static_cast<int>(mesh), depth);
+    }
+  }
+  // The query itself, its tests watched.
+  HitRecord record;
+  Query query{this, &record, /*any_hit=*/false};
+  query.watch = &watch;
+  walk.t_hit = intersect_objects(ray, query);
+  walk.tested = watch.tested;
+  walk.primitive_tests = watch.tests;
+  return walk;
 }
 
 }  // namespace raylab

@@ -15,6 +15,15 @@ struct SceneGeometry::Query {
   bool any_hit;
   const Triangle* mesh_triangles = nullptr;  // the mesh being traversed: its first triangle
   std::uint32_t mesh_first_triangle = 0;     // ... and that triangle's index in triangles_
+  // walk_to's query only: its primitive (an index into triangles_ or spheres_; the other kNone),
+  // whether its test was called and how many tests were. Never in a render's query.
+  struct Watch {
+    static constexpr std::uint32_t kNone = 0xffffffffu;
+    std::uint32_t triangle = kNone, sphere = kNone;
+    bool tested = false;
+    std::uint64_t tests = 0;
+  };
+  Watch* watch = nullptr;
 };
 
 // Straight into the one tree when it is all there is (the reference's programs, a scene

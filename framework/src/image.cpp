@@ -117,6 +117,37 @@ std::string write_png(const Image& image, const std::string& path) {
 #endif
 }
 
+}  // namespace
+
+std::string encode_png(const Image& image) {
+#if defined(RAYLAB_NO_PNG)
+  (void)image;
+  throw std::runtime_error("this build has no libpng, so it cannot make a PNG picture");
+#else
+  const std::vector<unsigned char> bytes = srgb_bytes(image);
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  png.width = static_cast<png_uint_32>(image.width());
+  png.height = static_cast<png_uint_32>(image.height());
+  png.format = PNG_FORMAT_RGB;
+  png_alloc_size_t size = 0;
+  if (png_image_write_to_memory(&png, nullptr, &size, 0, bytes.data(), 0, nullptr) == 0 || size == 0)
+    throw std::runtime_error(std::string("libpng: ") + (png.message[0] != '\0' ? png.message : "gave no reason"));
+  std::string encoded(size, '\0');
+  png_image png_again{};
+  png_again.version = PNG_IMAGE_VERSION;
+  png_again.width = png.width;
+  png_again.height = png.height;
+  png_again.format = PNG_FORMAT_RGB;
+  if (png_image_write_to_memory(&png_again, encoded.data(), &size, 0, bytes.data(), 0, nullptr) == 0)
+    throw std::runtime_error(std::string("libpng: ") + (png_again.message[0] != '\0' ? png_again.message : "gave no reason"));
+  encoded.resize(size);
+  return encoded;
+#endif
+}
+
+namespace {
+
 // The background load of an ImageIoPreload, if one was started (image.h).
 std::mutex preload_mutex;
 std::shared_future<void> preload;

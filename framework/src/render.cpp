@@ -154,6 +154,15 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                                 std::to_string(settings.adaptive_batch));
   if (adaptive && settings.samples_by_noise)
     throw std::invalid_argument("adaptive sampling and samples by noise: choose one");
+  const int first_sample = settings.first_sample;
+  if (first_sample < 0 || first_sample >= settings.samples_per_pixel || settings.sample_count < 0 ||
+      settings.sample_count > settings.samples_per_pixel - first_sample)
+    throw std::invalid_argument("samples " + std::to_string(first_sample) + " and " +
+                                std::to_string(settings.sample_count) + " more: not within the pixel's " +
+                                std::to_string(settings.samples_per_pixel));
+  const int end_sample = settings.sample_count > 0 ? first_sample + settings.sample_count : settings.samples_per_pixel;
+  if ((first_sample > 0 || end_sample < settings.samples_per_pixel) && (adaptive || settings.samples_by_noise))
+    throw std::invalid_argument("a render in passes: not with adaptive sampling or samples by noise");
   const Camera& camera = scene.camera;
   RenderOutput output;
   output.mean = Image(camera.width, camera.height);
@@ -169,6 +178,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   // most kPilotSamples on average there is no rest to share: every pixel takes them all).
   const bool by_noise = settings.samples_by_noise && samples_per_pixel > kPilotSamples;
   const bool one_plain_sample = samples_per_pixel == 1 && !settings.track_variance && !adaptive;
+  const int samples_taken = end_sample - first_sample;  // per pixel (adaptive: the most; by noise: the average)
   const std::vector<Tile> tiles = make_tiles(camera.width, camera.height);
   // One pixel sample: the sampler started at it, its camera ray, and the radiance along it.
   const auto trace_sample = [&](int x, int y, int sample, Sampler& sampler, ShadingStats& tile_stats) {
@@ -205,7 +215,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                               continue;
                             }
                             PixelConvergence convergence;  // adaptive sampling: a pixel's samples depend on it alone
-                            for (int sample = 0; sample < samples_per_pixel; ++sample) {
+                            for (int sample = first_sample; sample < end_sample; ++sample) {
                               const glm::vec3 value = trace_sample(x, y, sample, sampler, tile_stats);
                               film->add_sample(x - tile.x0, y - tile.y0, value);
                               if (!adaptive) continue;
@@ -214,7 +224,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
                                   convergence.converged(settings.adaptive_tolerance))
                                 break;
                             }
-                            row_samples += adaptive ? convergence.count() : static_cast<std::uint32_t>(samples_per_pixel);
+                            row_samples += adaptive ? convergence.count() : static_cast<std::uint32_t>(samples_taken);
                             if (adaptive)
                               output.sample_rate.at(x, y) = glm::vec3(static_cast<float>(
                                   static_cast<double>(convergence.count()) / static_cast<double>(samples_per_pixel)));
@@ -351,7 +361,7 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
     }
     ProgressState state;
     state.fraction = adaptive ? static_cast<double>(pixels) / pixel_count
-                              : static_cast<double>(samples) / (pixel_count * samples_per_pixel);
+                              : static_cast<double>(samples) / (pixel_count * samples_taken);
     state.samples_per_pixel = static_cast<double>(samples) / pixel_count;
     state.samples_per_pixel_goal = samples_per_pixel;
     state.rays = rays;

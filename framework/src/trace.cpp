@@ -2,12 +2,17 @@
 
 #include "trace_text.h"
 
+#include <nlohmann/json.hpp>
+
 #include "raylab/math.h"
 #include "raylab/sampler.h"
 #include "raylab/stage_table.h"
 #include "raylab/stages/01_camera_rays.h"
 #include "raylab/stages/02_sphere.h"
+#include "raylab/stages/04_box.h"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 
@@ -19,6 +24,53 @@ std::string TraceStep::file() const {
   const StageDescription* description = find_stage_description(stage);
   return description && !description->files.empty() ? "assignments/" + std::string(description->files.front())
                                                     : std::string();
+}
+
+namespace {
+
+// The exact slab test, in double: the entry t into the closed box within the ray's interval, or
+// nullopt; and whether the ray only grazes it (entry and exit within rounding of each other).
+struct Slab {
+  double enter, exit;
+};
+Slab exact_slab(const Ray& ray, const Bounds3& box) {
+  double enter = ray.t_min, exit = ray.t_max;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double origin = ray.origin[axis], direction = ray.direction[axis];
+    if (direction == 0.0) {
+      if (origin < box.min[axis] || origin > box.max[axis]) return {1.0, 0.0};
+      continue;
+    }
+    double near_t = (box.min[axis] - origin) / direction, far_t = (box.max[axis] - origin) / direction;
+    if (near_t > far_t) std::swap(near_t, far_t);
+    enter = std::max(enter, near_t);
+    exit = std::min(exit, far_t);
+  }
+  return {enter, exit};
+}
+std::optional<float> exact_box_entry(const Ray& ray, const Bounds3& box) {
+  const Slab slab = exact_slab(ray, box);
+  if (!(slab.enter <= slab.exit)) return std::nullopt;
+  return static_cast<float>(slab.enter);
+}
+bool exact_box_grazes(const Ray& ray, const Bounds3& box) {
+  const Slab slab = exact_slab(ray, box);
+  return std::fabs(slab.exit - slab.enter) <= 1e-4 * std::max({1.0, std::fabs(slab.enter), std::fabs(slab.exit)});
+}
+
+}  // namespace
+
+float miss_length(const Scene& scene) {
+  Bounds3 bounds;
+  for (const Sphere& sphere : scene.spheres) {
+    bounds.extend(sphere.center - glm::vec3(sphere.radius));
+    bounds.extend(sphere.center + glm::vec3(sphere.radius));
+  }
+  for (const TriangleMesh& mesh : scene.meshes)
+    for (const glm::vec3& position : mesh.positions) bounds.extend(position);
+  bounds.extend(scene.camera.position);
+  const float diagonal = glm::length(bounds.extent());
+  return std::isfinite(diagonal) && diagonal > 0.0f ? diagonal : 1.0f;
 }
 
 int PixelTrace::first_disagreement() const {
@@ -85,9 +137,12 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
   struct Closest {
     float t = kInfinity;
     std::string what;
+    std::optional<std::size_t> sphere;  // the primitive: a sphere, else triangle of mesh
+    std::size_t mesh = 0, triangle = 0;
   } closest_yours, closest_contract;
-  const auto record = [](Closest& closest, const std::optional<float>& t, const std::string& what) {
-    if (t && *t < closest.t) closest = {*t, what};
+  const auto record = [](Closest& closest, const std::optional<float>& t, const std::string& what,
+                         std::optional<std::size_t> sphere, std::size_t mesh, std::size_t triangle) {
+    if (t && *t < closest.t) closest = {*t, what, sphere, mesh, triangle};
   };
   // A stub is shown once, at its first call; the calls after it are not listed.
   bool sphere_stub_shown = false, triangle_stub_shown = false;
@@ -98,8 +153,8 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
         yours([&] { return your_sphere_test(ray, sphere.center, sphere.radius); }, stub);
     const std::optional<float> expected = contract.sphere(ray, sphere.center, sphere.radius);
     const std::string what = words("sphere ", "球 ") + std::to_string(i);
-    if (got) record(closest_yours, *got, what);
-    record(closest_contract, expected, what);
+    if (got) record(closest_yours, *got, what, i, 0, 0);
+    record(closest_contract, expected, what, i, 0, 0);
     if ((!stub && !*got && !expected) || (stub && sphere_stub_shown)) {
       ++trace.untouched_spheres;
       continue;
@@ -125,8 +180,8 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       const std::string mesh_name = mesh.name.empty() ? std::to_string(m) : "\"" + mesh.name + "\"";
       const std::string what = settings.chinese ? "网格 " + mesh_name + " 的三角形 " + std::to_string(k)
                                                 : "triangle " + std::to_string(k) + " of mesh " + mesh_name;
-      if (got && *got) record(closest_yours, (*got)->t_hit, what);
-      if (expected) record(closest_contract, expected->t_hit, what);
+      if (got && *got) record(closest_yours, (*got)->t_hit, what, std::nullopt, m, k);
+      if (expected) record(closest_contract, expected->t_hit, what, std::nullopt, m, k);
       if ((!stub && !*got && !expected) || (stub && triangle_stub_shown)) {
         ++trace.untouched_triangles;
         continue;
@@ -149,6 +204,67 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
                     closest_text(closest_yours), closest_text(closest_contract)};
   closest.agrees = closest_yours.what == closest_contract.what && near(closest_yours.t, closest_contract.t);
   trace.steps.push_back(closest);
+  trace.segments.push_back(
+      {ray.origin, ray.origin + ray.direction * (closest_yours.what.empty() ? miss_length(scene) : closest_yours.t),
+       TraceSegment::Kind::Camera});
+
+  // The trees' nodes from the root down to the leaf that holds the contract's closest hit: the
+  // ray enters every one of their boxes (each holds that primitive) before it reaches the hit, so
+  // your box test must say so (stage 04); then whether your traversal tested that primitive
+  // (stage 05) and how many it tested in all. `trees_agree`: the trees' closest hit is the
+  // contract's (then not testing it, on a tie, is fine; else the traversal is marked).
+  const auto trace_tree_path = [&](const SceneGeometry& geometry, const Ray& camera_ray, const Closest& target,
+                                   bool trees_agree) {
+    const SceneGeometry::TreeWalk walk = geometry.walk_to(camera_ray, target.sphere, target.mesh, target.triangle);
+    const glm::vec3 inverse = ray_direction_inverse_of(camera_ray);
+    for (const SceneGeometry::TreeNodeOnPath& node : walk.path) {
+      const std::string tree =
+          node.mesh < 0 ? words("the tree over the objects", "物体之上的树")
+                        : (settings.chinese ? "网格 " : "mesh ") +
+                              (scene.meshes[static_cast<std::size_t>(node.mesh)].name.empty()
+                                   ? std::to_string(node.mesh)
+                                   : "\"" + scene.meshes[static_cast<std::size_t>(node.mesh)].name + "\"") +
+                              words("'s tree", " 的树");
+      bool stub = false;
+      const std::optional<std::optional<float>> got =
+          yours([&] { return intersect_ray_box(camera_ray, inverse, node.box); }, stub);
+      const std::optional<float> expected = exact_box_entry(camera_ray, node.box);
+      TraceStep step{"04_box", "intersect_ray_box",
+                     "intersect_ray_box(ray, 1 / direction, " + text(node.box.min) + " - " + text(node.box.max) +
+                         ")   [" + words("node ", "节点 ") + std::to_string(node.node) + words(" of ", "，") + tree +
+                         words(", depth ", "，深度 ") + std::to_string(node.depth) + "]",
+                     stub ? not_written : (got && *got ? words("enters at t = ", "在 t = ") + text(**got) + words("", " 处进入")
+                                                       : words("misses", "没有击中")),
+                     expected ? words("enters at t = ", "在 t = ") + text(*expected) + words("", " 处进入") +
+                                    words(" (it holds ", "（它包含") + target.what + words(")", "）")
+                              : words("misses (it grazes the box)", "没有击中（光线擦过包围盒）")};
+      step.agrees = !stub && ((got && *got && expected && near(**got, *expected, 1e-3)) || (!expected && got && !*got));
+      // A ray that grazes the box within rounding may be called a hit or a miss.
+      if (!step.agrees && !stub && exact_box_grazes(camera_ray, node.box)) step.agrees = true;
+      trace.steps.push_back(step);
+    }
+    if (walk.path.empty()) return;
+    TraceStep tested{"05_bvh", "intersect_bvh",
+                     words("the primitives your intersect_bvh tested along the camera ray",
+                           "你的 intersect_bvh 沿相机光线测试的图元"),
+                     (walk.tested ? words("tested ", "测试了") : words("never tested ", "从未测试")) + target.what +
+                         words("; ", "；") + std::to_string(walk.primitive_tests) +
+                         words(" primitive tests in all", " 次图元测试"),
+                     words("tests ", "测试") + target.what + words(" (the closest hit)", "（最近的交点）")};
+    // The trees' hit is the contract's: fine, tested or not (another primitive at the same t). Else
+    // the traversal lost it, by not testing it or by not keeping it.
+    tested.agrees = trees_agree;
+    if (!tested.agrees)
+      tested.note = walk.tested
+                        ? words("your traversal tested it and still returned another hit: look at how intersect_bvh "
+                                "keeps the closest hit (and lowers the ray's t_max after each hit)",
+                                "你的遍历测试了它，却返回了另一个交点：请检查 intersect_bvh 如何保留最近的交点（以及每次击中后降低光线的 "
+                                "t_max）")
+                        : words("your traversal never tested it: look at intersect_bvh (which children it visits, and "
+                                "when it stops), and at the box tests above",
+                                "你的遍历从未测试它：请检查 intersect_bvh（访问哪些子节点，何时停止）以及上面的包围盒测试");
+    trace.steps.push_back(tested);
+  };
 
   // The closest hit through your trees (stage 04's box test, stage 05's build and traversal),
   // where the renderer uses them: the same as the tests above give, or a hit the trees lost.
@@ -168,6 +284,9 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
                           "intersect_bvh) and stage 04 (intersect_ray_box)",
                           "上面的测试找到了契约的交点，树却找到了另一个：请检查阶段 05（build_bvh、intersect_bvh）和阶段 04"
                           "（intersect_ray_box）");
+      // The nodes on the way to the contract's hit first: a box test or a traversal that loses it
+      // is then the first disagreement, rather than the hit it lost.
+      if (contract_hits) trace_tree_path(geometry, ray, closest_contract, step.agrees);
       trace.steps.push_back(step);
     }
   } catch (const NotImplemented&) {
@@ -243,6 +362,56 @@ void print_trace(std::ostream& out, const std::string& scene_path, const PixelTr
     out << (first < 0
                 ? std::string("Every call agrees with the contract along this ") + (monte_carlo ? "path" : "ray") + ".\n"
                 : "Start at the first disagreement: the steps after it may differ only because of it.\n");
+}
+
+void write_trace_json(std::ostream& out, const Camera& camera, const PixelTrace& trace) {
+  const bool zh = trace.settings.chinese;
+  const bool monte_carlo =
+      trace.settings.integrator == IntegratorKind::DirectLight || trace.settings.integrator == IntegratorKind::Path;
+  nlohmann::json steps = nlohmann::json::array();
+  for (const TraceStep& step : trace.steps)
+    steps.push_back({{"stage", step.stage},
+                     {"function", step.function},
+                     {"file", step.file()},
+                     {"call", step.call},
+                     {"yours", step.yours},
+                     {"expected", step.expected},
+                     {"note", step.note},
+                     {"agrees", step.agrees}});
+  nlohmann::json segments = nlohmann::json::array();
+  for (const TraceSegment& segment : trace.segments) {
+    const std::optional<std::array<glm::vec2, 2>> ends = project_segment_to_raster(camera, segment.from, segment.to);
+    if (!ends) continue;
+    segments.push_back({{"from", {(*ends)[0].x, (*ends)[0].y}},
+                        {"to", {(*ends)[1].x, (*ends)[1].y}},
+                        {"kind", segment.kind == TraceSegment::Kind::Camera   ? "camera"
+                                 : segment.kind == TraceSegment::Kind::Bounce ? "bounce"
+                                                                              : "shadow"}});
+  }
+  const int first = trace.first_disagreement();
+  std::string summary;
+  if (first < 0) {
+    summary = zh ? std::string("沿这条") + (monte_carlo ? "路径" : "光线") + "的每个调用都与契约一致。"
+                 : std::string("Every call agrees with the contract along this ") + (monte_carlo ? "path" : "ray") + ".";
+  } else {
+    const TraceStep& step = trace.steps[static_cast<std::size_t>(first)];
+    const std::string where = step.function.empty() ? step.call : step.function;
+    summary = zh ? "第一个不一致之处在第 " + std::to_string(first + 1) + " 步：" + where +
+                       "。它之后的步骤可能只是因为它才不同。"
+                 : "The first disagreement is step " + std::to_string(first + 1) + ", " + where +
+                       ": the steps after it may differ only because of it.";
+  }
+  // Texts may hold bytes a stage printed into a value's words: replaced, never a failed dump.
+  out << nlohmann::json{{"ok", true},
+                        {"x", trace.x},
+                        {"y", trace.y},
+                        {"sample", trace.settings.sample},
+                        {"steps", steps},
+                        {"first_disagreement", first},
+                        {"summary", summary},
+                        {"segments", segments}}
+             .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)
+      << "\n";
 }
 
 }  // namespace raylab

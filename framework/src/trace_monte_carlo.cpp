@@ -501,6 +501,29 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
   }
   const std::vector<RecordedCall>& calls = recorder.calls;
   const std::vector<PathVertex> path = path_of(calls, camera_ray);
+  // The rays to draw: the path's, and every other ray as a shadow ray (the camera ray's segment
+  // kept when your code traced no path).
+  if (!path.empty()) {
+    trace.segments.clear();
+    const float far = miss_length(scene);
+    const auto end_of = [&](const Ray& ray, float t) {
+      return ray.origin + ray.direction * std::min(t, std::isfinite(ray.t_max) ? std::min(ray.t_max, far) : far);
+    };
+    std::vector<bool> on_path(calls.size(), false);
+    for (const PathVertex& vertex : path) on_path[vertex.first - 1] = true;
+    for (std::size_t i = 0; i < calls.size(); ++i) {
+      const RecordedCall& call = calls[i];
+      if (call.kind == Kind::Occluded) {
+        trace.segments.push_back({call.ray.origin, end_of(call.ray, far), TraceSegment::Kind::Shadow});
+      } else if (call.kind == Kind::Intersect) {
+        const float t = call.hit ? call.hit->t_hit : far;
+        trace.segments.push_back({call.ray.origin, end_of(call.ray, t),
+                                  !on_path[i]               ? TraceSegment::Kind::Shadow
+                                  : i + 1 == path.front().first ? TraceSegment::Kind::Camera
+                                                           : TraceSegment::Kind::Bounce});
+      }
+    }
+  }
 
   std::vector<SurfaceTerms> surfaces;
   glm::dvec3 throughput(1.0);        // the contract's, for the roulette's p

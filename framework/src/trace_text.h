@@ -4,6 +4,7 @@
 
 #include "raylab/error.h"
 #include "raylab/ray.h"
+#include "raylab/scene.h"
 #include "raylab/stages/03_triangle.h"
 
 #include <glm/glm.hpp>
@@ -14,6 +15,12 @@
 #include <optional>
 #include <sstream>
 #include <string>
+
+namespace raylab {
+// How long a ray that hits nothing is drawn (TraceSegment): the diagonal of the box around the
+// scene and its camera (trace.cpp).
+float miss_length(const Scene& scene);
+}  // namespace raylab
 
 namespace raylab::trace_text {
 
@@ -41,10 +48,13 @@ inline bool near(const glm::dvec3& a, const glm::dvec3& b, double relative = 1e-
 inline bool near(const std::optional<float>& a, const std::optional<float>& b) {
   return a.has_value() == b.has_value() && (!a || near(*a, *b));
 }
+// Barycentrics lie in [0, 1] and a float test rounds them by up to about 1e-4 where the ray meets
+// the triangle's plane at a grazing angle: they agree within 1e-4 (a mistake, b1 and b2 swapped or
+// left unnormalised, differs far more).
 inline bool near(const std::optional<TriangleHit>& a, const std::optional<TriangleHit>& b) {
   return a.has_value() == b.has_value() &&
-         (!a || (near(a->t_hit, b->t_hit) && near(a->barycentric_b1, b->barycentric_b1) &&
-                 near(a->barycentric_b2, b->barycentric_b2)));
+         (!a || (near(a->t_hit, b->t_hit) && std::fabs(a->barycentric_b1 - b->barycentric_b1) <= 1e-4 &&
+                 std::fabs(a->barycentric_b2 - b->barycentric_b2) <= 1e-4));
 }
 
 // Your function's answer, or nullopt with `not_written` set when it is a stub.

@@ -57,6 +57,9 @@ for system in debian-12 debian-13 ubuntu-22.04 ubuntu-24.04; do
       for needed in cmake ninja-build g++ libopenimageio-dev libgtest-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev libglm-dev libpng-dev; do
         grep -qxF "$needed" "$work/installed" || fail "$system $flag: $needed was not installed"
       done
+      # raylab view's HTTP library, where the archive has it (not on Ubuntu 22.04).
+      [ "$system" = ubuntu-22.04 ] || grep -qxF libcpp-httplib-dev "$work/installed" ||
+        fail "$system $flag: libcpp-httplib-dev was not installed"
       case "$flag" in --test) grep -qxF clang "$work/installed" || fail "$system --test: no clang" ;;
                       --windows) grep -qxF wine64 "$work/installed" || fail "$system --windows: no wine64" ;; esac
     else

@@ -10,6 +10,8 @@
 
 #include "raylab/math.h"
 
+#include <array>
+#include <optional>
 #include <ostream>
 
 namespace raylab {
@@ -36,5 +38,17 @@ struct Camera {
 void validate_camera(const Camera& camera);
 
 std::ostream& operator<<(std::ostream& out, const Camera& camera);
+
+// Where a point of the scene shows on the picture (`raylab view` draws paths and boxes with it):
+// its raster position, x to the right and y down from the image's top left corner, so that pixel
+// (i, j) covers [i, i + 1) x [j, j + 1); the inverse of the kit's exact camera rays
+// (raylab/testkit/exact_tracing.h). nullopt for a point not in front of the camera. The camera
+// must be valid (validate_camera).
+std::optional<glm::vec2> project_to_raster(const Camera& camera, const glm::vec3& point);
+
+// The part of the segment from a to b that lies in front of the camera, projected; nullopt when
+// no part does.
+std::optional<std::array<glm::vec2, 2>> project_segment_to_raster(const Camera& camera, const glm::vec3& a,
+                                                                   const glm::vec3& b);
 
 }  // namespace raylab

@@ -128,6 +128,28 @@ class SceneGeometry {
   std::size_t triangle_count() const { return triangles_.size(); }
   // The number of BVHs in use (per mesh and top level); 0 when every primitive is tested.
   std::size_t bvh_count() const;
+  // The boxes of those trees' nodes by depth (`raylab view` draws one level at a time): the tree
+  // over the objects from depth 0, each mesh's tree from the depth below the leaf that holds its
+  // mesh (from 0 when there is no tree over the objects). Empty when no tree is in use.
+  std::vector<std::vector<Bounds3>> tree_boxes_by_level() const;
+
+  // How the trees lead a ray to one primitive (`raylab trace`): the nodes from the root down to
+  // the leaf that holds it (the tree over the objects, then its mesh's tree), and which primitive
+  // tests intersect(ray) called. The primitive: `sphere`, an index into scene.spheres, or
+  // triangle `triangle` of scene.meshes[mesh] when `sphere` is nullopt.
+  struct TreeNodeOnPath {
+    int mesh = -1;  // -1: a node of the tree over the objects; else the index of the mesh whose tree
+    std::uint32_t node = 0;
+    int depth = 0;  // as tree_boxes_by_level counts it
+    Bounds3 box;
+  };
+  struct TreeWalk {
+    std::vector<TreeNodeOnPath> path;  // root first; empty when no tree holds the primitive
+    bool tested = false;               // intersect(ray) called the primitive's test
+    std::uint64_t primitive_tests = 0;  // every primitive test it called
+    std::optional<float> t_hit;        // what it found
+  };
+  TreeWalk walk_to(const Ray& ray, std::optional<std::size_t> sphere, std::size_t mesh, std::size_t triangle) const;
 
   // Over the objects: spheres first, then meshes. Top-level BVHs are built from more than
   // this many objects, per-mesh BVHs from more than this many triangles; leaves hold at most
@@ -196,6 +218,7 @@ class SceneGeometry {
   bool record_is_of_object(const HitRecord& record, std::uint32_t object, float t_hit) const;
   static std::optional<float> test_object(void* query, const Ray& ray, std::uint32_t object);
   static std::optional<float> test_triangle(void* query, const Ray& ray, std::uint32_t triangle);
+  static std::optional<float> test_triangle_watched(void* query, const Ray& ray, std::uint32_t triangle);
 
   const Scene& scene_;
   std::vector<Sphere> spheres_;

@@ -50,6 +50,10 @@ void write_image(const Image& image, const std::string& path);
 // long work whose result would then be lost.
 void check_image_extension(const std::string& path);
 
+// The bytes of the PNG file write_image would write for `image` (`raylab view` serves them).
+// Throws std::runtime_error if it cannot.
+std::string encode_png(const Image& image);
+
 // Whether write_image(image, path) goes through OpenImageIO (an .exr file).
 bool writes_through_openimageio(const std::string& path);
 

@@ -36,6 +36,12 @@ struct RenderSettings {
   // (allot_samples_by_noise below). Not together with adaptive_tolerance.
   bool samples_by_noise = false;
   std::uint64_t seed = 0;       // changes every random number (an independent render)
+  // Only samples first_sample .. first_sample + sample_count - 1 of each pixel's samples_per_pixel
+  // (0: all from first_sample on): a pass of a render made in passes (`raylab view`). Their mean is
+  // the picture; the passes' means weighted by their counts give the whole render's. Not with
+  // adaptive_tolerance or samples_by_noise.
+  int first_sample = 0;
+  int sample_count = 0;
   bool track_variance = false;  // also give each pixel's variance of the mean (render_with_variance)
   int max_depth = 5;
   RussianRoulette roulette;  // --roulette: how the path tracer's paths end (default: no roulette)
@@ -96,7 +102,7 @@ std::vector<std::uint32_t> allot_samples_by_noise(const std::vector<float>& nois
 // Renders scene.camera's view: each pixel's mean, and its variance of the mean when
 // settings.track_variance. Exceptions from stage functions (NotImplemented, ...) stop the
 // render and are rethrown here, from the calling thread. Throws std::invalid_argument for
-// samples_per_pixel outside [1, kMaxSamplesPerPixel].
+// samples_per_pixel outside [1, kMaxSamplesPerPixel] and for samples outside them.
 RenderOutput render_with_variance(const Scene& scene, const RenderSettings& settings, RenderStats* stats = nullptr);
 
 // The image alone: render_with_variance(...).mean.

@@ -6,7 +6,10 @@
 //   What is traced:
 //   - the camera ray (stage 01), and along the contract's camera ray every sphere and triangle
 //     test (stages 02 and 03) that your code or the contract hits, and the closest hit;
-//   - the closest hit through your trees (stages 04-05), where the renderer uses them;
+//   - the closest hit through your trees (stages 04-05), where the renderer uses them, and the
+//     trees' nodes from the root down to the leaf that holds the contract's closest hit: your box
+//     test on each of their boxes (the ray enters each, as each holds that primitive), and whether
+//     your traversal tested that primitive, with the count of primitive tests it made;
 //   - with --integrator direct or path (trace_monte_carlo.cpp): the path your code took, surface
 //     by surface: the closest hit of each bounce ray, at each diffuse surface lambertian_f, the
 //     light's point density (stage 07) and area_pdf_to_solid_angle, estimate_direct_light called
@@ -14,8 +17,8 @@
 //     07) and Russian roulette, and the sample's value (path_radiance, stage 09; or, with
 //     direct, the framework's around your estimate_direct_light) against the value the
 //     contract's rules give for the same surfaces, light samples and bounces.
-//   Not traced: the trees' nodes (stages 04-05), Whitted's bounces, and the mis integrator's
-// vertices (stage 09b).
+//   Not traced: the nodes a traversal visits off that path, Whitted's bounces, and the mis
+// integrator's vertices (stage 09b).
 #pragma once
 
 #include "raylab/geometry.h"
@@ -70,6 +73,14 @@ struct TraceSettings {
   bool chinese = false;
 };
 
+// A ray of the path your code took, from where it starts to what it hit (or as far as the
+// scene's size past it), for drawing over the picture (`raylab view`).
+struct TraceSegment {
+  enum class Kind { Camera, Bounce, Shadow };
+  glm::vec3 from{0.0f}, to{0.0f};
+  Kind kind = Kind::Camera;
+};
+
 struct PixelTrace {
   int x = 0, y = 0;
   TraceSettings settings;
@@ -77,6 +88,9 @@ struct PixelTrace {
   std::vector<TraceStep> steps;
   // Not listed: missed by yours and the contract alike, or a stub's calls after its first.
   int untouched_spheres = 0, untouched_triangles = 0;
+  // The rays your code traced for this sample: the camera ray to your closest hit; with direct
+  // and path, the path's rays and shadow rays as your code made them.
+  std::vector<TraceSegment> segments;
   // The index of the first step that disagrees, or -1.
   int first_disagreement() const;
 };
@@ -95,5 +109,12 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
 // The trace as the terminal shows it: every step, the first disagreement marked with its stage and
 // function, and what to do next.
 void print_trace(std::ostream& out, const std::string& scene_path, const PixelTrace& trace);
+
+// The trace as JSON (`raylab trace --json`, which `raylab view` reads): {"ok": true, "x", "y",
+// "sample", "steps": [{"stage", "function", "file", "call", "yours", "expected", "note",
+// "agrees"}], "first_disagreement" (-1: none), "summary", "segments": [{"from": [x, y], "to":
+// [x, y], "kind": "camera" | "bounce" | "shadow"}]}, the segments in the picture's raster
+// coordinates (project_segment_to_raster; a segment wholly behind the camera left out).
+void write_trace_json(std::ostream& out, const Camera& camera, const PixelTrace& trace);
 
 }  // namespace raylab
