@@ -16,6 +16,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <signal.h>
 #include <filesystem>
 #include <thread>
 
@@ -150,7 +151,7 @@ TEST(ViewTree, LevelsHoldEveryNodeBelowTheRoot) {
 
 TEST(ViewChild, IsKilledWhenItsTimeIsUp) {
   const auto start = std::chrono::steady_clock::now();
-  const view::ChildResult result = view::run_child({"/bin/sh", "-c", "echo started; sleep 30"}, 0.5, 1000);
+  const view::ChildResult result = view::run_child({"/bin/sh", "-c", "echo started; sleep 30"}, 3.0, 1000);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
   EXPECT_TRUE(result.timed_out);
   EXPECT_EQ(result.output, "started\n");
@@ -162,8 +163,8 @@ TEST(ViewChild, ACrashIsNamedInWords) {
   const view::ChildResult crash = view::run_child({"/bin/sh", "-c", "kill -SEGV $$"}, 10.0, 1000);
   EXPECT_EQ(crash.signal, SIGSEGV);
   EXPECT_EQ(view::describe_child_end(crash, "rendering", false),
-            "your code crashed while rendering: segmentation fault (signal 11)");
-  EXPECT_EQ(view::describe_child_end(crash, "渲染", true), "你的代码在渲染时崩溃了：段错误（segmentation fault，信号 11）");
+            "your code crashed while rendering: segmentation fault (signal 11).");
+  EXPECT_EQ(view::describe_child_end(crash, "渲染", true), "你的代码在渲染时崩溃了：段错误（segmentation fault，信号 11）。");
   // The program's own last message, e.g. a stage not written yet.
   const view::ChildResult stub = view::run_child(
       {"/bin/sh", "-c", "echo 'raylab: stage 02_sphere is not implemented yet' >&2; exit 2"}, 10.0, 1000);
@@ -171,9 +172,34 @@ TEST(ViewChild, ACrashIsNamedInWords) {
   EXPECT_EQ(view::describe_child_end(stub, "rendering", false), "raylab: stage 02_sphere is not implemented yet");
   const view::ChildResult missing = view::run_child({"/nonexistent/raylab"}, 10.0, 1000);
   EXPECT_EQ(missing.exit_code, 127);
+  EXPECT_EQ(view::describe_child_end(missing, "tracing this pixel", false),
+            "raylab: cannot start the program /nonexistent/raylab");
+  // A child that closes its output and goes on is still stopped in time, and its group with it.
+  const auto start = std::chrono::steady_clock::now();
+  const view::ChildResult closed = view::run_child({"/bin/sh", "-c", "exec >&- 2>&-; sleep 30"}, 2.0, 1000);
+  EXPECT_TRUE(closed.timed_out);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  // Exit 0 with no answer is said as such.
+  const view::ChildResult silent = view::run_child({"/bin/sh", "-c", "exit 0"}, 10.0, 1000);
+  EXPECT_EQ(view::describe_child_end(silent, "tracing this pixel", false),
+            "your program gave no answer while tracing this pixel (its output was not what was expected).");
   // Output is kept to its last bytes.
   const view::ChildResult flood = view::run_child({"/bin/sh", "-c", "yes raylab | head -c 100000"}, 10.0, 64);
   EXPECT_EQ(flood.output.size(), 64u);
+}
+
+TEST(ViewTreeJson, OnlyLevelsOfFiniteRectanglesAreTaken) {
+  const auto taken = view::checked_tree_json(R"({"levels": [[[0, 1, 2, 3]], [[0, 0, 1, 1], [2, 2, 3.5, 4]]]})");
+  ASSERT_TRUE(taken.has_value());
+  EXPECT_EQ(taken->second, 2);
+  EXPECT_EQ(nlohmann::json::parse(taken->first)["levels"][1][1][2], 3.5);
+  for (const char* refused : {"", "[]", R"({"levels": 3})", R"({"levels": [[[0, 1, 2]]]})",
+                              R"({"levels": [[[0, 1, 2, "3"]]]})", R"({"levels": [[[0, 1, 2, 1e999]]]})",
+                              R"({"levels": [[[[[[0]]]]]]})"})
+    EXPECT_FALSE(view::checked_tree_json(refused).has_value()) << refused;
+  // Deeply nested JSON is refused, not followed down.
+  EXPECT_FALSE(view::checked_tree_json(R"({"levels": )" + std::string(100000, '[') + std::string(100000, ']') + "}")
+                   .has_value());
 }
 
 TEST(ViewDifference, IsBlackWhereEqualAndYellowFromATenth) {
@@ -266,6 +292,22 @@ TEST_F(ViewServerTest, StopsAndGoesOn) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   EXPECT_GT(status(server)["samples_per_pixel"].get<int>(), samples) << "continue did not go on";
   EXPECT_EQ(nlohmann::json::parse(server.go_on())["ok"], false);  // it is rendering
+  const int group = view::ViewServer::running_group();
+  ASSERT_GT(group, 0);
+  EXPECT_EQ(::kill(group, 0), 0);
+}
+
+TEST_F(ViewServerTest, LeavesNoProcessBehind) {
+  int group = 0;
+  {
+    view::ViewServer server(options(RAYLAB_REFERENCE_PROGRAM, "cornell.json", 1 << 20));
+    server.start();
+    for (int i = 0; i < 600 && (group = view::ViewServer::running_group()) == 0; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    ASSERT_GT(group, 0);
+  }
+  EXPECT_EQ(view::ViewServer::running_group(), 0);
+  EXPECT_EQ(::kill(-group, 0), -1) << "the renderer's group outlived the server";
 }
 
 TEST_F(ViewServerTest, TracesAPixel) {
@@ -296,11 +338,11 @@ TEST_F(ViewServerTest, ARendererThatFailsLeavesTheServerUp) {
   };
   for (const Case& c :
        {Case{program("stub", "echo 'raylab: stage 01_camera_rays is not implemented yet' >&2; exit 2"),
-             "raylab: stage 01_camera_rays is not implemented yet The page stays up: fix your code, build it again and "
+             "raylab: stage 01_camera_rays is not implemented yet. The page stays up: fix your code, build it again and "
              "press continue.",
              "raylab: stage 01_camera_rays is not implemented yet"},
         Case{program("crash", "echo 'my debug line'; kill -SEGV $$"),
-             "your code crashed while rendering: segmentation fault (signal 11) The page stays up",
+             "your code crashed while rendering: segmentation fault (signal 11). The page stays up",
              "your code crashed while tracing this pixel: segmentation fault (signal 11)"}}) {
     view::ViewOptions o = options(c.renderer, "cornell.json", 4);
     view::ViewServer server(o);

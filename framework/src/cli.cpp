@@ -23,9 +23,15 @@
 #if defined(_WIN32)
 #include <io.h>
 #define RAYLAB_ISATTY(stream) (::_isatty(::_fileno(stream)) != 0)
+#define RAYLAB_DUP(fd) ::_dup(fd)
+#define RAYLAB_DUP2(from, to) ::_dup2(from, to)
+#define RAYLAB_WRITE(fd, bytes, size) ::_write(fd, bytes, static_cast<unsigned>(size))
 #else
 #include <unistd.h>
 #define RAYLAB_ISATTY(stream) (::isatty(::fileno(stream)) != 0)
+#define RAYLAB_DUP(fd) ::dup(fd)
+#define RAYLAB_DUP2(from, to) ::dup2(from, to)
+#define RAYLAB_WRITE(fd, bytes, size) ::write(fd, bytes, size)
 #endif
 
 namespace raylab {
@@ -211,11 +217,26 @@ int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.roulette = roulette;
   settings.chinese = options.language == "zh";
+  if (!options.json) {
+    print_trace(std::cout, options.scene_path, trace_pixel(scene, options.pixel[0], options.pixel[1], settings, contract));
+    return kExitOk;
+  }
+  // --json: what the stage code prints goes to stderr, so that stdout holds the JSON alone.
+  std::fflush(stdout);
+  std::cout.flush();
+  const int json_out = RAYLAB_DUP(1);
+  if (json_out < 0 || RAYLAB_DUP2(2, 1) < 0) throw InputError("--json: cannot keep stdout for the JSON");
   const PixelTrace trace = trace_pixel(scene, options.pixel[0], options.pixel[1], settings, contract);
-  if (options.json)
-    write_trace_json(std::cout, scene.camera, trace);
-  else
-    print_trace(std::cout, options.scene_path, trace);
+  std::ostringstream json;
+  write_trace_json(json, scene.camera, trace);
+  std::fflush(stdout);
+  std::cout.flush();
+  const std::string text = json.str();
+  for (std::size_t written = 0; written < text.size();) {
+    const auto n = RAYLAB_WRITE(json_out, text.data() + written, text.size() - written);
+    if (n <= 0) throw InputError("--json: cannot write the JSON to stdout");
+    written += static_cast<std::size_t>(n);
+  }
   return kExitOk;
 }
 
@@ -236,7 +257,7 @@ int run_view(const char* program, const std::vector<std::string>& arguments) {
 #if defined(_WIN32)
   (void)program;
   (void)arguments;
-  throw UsageError("view: not available on Windows yet (raylab render and raylab trace are)");
+  throw UsageError("view: only on Linux for now (raylab render and raylab trace work here)");
 #else
   std::string self = program;
   char resolved[4096];

@@ -97,6 +97,19 @@ std::string write_ppm(const Image& image, const std::string& path) {
   return "cannot write the whole file";
 }
 
+#if !defined(RAYLAB_NO_PNG)
+// libpng's simplified API's description of an 8-bit RGB picture of the image's size.
+png_image png_of(const Image& image) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  png.width = static_cast<png_uint_32>(image.width());
+  png.height = static_cast<png_uint_32>(image.height());
+  png.format = PNG_FORMAT_RGB;
+  return png;
+}
+std::string png_reason(const png_image& png) { return png.message[0] != '\0' ? png.message : "libpng gave no reason"; }
+#endif
+
 // PNG through libpng's simplified API, which marks the file as sRGB (its sRGB chunk) and
 // removes a file it could not write whole. Returns "" or the reason.
 std::string write_png(const Image& image, const std::string& path) {
@@ -107,13 +120,9 @@ std::string write_png(const Image& image, const std::string& path) {
          "where CMake found no libpng), so it cannot write .png files (.ppm it can)";
 #else
   const std::vector<unsigned char> bytes = srgb_bytes(image);
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  png.width = static_cast<png_uint_32>(image.width());
-  png.height = static_cast<png_uint_32>(image.height());
-  png.format = PNG_FORMAT_RGB;
+  png_image png = png_of(image);
   if (png_image_write_to_file(&png, path.c_str(), 0, bytes.data(), 0, nullptr) != 0) return "";
-  return png.message[0] != '\0' ? png.message : "libpng gave no reason";
+  return png_reason(png);
 #endif
 }
 
@@ -125,22 +134,14 @@ std::string encode_png(const Image& image) {
   throw std::runtime_error("this build has no libpng, so it cannot make a PNG picture");
 #else
   const std::vector<unsigned char> bytes = srgb_bytes(image);
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  png.width = static_cast<png_uint_32>(image.width());
-  png.height = static_cast<png_uint_32>(image.height());
-  png.format = PNG_FORMAT_RGB;
+  // The size first, then the bytes (each call takes a fresh description).
+  png_image measure = png_of(image), write = png_of(image);
   png_alloc_size_t size = 0;
-  if (png_image_write_to_memory(&png, nullptr, &size, 0, bytes.data(), 0, nullptr) == 0 || size == 0)
-    throw std::runtime_error(std::string("libpng: ") + (png.message[0] != '\0' ? png.message : "gave no reason"));
+  if (png_image_write_to_memory(&measure, nullptr, &size, 0, bytes.data(), 0, nullptr) == 0 || size == 0)
+    throw std::runtime_error("cannot make a PNG picture: " + png_reason(measure));
   std::string encoded(size, '\0');
-  png_image png_again{};
-  png_again.version = PNG_IMAGE_VERSION;
-  png_again.width = png.width;
-  png_again.height = png.height;
-  png_again.format = PNG_FORMAT_RGB;
-  if (png_image_write_to_memory(&png_again, encoded.data(), &size, 0, bytes.data(), 0, nullptr) == 0)
-    throw std::runtime_error(std::string("libpng: ") + (png_again.message[0] != '\0' ? png_again.message : "gave no reason"));
+  if (png_image_write_to_memory(&write, encoded.data(), &size, 0, bytes.data(), 0, nullptr) == 0)
+    throw std::runtime_error("cannot make a PNG picture: " + png_reason(write));
   encoded.resize(size);
   return encoded;
 #endif

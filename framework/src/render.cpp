@@ -140,7 +140,21 @@ std::vector<std::uint32_t> allot_samples_by_noise(const std::vector<float>& nois
   return samples;
 }
 
+SceneGeometry render_geometry(const Scene& scene, const RenderSettings& settings) {
+  return SceneGeometry(scene, settings.skips.no_bvh_for_small_sets ? Acceleration::Bvh : Acceleration::BvhAlways,
+                       settings.triangle_test, settings.tracing);
+}
+
 RenderOutput render_with_variance(const Scene& scene, const RenderSettings& settings, RenderStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  const SceneGeometry geometry = render_geometry(scene, settings);
+  RenderOutput output = render_with_variance(scene, geometry, settings, stats);
+  if (stats) stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return output;
+}
+
+RenderOutput render_with_variance(const Scene& scene, const SceneGeometry& geometry, const RenderSettings& settings,
+                                  RenderStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   if (settings.samples_per_pixel < 1 || settings.samples_per_pixel > kMaxSamplesPerPixel)
     throw std::invalid_argument("samples per pixel must be in [1, " + std::to_string(kMaxSamplesPerPixel) +
@@ -168,8 +182,6 @@ RenderOutput render_with_variance(const Scene& scene, const RenderSettings& sett
   output.mean = Image(camera.width, camera.height);
   if (settings.track_variance) output.variance_of_mean = Image(camera.width, camera.height);
   if (adaptive || settings.samples_by_noise) output.sample_rate = Image(camera.width, camera.height, glm::vec3(1.0f));
-  const SceneGeometry geometry(scene, settings.skips.no_bvh_for_small_sets ? Acceleration::Bvh : Acceleration::BvhAlways,
-                               settings.triangle_test, settings.tracing);
   const auto camera_ray = settings.tracing.camera_ray ? settings.tracing.camera_ray : generate_camera_ray;
   const RenderContext context(scene, geometry, settings.max_depth, settings.skips, settings.roulette);
   const Integrator integrator(settings.integrator);

@@ -53,7 +53,11 @@ std::optional<float> exact_box_entry(const Ray& ray, const Bounds3& box) {
   if (!(slab.enter <= slab.exit)) return std::nullopt;
   return static_cast<float>(slab.enter);
 }
+// A box of some thickness on every axis: a flat one (a wall's) is crossed at one t, and the
+// closed box's contract says that is a hit.
 bool exact_box_grazes(const Ray& ray, const Bounds3& box) {
+  const glm::vec3 extent = box.extent();
+  if (!(extent.x > 0.0f && extent.y > 0.0f && extent.z > 0.0f)) return false;
   const Slab slab = exact_slab(ray, box);
   return std::fabs(slab.exit - slab.enter) <= 1e-4 * std::max({1.0, std::fabs(slab.enter), std::fabs(slab.exit)});
 }
@@ -380,8 +384,10 @@ void write_trace_json(std::ostream& out, const Camera& camera, const PixelTrace&
                      {"agrees", step.agrees}});
   nlohmann::json segments = nlohmann::json::array();
   for (const TraceSegment& segment : trace.segments) {
+    // A ray of NaNs (a direction your code made of nothing) has nothing to draw.
+    if (!is_finite(segment.from) || !is_finite(segment.to)) continue;
     const std::optional<std::array<glm::vec2, 2>> ends = project_segment_to_raster(camera, segment.from, segment.to);
-    if (!ends) continue;
+    if (!ends || !std::isfinite((*ends)[0].x + (*ends)[0].y + (*ends)[1].x + (*ends)[1].y)) continue;
     segments.push_back({{"from", {(*ends)[0].x, (*ends)[0].y}},
                         {"to", {(*ends)[1].x, (*ends)[1].y}},
                         {"kind", segment.kind == TraceSegment::Kind::Camera   ? "camera"

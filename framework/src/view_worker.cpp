@@ -51,7 +51,10 @@ bool write_image_frame(int fd, const std::string& header, const Image& image) {
 
 std::string tree_levels_json(const SceneGeometry& geometry, const Camera& camera) {
   nlohmann::json levels = nlohmann::json::array();
+  std::size_t total = 0;
   for (const std::vector<Bounds3>& boxes : geometry.tree_boxes_by_level()) {
+    // At most 2^20 boxes and 256 levels (what the server takes): the deeper levels are left out.
+    if ((total += boxes.size()) > (1u << 20) || levels.size() == 256) break;
     nlohmann::json rectangles = nlohmann::json::array();
     for (const Bounds3& box : boxes) {
       // The box's corners, corner i taking max on axis a where bit a of i is set.
@@ -85,8 +88,9 @@ int run_view_worker(const Scene& scene, const RenderSettings& settings, int fram
 #if !defined(_WIN32)
   std::signal(SIGPIPE, SIG_IGN);  // a server that went away: a failed write, not a signal
 #endif
+  // The geometry once for every pass (the student's trees are built once).
+  const SceneGeometry geometry = render_geometry(scene, settings);
   if (send_tree) {
-    const SceneGeometry geometry(scene, Acceleration::Bvh, settings.triangle_test, settings.tracing);
     const std::string tree = tree_levels_json(geometry, scene.camera);
     if (!write_frame(frames_fd, "tree " + std::to_string(tree.size()) + "\n", tree.data(), tree.size()))
       return kExitOk;
@@ -100,7 +104,7 @@ int run_view_worker(const Scene& scene, const RenderSettings& settings, int fram
   };
   if (one_pass) {
     RenderStats stats;
-    const RenderOutput output = render_with_variance(scene, settings, &stats);
+    const RenderOutput output = render_with_variance(scene, geometry, settings, &stats);
     if (write_image_frame(frames_fd, header("pass", 0, settings.samples_per_pixel, stats), output.mean))
       (void)write_image_frame(frames_fd, "rate\n", output.sample_rate);
     return kExitOk;
@@ -111,7 +115,7 @@ int run_view_worker(const Scene& scene, const RenderSettings& settings, int fram
     pass.first_sample = first;
     pass.sample_count = std::min(count, settings.samples_per_pixel - first);
     RenderStats stats;
-    const Image mean = render(scene, pass, &stats);
+    const Image mean = render_with_variance(scene, geometry, pass, &stats).mean;
     if (!write_image_frame(frames_fd, header("pass", first, pass.sample_count, stats), mean)) return kExitOk;
     first += pass.sample_count;
     if (stats.seconds < 0.25) count = std::min(2 * count, 64);

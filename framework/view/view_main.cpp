@@ -12,6 +12,7 @@
 #include <httplib.h>
 
 #include <csignal>
+#include <sys/socket.h>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -63,7 +64,11 @@ void find_reference(ViewOptions& options, bool default_depth) {
       return;
     }
     try {
-      options.reference = raylab::read_image(picture.string());
+      raylab::Image reference = raylab::read_image(picture.string());
+      if (reference.width() == options.camera.width && reference.height() == options.camera.height)
+        options.reference = std::move(reference);
+      else
+        options.reference_note = picture.string() + (options.chinese ? " 的大小不是 320x240" : " is not 320x240");
     } catch (const std::exception& e) {
       options.reference_note = e.what();
     }
@@ -105,8 +110,8 @@ int main(int argc, char** argv) {
   app.add_option("--adaptive-batch", adaptive_batch, "As raylab render's")->check(CLI::Range(2, 1 << 20));
   app.add_flag("--spp-by-noise", by_noise, "As raylab render's: one pass, with where the samples went");
   app.add_flag("--watertight", watertight, "As raylab render's");
-  app.add_option("--trace-seconds", options.trace_seconds, "How long a pixel's trace may take (default 20)")
-      ->check(CLI::Range(1.0, 3600.0));
+  app.add_option("--trace-seconds", options.trace_seconds, "How long a pixel's trace may take (default 20, at most 100)")
+      ->check(CLI::Range(1.0, 100.0));
   app.add_option("--lang", language, "en or zh: the page's words (default en)")->check(CLI::IsMember({"en", "zh"}));
   try {
     app.parse(argc, argv);
@@ -152,6 +157,28 @@ int main(int argc, char** argv) {
 
   ViewServer view(options);
   httplib::Server server;
+  // Not SO_REUSEPORT (cpp-httplib's default): a second raylab view on the same port must not share
+  // it with the first, but find it taken and move to a free one.
+  server.set_socket_options([](auto socket) {
+    int yes = 1;
+    ::setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
+  // Only this machine's own pages: a request for another host name (a web page that rebinds its
+  // name to 127.0.0.1) is refused, and what changes something (stop, continue, a trace, which
+  // starts your program) must carry the page's own header, which another site's page cannot send
+  // without asking first (and is never answered).
+  int bound_port = 0;
+  server.set_pre_routing_handler([&bound_port](const httplib::Request& request, httplib::Response& response) {
+    const std::string host = request.get_header_value("Host"), own_port = std::to_string(bound_port);
+    const bool local = host == "127.0.0.1:" + own_port || host == "localhost:" + own_port;
+    const bool changes = request.method != "GET" || request.path == "/trace";
+    if (local && (!changes || request.get_header_value("X-Raylab-View") == "1"))
+      return httplib::Server::HandlerResponse::Unhandled;
+    response.status = 403;
+    response.set_content("raylab view answers only its own page, at http://127.0.0.1:" + own_port + "/",
+                         "text/plain");
+    return httplib::Server::HandlerResponse::Handled;
+  });
   const std::string page(reinterpret_cast<const char*>(raylab::view::kIndexHtml), raylab::view::kIndexHtmlSize);
   server.Get("/", [&](const httplib::Request&, httplib::Response& response) {
     response.set_content(page, "text/html; charset=utf-8");
@@ -185,11 +212,12 @@ int main(int argc, char** argv) {
   });
 
   int bound = port == 0 ? server.bind_to_any_port("127.0.0.1") : (server.bind_to_port("127.0.0.1", port) ? port : -1);
-  if (bound < 0 && port == 8421) bound = server.bind_to_any_port("127.0.0.1");
+  if (bound < 0 && app.count("--port") == 0) bound = server.bind_to_any_port("127.0.0.1");  // the default, taken
   if (bound <= 0) {
     std::cerr << "raylab view: cannot listen on 127.0.0.1:" << port << " (in use?): --port 0 picks a free port\n";
     return raylab::kExitBadInput;
   }
+  bound_port = bound;
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
   std::signal(SIGHUP, on_stop_signal);

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cerrno>
 #include <cmath>
@@ -13,9 +14,11 @@
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <poll.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -68,6 +71,7 @@ Spawned spawn(const std::vector<std::string>& arguments, bool merge_errors, bool
   for (std::string& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
   const long open_max = std::min(::sysconf(_SC_OPEN_MAX), 65536L);
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     spawned.error = std::string("cannot start a process: ") + std::strerror(errno);
@@ -78,6 +82,7 @@ Spawned spawn(const std::vector<std::string>& arguments, bool merge_errors, bool
     ::setpgid(0, 0);
 #if defined(__linux__)
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);  // the server ended before the line above
 #endif
     const int null = ::open("/dev/null", O_RDONLY);
     if (null >= 0) ::dup2(null, 0);
@@ -92,8 +97,10 @@ Spawned spawn(const std::vector<std::string>& arguments, bool merge_errors, bool
     for (long fd = frames ? 4 : 3; fd < open_max; ++fd) ::close(static_cast<int>(fd));
     ::signal(SIGPIPE, SIG_DFL);
     ::execv(argv[0], argv.data());
-    const char* reason = "raylab view: cannot start the renderer\n";
+    const char* reason = "raylab: cannot start the program ";
     (void)!::write(2, reason, std::strlen(reason));
+    (void)!::write(2, argv[0], std::strlen(argv[0]));
+    (void)!::write(2, "\n", 1);
     ::_exit(127);
   }
   ::setpgid(pid, pid);  // (also in the child: whichever runs first)
@@ -160,7 +167,8 @@ std::string last_raylab_line(const std::string& output) {
 
 }  // namespace
 
-ChildResult run_child(const std::vector<std::string>& arguments, double seconds, std::size_t most_bytes) {
+ChildResult run_child(const std::vector<std::string>& arguments, double seconds, std::size_t most_bytes,
+                      std::atomic<int>* group) {
   ChildResult result;
   Spawned child = spawn(arguments, /*merge_errors=*/false, /*frames=*/false);
   if (child.pid < 0) {
@@ -168,6 +176,7 @@ ChildResult run_child(const std::vector<std::string>& arguments, double seconds,
     return result;
   }
   result.started = true;
+  if (group) *group = child.pid;
   const Clock::time_point start = Clock::now();
   pollfd fds[2] = {{child.out, POLLIN, 0}, {child.err, POLLIN, 0}};
   std::string* into[2] = {&result.output, &result.errors};
@@ -193,14 +202,29 @@ ChildResult run_child(const std::vector<std::string>& arguments, double seconds,
       }
     }
   }
-  if (result.timed_out) ::kill(-child.pid, SIGKILL);
   for (const pollfd& fd : fds)
     if (fd.fd >= 0) ::close(fd.fd);
+  // Its end, within the same deadline (a child may close its output and go on).
+  siginfo_t info{};
+  for (;;) {
+    info.si_pid = 0;
+    if (::waitid(P_PID, static_cast<id_t>(child.pid), &info, WEXITED | WNOHANG | WNOWAIT) < 0 && errno != EINTR) break;
+    if (info.si_pid != 0) break;
+    if (seconds_since(start) >= seconds) {
+      result.timed_out = true;
+      break;
+    }
+    ::usleep(10000);
+  }
+  // Whatever is left in its group goes (it too, when its time was up), before it is reaped, so
+  // that the group's number cannot have been given to another.
+  ::kill(-child.pid, SIGKILL);
+  if (group) *group = 0;
   int status = 0;
   while (::waitpid(child.pid, &status, 0) < 0 && errno == EINTR) {
   }
   record_end(result, status);
-  ::kill(-child.pid, SIGKILL);  // whatever it left behind in its group
+  if (result.timed_out) result.signal = 0;  // killed by us, not by its own fault
   return result;
 }
 
@@ -212,10 +236,13 @@ std::string describe_child_end(const ChildResult& result, const std::string& doi
                    : "your code did not finish " + doing + " in time: it may loop forever.";
   if (result.signal != 0)
     return (chinese ? "你的代码在" + doing + "时崩溃了：" : "your code crashed while " + doing + ": ") +
-           signal_words(result.signal, chinese) + (own.empty() ? "" : "  " + own);
+           signal_words(result.signal, chinese) + (chinese ? "。" : ".") + (own.empty() ? "" : " " + own);
   if (!own.empty()) return own;
-  return (chinese ? "你的程序在" + doing + "时以退出码 " : "your program stopped while " + doing + " with exit code ") +
-         std::to_string(result.exit_code);
+  if (result.exit_code == 0)
+    return chinese ? "你的程序在" + doing + "时没有给出结果（它的输出不是预期的格式）。"
+                   : "your program gave no answer while " + doing + " (its output was not what was expected).";
+  return chinese ? "你的程序在" + doing + "时以退出码 " + std::to_string(result.exit_code) + " 结束。"
+                 : "your program stopped while " + doing + " with exit code " + std::to_string(result.exit_code) + ".";
 }
 
 Image difference_heat_map(const Image& yours, const Image& reference) {
@@ -255,9 +282,44 @@ std::string ViewServer::words(const char* english, const char* chinese) const {
 
 void ViewServer::start() {
   std::lock_guard<std::mutex> lock(mutex_);
+  renderer_identity_ = renderer_identity();
   state_ = State::Starting;
   pass_started_ = Clock::now();
   worker_thread_ = std::thread([this] { render_from(0); });
+}
+
+// The renderer's file as it is now (to tell a rebuilt program from the one that rendered so far).
+std::string ViewServer::renderer_identity() const {
+  struct stat file {};
+  if (::stat(options_.renderer.c_str(), &file) != 0) return "";
+  return std::to_string(file.st_ino) + ":" + std::to_string(file.st_size) + ":" + std::to_string(file.st_mtim.tv_sec) +
+         "." + std::to_string(file.st_mtim.tv_nsec);
+}
+
+std::optional<std::pair<std::string, int>> checked_tree_json(const std::string& text) {
+  constexpr std::size_t kMostTreeLevels = 256, kMostTreeBoxes = 1u << 20;
+  const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!parsed.is_object() || !parsed.contains("levels") || !parsed["levels"].is_array() ||
+      parsed["levels"].size() > kMostTreeLevels)
+    return std::nullopt;
+  nlohmann::json levels = nlohmann::json::array();
+  std::size_t boxes = 0;
+  for (const nlohmann::json& level : parsed["levels"]) {
+    if (!level.is_array() || (boxes += level.size()) > kMostTreeBoxes) return std::nullopt;
+    nlohmann::json rectangles = nlohmann::json::array();
+    for (const nlohmann::json& box : level) {
+      if (!box.is_array() || box.size() != 4) return std::nullopt;
+      std::array<double, 4> corners{};
+      for (std::size_t k = 0; k < 4; ++k) {
+        if (!box[k].is_number() || !std::isfinite(box[k].get<double>())) return std::nullopt;
+        corners[k] = box[k].get<double>();
+      }
+      rectangles.push_back(corners);
+    }
+    levels.push_back(std::move(rectangles));
+  }
+  const int count = static_cast<int>(levels.size());
+  return std::make_pair(nlohmann::json{{"levels", std::move(levels)}}.dump(), count);
 }
 
 void ViewServer::render_from(int first_sample) {
@@ -266,13 +328,17 @@ void ViewServer::render_from(int first_sample) {
   if (first_sample == 0) arguments.push_back("--tree");
   arguments.insert(arguments.end(), options_.render_arguments.begin(), options_.render_arguments.end());
   Spawned child = spawn(arguments, /*merge_errors=*/true, /*frames=*/true);
-  if (child.pid < 0) {
+  {
     std::lock_guard<std::mutex> lock(mutex_);
-    state_ = State::Failed;
-    message_ = words("cannot start your program: ", "无法启动你的程序：") + child.error;
-    return;
+    if (child.pid < 0) {
+      state_ = State::Failed;
+      message_ = words("cannot start your program: ", "无法启动你的程序：") + child.error;
+      return;
+    }
+    running_group_id = child.pid;
+    // A stop that came while it started: it goes at once.
+    if (stop_requested_) ::kill(-child.pid, SIGKILL);
   }
-  running_group_id = child.pid;
   // What it prints, read beside the frames.
   std::thread output_reader([this, fd = child.out] {
     char buffer[4096];
@@ -300,12 +366,9 @@ void ViewServer::render_from(int first_sample) {
       }
       std::string tree(size, '\0');
       if (!read_exactly(child.frames, tree.data(), size)) break;
-      const nlohmann::json parsed = nlohmann::json::parse(tree, nullptr, /*allow_exceptions=*/false);
+      const std::optional<std::pair<std::string, int>> checked = checked_tree_json(tree);
       std::lock_guard<std::mutex> lock(mutex_);
-      if (parsed.is_object() && parsed.contains("levels") && parsed["levels"].is_array()) {
-        tree_json_ = tree;
-        tree_levels_ = static_cast<int>(parsed["levels"].size());
-      }
+      if (checked) std::tie(tree_json_, tree_levels_) = *checked;
       state_ = State::Rendering;
       continue;
     }
@@ -313,7 +376,9 @@ void ViewServer::render_from(int first_sample) {
       int first = 0, count = 0;
       double seconds = 0.0;
       unsigned long long rays = 0;
-      if (!(fields >> first >> count >> seconds >> rays) || count < 1 ||
+      // The samples that come next, as the worker was asked for them, in a time that is one.
+      if (!(fields >> first >> count >> seconds >> rays) || first < 0 || count < 1 || first > options_.goal ||
+          count > options_.goal - first || !(seconds >= 0.0 && seconds < 1e9) ||
           !read_exactly(child.frames, pass.data(), pixels * sizeof(glm::vec3))) {
         broken = line;
         break;
@@ -342,16 +407,23 @@ void ViewServer::render_from(int first_sample) {
     broken = line;
     break;
   }
-  if (!broken.empty()) ::kill(-child.pid, SIGKILL);
   ::close(child.frames);
+  // Its end: known (not reaped) before its group is killed, so that the group's number is still
+  // its own, and the state is set before a stop could take this end for its own.
+  siginfo_t info{};
+  while (::waitid(P_PID, static_cast<id_t>(child.pid), &info, WEXITED | WNOWAIT) < 0 && errno == EINTR) {
+  }
+  ChildResult result;
+  result.started = true;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ::kill(-child.pid, SIGKILL);  // whatever it left behind in its group
+    running_group_id = 0;
+  }
   int status = 0;
   while (::waitpid(child.pid, &status, 0) < 0 && errno == EINTR) {
   }
-  ::kill(-child.pid, SIGKILL);  // whatever it left behind in its group
-  running_group_id = 0;
   output_reader.join();
-  ChildResult result;
-  result.started = true;
   record_end(result, status);
   std::lock_guard<std::mutex> lock(mutex_);
   result.output = output_;
@@ -366,8 +438,10 @@ void ViewServer::render_from(int first_sample) {
   } else {
     state_ = State::Failed;
     message_ = describe_child_end(result, words("rendering", "渲染"), options_.chinese);
+    if (!options_.chinese && !message_.empty() && message_.back() != '.') message_ += '.';
+    if (options_.chinese && (message_.size() < 3 || message_.compare(message_.size() - 3, 3, "。") != 0)) message_ += "。";
     message_ += words(" The page stays up: fix your code, build it again and press continue.",
-                      " 页面仍然可用：修改代码、重新编译后按“继续”。");
+                      "页面仍然可用：修改代码、重新编译后按“继续”。");
   }
 }
 
@@ -427,14 +501,14 @@ std::string ViewServer::status_json() {
 
 std::string ViewServer::tree_json() {
   std::lock_guard<std::mutex> lock(mutex_);
-  nlohmann::json tree = tree_json_.empty() ? nlohmann::json{{"levels", nlohmann::json::array()}}
-                                            : nlohmann::json::parse(tree_json_, nullptr, false);
-  if (tree.is_discarded()) tree = nlohmann::json{{"levels", nlohmann::json::array()}};
-  tree["note"] = tree_levels_ > 0 ? ""
-                 : words("no tree: the scene has too few objects for one, or stage 05 (build_bvh, intersect_bvh) "
-                         "or stage 04 is not written yet",
-                         "没有树：场景的物体太少而不需要树，或者阶段 05（build_bvh、intersect_bvh）或阶段 04 还没有编写");
-  return tree.dump();
+  const std::string note =
+      tree_levels_ > 0 ? ""
+                       : words("no tree: the scene has too few objects for one, or stage 05 (build_bvh, intersect_bvh) "
+                               "or stage 04 is not written yet",
+                               "没有树：场景的物体太少而不需要树，或者阶段 05（build_bvh、intersect_bvh）或阶段 04 还没有编写");
+  // tree_json_ is the server's own writing ({"levels": ...}): the note goes in beside it.
+  const std::string levels = tree_json_.empty() ? "{\"levels\":[]}" : tree_json_;
+  return levels.substr(0, levels.size() - 1) + ",\"note\":" + nlohmann::json(note).dump() + "}";
 }
 
 std::optional<std::string> ViewServer::picture_png(const std::string& view) {
@@ -477,8 +551,23 @@ std::string ViewServer::go_on() {
   std::unique_lock<std::mutex> lock(mutex_);
   if (running_group_id.load() != 0 || state_ == State::Starting || state_ == State::Rendering)
     return nlohmann::json{{"ok", false}, {"error", words("it is rendering already", "已经在渲染了")}}.dump();
-  if (samples_done_ >= options_.goal)
+  if (samples_done_ >= options_.goal && renderer_identity() == renderer_identity_)
     return nlohmann::json{{"ok", false}, {"error", words("the picture is done", "图像已经完成")}}.dump();
+  // A program built again since the picture began: its picture starts afresh (the old samples
+  // are another program's), the tree too.
+  const std::string identity = renderer_identity();
+  if (identity != renderer_identity_) {
+    renderer_identity_ = identity;
+    std::fill(sum_.begin(), sum_.end(), glm::dvec3(0.0));
+    samples_done_ = 0;
+    seconds_done_ = 0.0;
+    rays_done_ = 0;
+    rate_.reset();
+    tree_json_.clear();
+    tree_levels_ = 0;
+    output_.clear();
+    ++version_;
+  }
   const int first = samples_done_;
   stop_requested_ = false;
   message_.clear();
@@ -513,7 +602,16 @@ std::string ViewServer::trace_json(int x, int y) {
     arguments.push_back("--lang");
     arguments.push_back("zh");
   }
-  const ChildResult result = run_child(arguments, options_.trace_seconds, 4u << 20);
+  // One trace at a time: a click while another is traced ends that one (its answer is no longer
+  // awaited), so that clicks on code that loops do not pile up processes.
+  std::unique_lock<std::mutex> one_trace(trace_mutex_);
+  const std::uint64_t mine = ++trace_number_;
+  if (const int previous = trace_group_.load()) ::kill(-previous, SIGKILL);
+  one_trace.unlock();
+  std::lock_guard<std::mutex> tracing(tracing_mutex_);  // the previous one has ended
+  if (trace_number_.load() != mine) return failure(words("a later click replaced this trace", "之后的点击取代了这次跟踪"));
+  const ChildResult result = run_child(arguments, options_.trace_seconds, 4u << 20, &trace_group_);
+  if (trace_number_.load() != mine) return failure(words("a later click replaced this trace", "之后的点击取代了这次跟踪"));
   if (result.started && !result.timed_out && result.exit_code == 0) {
     const nlohmann::json trace = nlohmann::json::parse(result.output, nullptr, false);
     if (trace.is_object() && trace.value("ok", false)) return result.output;

@@ -1,6 +1,6 @@
 // raylab view's server (the program raylab-view, which `raylab view` starts): the picture as the
 // student's program renders it, pass by pass, for the page (index.html) to show, and one pixel
-// traced when the page asks. No stage code runs in this process: the renderer is the student's
+// traced when the page asks. No stage function is called in this process: the renderer is the student's
 // program, started as a child (`raylab view-worker`, view_worker.h; `raylab trace --json` for a
 // pixel), so a crash or an endless loop there costs that child, which the page then names in
 // words; the page stays up.
@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
@@ -18,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace raylab::view {
@@ -51,8 +53,15 @@ struct ChildResult {
 
 // Runs `arguments` (the program first) in a process group of its own, its stdin /dev/null, and
 // collects its stdout and stderr, each cut to its last `most_bytes`; kills the group after
-// `seconds`.
-ChildResult run_child(const std::vector<std::string>& arguments, double seconds, std::size_t most_bytes);
+// `seconds`, and when the child ends whatever it left in it. `group`, if given, holds the group's
+// number while the child runs (0 otherwise): a kill of it ends the child early.
+ChildResult run_child(const std::vector<std::string>& arguments, double seconds, std::size_t most_bytes,
+                      std::atomic<int>* group = nullptr);
+
+// The tree frame's JSON (view_worker.h), checked: {"levels": [[[x0, y0, x1, y1], ...], ...]} with
+// finite numbers, at most 256 levels and 2^20 boxes in all, written again (so that what the server
+// serves is its own writing), and its count of levels; nullopt for anything else.
+std::optional<std::pair<std::string, int>> checked_tree_json(const std::string& text);
 
 // The words for a child that did not end well ("your code crashed: segmentation fault
 // (signal 11)"), in English or Chinese, with the last line the program wrote that starts with
@@ -91,6 +100,7 @@ class ViewServer {
   enum class State { Starting, Rendering, Stopped, Done, Failed };
   void render_from(int first_sample);  // the worker thread
   Image picture_locked() const;        // the mean so far
+  std::string renderer_identity() const;  // the program's file: its inode, size and time
   std::string words(const char* english, const char* chinese) const;
 
   ViewOptions options_;
@@ -109,6 +119,11 @@ class ViewServer {
   bool stop_requested_ = false;
   std::chrono::steady_clock::time_point pass_started_;
   std::thread worker_thread_;
+  std::string renderer_identity_;    // of the program that rendered the picture so far
+  // The trace running, if any: its process group; the number of the latest click; one at a time.
+  std::atomic<int> trace_group_{0};
+  std::atomic<std::uint64_t> trace_number_{0};
+  std::mutex trace_mutex_, tracing_mutex_;
   // PNG bytes of the pictures, kept until the picture changes.
   int cached_version_ = -1;
   std::string cached_view_, cached_png_;

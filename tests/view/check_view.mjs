@@ -137,13 +137,14 @@ async function waitFor(what, probe, ms = WAIT_MS) {
   }
 }
 
-// A GET from the page itself: JSON, or {fetchError} when there was no answer.
-const pageJson = (url) => page.evaluate(async (u) => {
+// A GET from the page itself, with the page's header (the server refuses a trace without it):
+// JSON, or {fetchError} when there was no answer.
+const pageJson = (url, header = true) => page.evaluate(async (u, h) => {
   try {
-    const r = await fetch(u, { cache: 'no-store' });
+    const r = await fetch(u, { cache: 'no-store', headers: h ? { 'X-Raylab-View': '1' } : {} });
     return r.ok ? await r.json() : { fetchError: `HTTP ${r.status}` };
   } catch (e) { return { fetchError: String(e) }; }
-}, url);
+}, url, header);
 
 async function status() {
   const s = await pageJson('/status');
@@ -255,6 +256,10 @@ async function checkTrace() {
     pass('no first disagreement is marked: every step agrees');
   }
   if (answer.summary) pass(`the summary: ${answer.summary}`);
+  // Another site's page cannot start a trace: without the page's header it is refused.
+  const refused = await pageJson(`/trace?x=${x}&y=${y}`, false);
+  if (refused.fetchError !== 'HTTP 403') fail(`a trace without the page's header was not refused: ${JSON.stringify(refused)}`);
+  pass('a trace without the page\'s header is refused (HTTP 403)');
 }
 
 async function checkTree() {
@@ -313,6 +318,20 @@ async function checkExpectedTexts() {
   }
 }
 
+// The processes the server started and that still run (its renderer, a trace), from /proc.
+function childrenOf(pid) {
+  const children = [];
+  try {
+    for (const task of fs.readdirSync(`/proc/${pid}/task`)) {
+      const text = fs.readFileSync(`/proc/${pid}/task/${task}/children`, 'utf8').trim();
+      if (text) children.push(...text.split(/\s+/).map(Number));
+    }
+  } catch { /* the server is gone */ }
+  return children;
+}
+const alive = (pid) => { try { process.kill(pid, 0); return true; } catch { return false; } };
+let childrenAtEnd = [];
+
 // ---- the run ----
 async function cleanUp() {
   if (browser) await browser.close().catch(() => {});
@@ -353,6 +372,7 @@ async function main() {
     else await checkCrash();
     await checkExpectedTexts();
     if (pageErrors.length) fail(`the page's script threw: ${pageErrors.join(' | ')}`);
+    childrenAtEnd = childrenOf(server.pid);
   } finally {
     const shot = path.join(out, `${options.check}.png`);
     await page.screenshot({ path: shot, fullPage: true }).then(() => console.log(`screenshot: ${shot}`), () => {});
@@ -376,5 +396,17 @@ try {
   if (serverOutput.trim()) console.log(`raylab view printed (last lines):\n${serverOutput.trim().split('\n').slice(-20).join('\n')}`);
 }
 await cleanUp();
+// What the server started must end with it (it kills its renderer's and a trace's process groups).
+if (code === 0) {
+  for (let i = 0; i < 50 && childrenAtEnd.some(alive); i++) await sleep(100);
+  const left = childrenAtEnd.filter(alive);
+  if (left.length) {
+    code = 1;
+    console.log(`FAIL: raylab view left ${left.length} of its processes running after it was stopped: ${left.join(', ')}`);
+    for (const pid of left) { try { process.kill(pid, 'SIGKILL'); } catch { /* gone */ } }
+  } else {
+    pass(`no process of the ${childrenAtEnd.length} it had started is left`);
+  }
+}
 clearTimeout(wholeRun);
 process.exit(code);

@@ -105,6 +105,15 @@ std::vector<std::uint32_t> allot_samples_by_noise(const std::vector<float>& nois
 // samples_per_pixel outside [1, kMaxSamplesPerPixel] and for samples outside them.
 RenderOutput render_with_variance(const Scene& scene, const RenderSettings& settings, RenderStats* stats = nullptr);
 
+// The geometry render_with_variance traces `scene` through with these settings (their skips,
+// triangle test and tracing functions).
+SceneGeometry render_geometry(const Scene& scene, const RenderSettings& settings);
+
+// The same on a geometry made by render_geometry(scene, settings) before (`raylab view`'s passes
+// build it once); stats->seconds then leaves out its building.
+RenderOutput render_with_variance(const Scene& scene, const SceneGeometry& geometry, const RenderSettings& settings,
+                                  RenderStats* stats = nullptr);
+
 // The image alone: render_with_variance(...).mean.
 Image render(const Scene& scene, const RenderSettings& settings, RenderStats* stats = nullptr);
 

@@ -27,11 +27,12 @@ namespace raylab {
 // {"levels": [[[x0, y0, x1, y1], ...], ...]}: the boxes of each depth of the geometry's trees
 // (SceneGeometry::tree_boxes_by_level) as the rectangles they cover on the camera's picture, in
 // raster coordinates (project_segment_to_raster of their twelve edges; a box wholly behind the
-// camera is left out).
+// camera is left out); the levels up to 2^20 boxes and 256 levels in all.
 std::string tree_levels_json(const SceneGeometry& geometry, const Camera& camera);
 
-// Renders samples settings.first_sample .. settings.samples_per_pixel - 1 in passes, each
-// taking about a quarter of a second or more (1, 2, 4, ... samples, at most 64), and writes the
+// Renders samples settings.first_sample .. settings.samples_per_pixel - 1 in passes on one
+// geometry (render_geometry: the trees built once), each taking about a quarter of a second or
+// more (1, 2, 4, ... samples, at most 64), and writes the
 // frames to `frames_fd`; the tree first when `send_tree`. With adaptive sampling or samples by
 // noise, one pass of all samples and its "rate" frame. Exceptions from the stage code reach the
 // caller; a server that went away ends the work quietly. Returns kExitOk.
