@@ -358,8 +358,7 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
     trace_command->add_flag("--json", trace_options.json,
                             "Print the trace as JSON (the steps, and the rays as segments on the picture)");
     trace_command
-        ->add_option("--lang", trace_options.language,
-                     "en or zh: the words of the trace (default en; the Monte Carlo steps are English)")
+        ->add_option("--lang", trace_options.language, "en or zh: the words of the trace (default en)")
         ->check(CLI::IsMember({"en", "zh"}));
   }
 

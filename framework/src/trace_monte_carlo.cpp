@@ -42,32 +42,48 @@ using Kind = RecordedCall::Kind;
 // function agree to this fraction.
 constexpr double kValueTolerance = 1e-3;
 
+// The words of a text in the trace's language (TraceSettings::chinese), as trace.cpp's: values,
+// code and the names of functions are the same in both.
+struct Words {
+  bool chinese = false;
+  std::string operator()(const std::string& english, const std::string& chinese_text) const {
+    return chinese ? chinese_text : english;
+  }
+};
+
+// A ray in words (trace_text's text(ray) in English).
+std::string ray_text(const Words& words, const Ray& ray) {
+  return words("origin ", "起点 ") + text(ray.origin) + words("  direction ", "  方向 ") + text(ray.direction);
+}
+
 bool same_direction(const glm::vec3& a, const glm::vec3& b) {
   const float la = glm::length(a), lb = glm::length(b);
   if (!(la > 0.0f) || !(lb > 0.0f)) return false;
   return glm::dot(a, b) / (la * lb) > 1.0f - 1e-5f;
 }
 
-std::string material_text(const Scene& scene, const SurfaceHit& hit) {
+std::string material_text(const Words& words, const Scene& scene, const SurfaceHit& hit) {
   const Material& material = scene.materials[hit.material];
-  return material.name.empty() ? "material " + std::to_string(hit.material) : "material '" + material.name + "'";
+  return material.name.empty() ? words("material ", "材质 ") + std::to_string(hit.material)
+                               : words("material '", "材质 '") + material.name + "'";
 }
 
-std::string hit_text(const Scene& scene, const std::optional<SurfaceHit>& hit) {
-  if (!hit) return "nothing: the background";
-  return "hit at t = " + text(hit->t_hit) + ", point " + text(hit->point) + ", " + material_text(scene, *hit);
+std::string hit_text(const Words& words, const Scene& scene, const std::optional<SurfaceHit>& hit) {
+  if (!hit) return words("nothing: the background", "什么也没有击中：背景");
+  return words("hit at t = ", "在 t = ") + text(hit->t_hit) + words(", point ", " 处击中，交点 ") + text(hit->point) +
+         words(", ", "，") + material_text(words, scene, *hit);
 }
 
-const char* bsdf_name(const Bsdf& bsdf) {
+std::string bsdf_name(const Words& words, const Bsdf& bsdf) {
   switch (bsdf.kind) {
     case BsdfKind::Lambertian:
-      return "diffuse";
+      return words("diffuse", "漫反射");
     case BsdfKind::Mirror:
-      return "mirror";
+      return words("mirror", "镜面");
     case BsdfKind::Dielectric:
-      return "glass";
+      return words("glass", "玻璃");
     case BsdfKind::Microfacet:
-      return "rough metal";
+      return words("rough metal", "粗糙金属");
   }
   return "?";
 }
@@ -199,16 +215,16 @@ struct ContractDirect {
   std::optional<bool> your_blocked, contract_blocked;  // both set: the shadow ray, when your code traced one
 };
 
-ContractDirect contract_direct(const RenderContext& contract, const SurfaceHit& hit, const Bsdf& bsdf,
-                               const glm::vec3& wo, const LightCalls& found) {
+ContractDirect contract_direct(const Words& words, const RenderContext& contract, const SurfaceHit& hit,
+                               const Bsdf& bsdf, const glm::vec3& wo, const LightCalls& found) {
   ContractDirect direct;
   if (contract.lights.empty()) {
     direct.value = glm::dvec3(0.0);
-    direct.what = "the scene has no lights";
+    direct.what = words("the scene has no lights", "场景中没有光源");
     return direct;
   }
   if (!found.sample) {
-    direct.why = "your code sampled no light point with sample_li";
+    direct.why = words("your code sampled no light point with sample_li", "你的代码没有用 sample_li 采样光源上的点");
     return direct;
   }
   double chosen_with = 1.0;
@@ -216,15 +232,19 @@ ContractDirect contract_direct(const RenderContext& contract, const SurfaceHit& 
     chosen_with = found.choice->choice_probability;
     if (found.choice->light_index < contract.lights.size() &&
         !same_light(contract.lights[found.choice->light_index], found.sample->light))
-      direct.wrong_light = "your code chose light " + std::to_string(found.choice->light_index) +
-                           " (context.lights.choose) but sampled a point on another light";
+      direct.wrong_light = words("your code chose light ", "你的代码选择了光源 ") +
+                           std::to_string(found.choice->light_index) +
+                           words(" (context.lights.choose) but sampled a point on another light",
+                                 "（context.lights.choose），却在另一个光源上采样了点");
   } else if (contract.lights.size() > 1) {
-    direct.why = "your code chose its light without context.lights.choose";
+    direct.why = words("your code chose its light without context.lights.choose",
+                       "你的代码没有用 context.lights.choose 选择光源");
     return direct;
   }
   if (!found.sample->light_sample) {
     direct.value = glm::dvec3(0.0);
-    direct.what = "sample_li gave no sample (the light seen from behind or edge-on)";
+    direct.what = words("sample_li gave no sample (the light seen from behind or edge-on)",
+                        "sample_li 没有给出样本（从这里只看得到光源的背面或侧边）");
     return direct;
   }
   const LightSample& sample = *found.sample->light_sample;
@@ -247,38 +267,49 @@ ContractDirect contract_direct(const RenderContext& contract, const SurfaceHit& 
   const double cosine = std::fabs(glm::dot(glm::dvec3(normal), glm::dvec3(sample.direction)));
   direct.value = blocked ? glm::dvec3(0.0)
                          : f * glm::dvec3(sample.radiance) * (cosine / (density.per_steradian * chosen_with));
-  direct.what = "light " + std::to_string(found.choice ? found.choice->light_index : 0) + " (chosen with probability " +
-                text(chosen_with) + "), its point " + text(sample.point) + ", pdf " + text(density.per_steradian) +
-                " per sr; the shadow ray " +
-                (f == glm::dvec3(0.0) ? "not needed (f = 0)" : blocked ? "blocked" : "clear");
-  if (!direct.wrong_light.empty()) direct.what += "; " + direct.wrong_light;
+  direct.what = words("light ", "光源 ") + std::to_string(found.choice ? found.choice->light_index : 0) +
+                words(" (chosen with probability ", "（以概率 ") + text(chosen_with) +
+                words("), its point ", " 选中），它上面的点 ") + text(sample.point) + words(", pdf ", "，pdf ") +
+                text(density.per_steradian) +
+                (f == glm::dvec3(0.0) ? words(" per sr; the shadow ray not needed (f = 0)", " 每球面度；不需要阴影光线（f = 0）")
+                 : blocked            ? words(" per sr; the shadow ray blocked", " 每球面度；阴影光线被遮挡")
+                                      : words(" per sr; the shadow ray clear", " 每球面度；阴影光线没有被遮挡"));
+  if (!direct.wrong_light.empty()) direct.what += words("; ", "；") + direct.wrong_light;
   return direct;
 }
 
 // Your shadow ray, where its answer is not the contract's: marked at `function` (the code that
 // built it) when the ray itself breaks the contract's rules (it reaches the light's point, or
 // starts on the surface), else at your geometry (stages 02-05).
-std::optional<TraceStep> shadow_ray_step(const std::string& at, const LightCalls& found, const ContractDirect& direct,
-                                         const SurfaceHit& hit, const std::string& stage, const std::string& function) {
+std::optional<TraceStep> shadow_ray_step(const Words& words, const std::string& at, const LightCalls& found,
+                                         const ContractDirect& direct, const SurfaceHit& hit, const std::string& stage,
+                                         const std::string& function) {
   if (!direct.your_blocked || !found.shadow || !found.sample || !found.sample->light_sample) return std::nullopt;
   const Ray& ray = found.shadow->ray;
-  const auto words = [](bool blocked) { return std::string(blocked ? "blocked" : "clear"); };
-  TraceStep step{"", "", at + ": the shadow ray (" + text(ray) + ", t_max " + text(ray.t_max) + ")",
-                 words(*direct.your_blocked), words(*direct.contract_blocked), "", false};
+  const auto answer = [&](bool blocked) { return blocked ? words("blocked", "被遮挡") : words("clear", "没有被遮挡"); };
+  TraceStep step{"", "",
+                 at + words(": the shadow ray (", "：阴影光线（") + ray_text(words, ray) + words(", t_max ", "，t_max ") +
+                     text(ray.t_max) + words(")", "）"),
+                 answer(*direct.your_blocked), answer(*direct.contract_blocked), "", false};
   const glm::vec3 point = found.sample->light_sample->point;
   const float reach = ray.t_max * glm::length(ray.direction), to_point = glm::length(point - ray.origin);
   if (found.shadow->kind == Kind::Occluded && *direct.your_blocked && reach >= to_point * (1.0f - 1e-6f)) {
     step.stage = stage;
     step.function = function;
-    step.note = "your shadow ray reaches the light's point and hits the light itself: stop it just short of the "
-                "point (direction = point - origin, t_max = 1 - 1e-4: docs/08_direct_light.md, section 5)";
+    step.note = words("your shadow ray reaches the light's point and hits the light itself: stop it just short of the "
+                      "point (direction = point - origin, t_max = 1 - 1e-4: docs/08_direct_light.md, section 5)",
+                      "你的阴影光线到达了光源上的点，击中了光源本身：让它停在这个点之前一点点"
+                      "（direction = point - origin，t_max = 1 - 1e-4：docs/zh/08_direct_light.md，第 5 节）");
   } else if (ray.origin == hit.point) {
     step.stage = stage;
     step.function = function;
-    step.note = "your shadow ray starts on the surface, where rounding puts it a little below, not at "
-                "offset_ray_origin(hit, direction)";
+    step.note = words("your shadow ray starts on the surface, where rounding puts it a little below, not at "
+                      "offset_ray_origin(hit, direction)",
+                      "你的阴影光线从表面上出发，舍入误差会让它落在表面下方一点点；要从 offset_ray_origin(hit, direction) "
+                      "出发");
   } else {
-    step.note = "your geometry (stages 02-05) answers this shadow ray otherwise than the contract's exact tests";
+    step.note = words("your geometry (stages 02-05) answers this shadow ray otherwise than the contract's exact tests",
+                      "你的几何（阶段 02-05）对这条阴影光线的回答与契约的精确测试不同");
   }
   return step;
 }
@@ -293,25 +324,26 @@ struct Outcome {
   std::string stub_stage, stub_function;
 };
 template <typename Call>
-auto outcome_of(const Call& call) -> Outcome<decltype(call())> {
+auto outcome_of(const Words& words, const Call& call) -> Outcome<decltype(call())> {
   Outcome<decltype(call())> result;
   try {
     result.value = call();
   } catch (const NotImplemented& e) {
-    result.failure = e.function() + " not written yet";
+    result.failure = e.function() + words(" not written yet", " 尚未编写");
     result.stub_stage = e.stage_id();
     result.stub_function = e.function();
   } catch (const std::exception& e) {
-    result.failure = std::string("threw: ") + e.what();
+    result.failure = words("threw: ", "抛出了异常：") + e.what();
   }
   return result;
 }
 
 // A step whose call reached a stub: marked at the stub, not at the function that called it.
 template <typename Value>
-TraceStep marked_at_stub(TraceStep step, const Outcome<Value>& outcome) {
+TraceStep marked_at_stub(const Words& words, TraceStep step, const Outcome<Value>& outcome) {
   if (!outcome.stub_function.empty() && outcome.stub_function != step.function) {
-    step.note = "your " + step.function + " called " + outcome.stub_function + ", not written yet";
+    step.note = words("your ", "你的 ") + step.function + words(" called ", " 调用了 ") + outcome.stub_function +
+                words(", not written yet", "，它尚未编写");
     step.stage = outcome.stub_stage;
     step.function = outcome.stub_function;
   }
@@ -391,31 +423,39 @@ std::optional<glm::dvec3> path_value(const std::vector<SurfaceTerms>& surfaces, 
 }
 
 struct PathMistake {
-  const char* words;
+  const char* english;
+  const char* chinese;
   std::function<void(PathRules&)> make;
 };
 const std::vector<PathMistake>& path_mistakes() {
   static const std::vector<PathMistake> mistakes = {
       {"Russian roulette not divided by p (a path that goes on must be divided "
        "by p)",
-       [](PathRules& r) { r.divide_by_p = false; }},
-      {"the cosine missing from the bounce weight f |cos| / pdf", [](PathRules& r) { r.cosine = false; }},
-      {"a diffuse bounce weighed with f = the albedo (1 / pi missing)", [](PathRules& r) { r.f_over_pi = false; }},
+       "俄罗斯轮盘赌没有除以 p（继续的路径必须除以 p）", [](PathRules& r) { r.divide_by_p = false; }},
+      {"the cosine missing from the bounce weight f |cos| / pdf", "弹射权重 f |cos| / pdf 中缺少余弦",
+       [](PathRules& r) { r.cosine = false; }},
+      {"a diffuse bounce weighed with f = the albedo (1 / pi missing)", "漫反射弹射的权重用了 f = 反照率（缺少 1 / pi）",
+       [](PathRules& r) { r.f_over_pi = false; }},
       {"emission counted after a diffuse bounce too (estimate_direct_light "
        "counted it already)",
+       "漫反射弹射之后也计算了自发光（estimate_direct_light 已经计算过它）",
        [](PathRules& r) { r.emission_after_diffuse = true; }},
-      {"no emission counted after a mirror or glass bounce", [](PathRules& r) { r.emission_after_specular = false; }},
-      {"the emission of a light the camera sees left out", [](PathRules& r) { r.camera_emission = false; }},
-      {"black where the path leaves the scene, not the background", [](PathRules& r) { r.background = false; }},
-      {"the surface at depth == max_depth left out", [](PathRules& r) { r.last_surface = false; }},
+      {"no emission counted after a mirror or glass bounce", "镜面或玻璃弹射之后没有计算自发光",
+       [](PathRules& r) { r.emission_after_specular = false; }},
+      {"the emission of a light the camera sees left out", "漏掉了相机直接看到的光源的自发光",
+       [](PathRules& r) { r.camera_emission = false; }},
+      {"black where the path leaves the scene, not the background", "路径离开场景时用了黑色，而不是背景",
+       [](PathRules& r) { r.background = false; }},
+      {"the surface at depth == max_depth left out", "漏掉了 depth == max_depth 处的表面",
+       [](PathRules& r) { r.last_surface = false; }},
   };
   return mistakes;
 }
 
 // Your value as a correct path's with a Russian roulette probability of its own (PathRules), in
 // words, or "".
-std::string fitted_own_roulette(const std::vector<SurfaceTerms>& surfaces, const RenderContext& context,
-                                const glm::vec3& yours) {
+std::string fitted_own_roulette(const Words& words, const std::vector<SurfaceTerms>& surfaces,
+                                const RenderContext& context, const glm::vec3& yours) {
   const auto fits = [&](const PathRules& rules) {
     const std::optional<glm::dvec3> value = path_value(surfaces, context, rules);
     return value && near(glm::dvec3(yours), *value, kValueTolerance);
@@ -428,11 +468,13 @@ std::string fitted_own_roulette(const std::vector<SurfaceTerms>& surfaces, const
         rules.own_from_depth = from_depth;
         rules.own_floor = floor;
         if (fits(rules))
-          return std::string("your path plays Russian roulette with a probability of its own, the largest channel of "
-                             "the throughput ") +
-                 (own == OwnRoulette::ByThroughputAfter ? "after" : "before") + " the bounce's weight (from depth " +
-                 std::to_string(from_depth) + " on), not context.continue_probability's: the same mean, and right "
-                 "along this path";
+          return words("your path plays Russian roulette with a probability of its own, the largest channel of "
+                       "the throughput ",
+                       "你的路径用自己的概率做俄罗斯轮盘赌，即乘上弹射权重") +
+                 (own == OwnRoulette::ByThroughputAfter ? words("after", "之后") : words("before", "之前")) +
+                 words(" the bounce's weight (from depth ", "的吞吐量的最大通道（从深度 ") + std::to_string(from_depth) +
+                 words(" on), not context.continue_probability's: the same mean, and right along this path",
+                       " 开始），而不是 context.continue_probability 给出的 p：均值相同，沿这条路径也是对的");
       }
   // A fixed probability of the common ones (GAMES101 assignment 7 uses 0.8). Not any number: with
   // one bounce, some fixed probability gives every value that a wrong factor on the bounce gives.
@@ -441,15 +483,18 @@ std::string fitted_own_roulette(const std::vector<SurfaceTerms>& surfaces, const
     rules.own = OwnRoulette::Fixed;
     rules.own_fixed_p = p;
     if (fits(rules))
-      return "your path plays Russian roulette with a fixed probability of its own, " + text(p) +
-             ", not context.continue_probability's: the same mean, and right along this path";
+      return words("your path plays Russian roulette with a fixed probability of its own, ",
+                   "你的路径用自己的固定概率 ") +
+             text(p) +
+             words(", not context.continue_probability's: the same mean, and right along this path",
+                   " 做俄罗斯轮盘赌，而不是 context.continue_probability 给出的 p：均值相同，沿这条路径也是对的");
   }
   return "";
 }
 
 // The mistakes (one, or two together) whose rules give `yours` where the contract's do not.
-std::string fitted_mistakes(const std::vector<SurfaceTerms>& surfaces, const RenderContext& context,
-                            const glm::vec3& yours, const glm::dvec3& contract) {
+std::string fitted_mistakes(const Words& words, const std::vector<SurfaceTerms>& surfaces,
+                            const RenderContext& context, const glm::vec3& yours, const glm::dvec3& contract) {
   const auto& mistakes = path_mistakes();
   const auto fits = [&](const PathRules& rules) {
     const std::optional<glm::dvec3> value = path_value(surfaces, context, rules);
@@ -458,7 +503,9 @@ std::string fitted_mistakes(const std::vector<SurfaceTerms>& surfaces, const Ren
   for (const PathMistake& mistake : mistakes) {
     PathRules rules;
     mistake.make(rules);
-    if (fits(rules)) return std::string("your value is the contract's with ") + mistake.words;
+    if (fits(rules))
+      return words("your value is the contract's with ", "你的值正是契约的规则犯了这个错误时给出的值：") +
+             words(mistake.english, mistake.chinese);
   }
   for (std::size_t a = 0; a < mistakes.size(); ++a)
     for (std::size_t b = a + 1; b < mistakes.size(); ++b) {
@@ -466,10 +513,11 @@ std::string fitted_mistakes(const std::vector<SurfaceTerms>& surfaces, const Ren
       mistakes[a].make(rules);
       mistakes[b].make(rules);
       if (fits(rules))
-        return std::string(
-                   "your value is the contract's with two mistakes "
-                   "together: ") +
-               mistakes[a].words + "; and " + mistakes[b].words;
+        return words("your value is the contract's with two mistakes "
+                     "together: ",
+                     "你的值正是契约的规则同时犯了两个错误时给出的值：") +
+               words(mistakes[a].english, mistakes[a].chinese) + words("; and ", "；以及") +
+               words(mistakes[b].english, mistakes[b].chinese);
     }
   return "";
 }
@@ -480,6 +528,8 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
                        PixelTrace& trace) {
   const TraceSettings& settings = trace.settings;
   const bool path_tracer = settings.integrator == IntegratorKind::Path;
+  // The steps' words in the trace's language.
+  const Words words{settings.chinese};
   // Yours: the geometry your stages 02-05 trace (as raylab render's); the contract's: every
   // primitive tested with the kit's exact tests. Every ray is traced (no skip of rays outside the
   // scene's bounds), so that each one is seen.
@@ -495,7 +545,7 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
   {
     RecordingCalls recording(recorder);
     ShadingStats stats;
-    radiance = outcome_of([&] {
+    radiance = outcome_of(words, [&] {
       return path_tracer ? path_radiance(yours, camera_ray, sampler) : direct_light_li(yours, camera_ray, sampler, stats);
     });
   }
@@ -534,17 +584,21 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
   for (std::size_t depth = 0; depth < path.size(); ++depth) {
     const PathVertex& vertex = path[depth];
     const int d = static_cast<int>(depth);
-    const std::string at = "surface " + std::to_string(depth);
+    const std::string at = words("surface ", "表面 ") + std::to_string(depth);
     SurfaceTerms surface;
     // The closest hit of a bounce ray (the camera ray's is above).
     if (depth > 0) {
       const std::optional<SurfaceHit> expected = contract_geometry.intersect(vertex.ray);
-      TraceStep step{"", "", at + ": the closest hit along the bounce ray (" + text(vertex.ray) + ")",
-                     hit_text(scene, vertex.hit), hit_text(scene, expected)};
+      TraceStep step{"", "",
+                     at + words(": the closest hit along the bounce ray (", "：沿弹射光线的最近交点（") +
+                         ray_text(words, vertex.ray) + words(")", "）"),
+                     hit_text(words, scene, vertex.hit), hit_text(words, scene, expected)};
       step.agrees =
           vertex.hit.has_value() == expected.has_value() &&
           (!expected || (near(vertex.hit->t_hit, expected->t_hit) && vertex.hit->material == expected->material));
-      if (!step.agrees) step.note = "your geometry (stages 02-05: spheres, triangles, boxes, trees) finds another hit";
+      if (!step.agrees)
+        step.note = words("your geometry (stages 02-05: spheres, triangles, boxes, trees) finds another hit",
+                          "你的几何（阶段 02-05：球、三角形、包围盒、树）找到了另一个交点");
       steps.push_back(step);
     }
     if (!vertex.hit) {
@@ -560,13 +614,15 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
     surface.specular = bsdf.is_specular();
 
     if (bsdf.kind == BsdfKind::Lambertian) {
-      const Outcome<glm::vec3> f = outcome_of([&] { return lambertian_f(bsdf.albedo); });
+      const Outcome<glm::vec3> f = outcome_of(words, [&] { return lambertian_f(bsdf.albedo); });
       const glm::dvec3 expected = glm::dvec3(bsdf.albedo) / kPiInDouble;
       TraceStep step{"08_direct_light", "lambertian_f",
-                     at + " (" + material_text(scene, hit) + ", diffuse): lambertian_f(albedo " + text(bsdf.albedo) + ")",
-                     f.value ? text(*f.value) : f.failure, text(expected) + "  (albedo / pi)"};
+                     at + words(" (", "（") + material_text(words, scene, hit) + words(", diffuse): ", "，漫反射）：") +
+                         "lambertian_f(albedo " + text(bsdf.albedo) + ")",
+                     f.value ? text(*f.value) : f.failure,
+                     text(expected) + words("  (albedo / pi)", "  （albedo / pi）")};
       step.agrees = f.value && near(glm::dvec3(*f.value), expected);
-      steps.push_back(marked_at_stub(step, f));
+      steps.push_back(marked_at_stub(words, step, f));
     }
 
     if (bsdf.is_black()) {
@@ -581,7 +637,7 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
         RecordingCalls recording(probe_recorder);
         Sampler probe(settings.samples_per_pixel, settings.seed + 1);
         probe.start_pixel_sample(trace.x, trace.y, settings.sample);
-        estimate = outcome_of([&] { return estimate_direct_light(yours, hit, bsdf, wo, probe); });
+        estimate = outcome_of(words, [&] { return estimate_direct_light(yours, hit, bsdf, wo, probe); });
       }
       const LightCalls probe_calls = light_calls(probe_recorder.calls, 0, probe_recorder.calls.size());
       if (probe_calls.sample && probe_calls.sample->light_sample && probe_calls.sample->light.kind != LightKind::Point) {
@@ -590,60 +646,68 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
         // Stage 07's density of the light's points (sample_li's, through sample_triangle or
         // sample_sphere), then stage 08's conversion.
         if (light.kind == LightKind::Triangle) {
-          const Outcome<float> pdf = outcome_of([&] { return uniform_triangle_pdf(light.p0, light.p1, light.p2); });
+          const Outcome<float> pdf =
+              outcome_of(words, [&] { return uniform_triangle_pdf(light.p0, light.p1, light.p2); });
           TraceStep step{"07_sampling", "uniform_triangle_pdf",
-                         at + ": the light's points, uniform_triangle_pdf(" + text(light.p0) + ", " + text(light.p1) +
-                             ", " + text(light.p2) + ")",
-                         pdf.value ? text(*pdf.value) : pdf.failure, text(density.pdf_area) + "  (1 / area)"};
+                         at + words(": the light's points, ", "：光源上的点的密度，") + "uniform_triangle_pdf(" +
+                             text(light.p0) + ", " + text(light.p1) + ", " + text(light.p2) + ")",
+                         pdf.value ? text(*pdf.value) : pdf.failure,
+                         text(density.pdf_area) + words("  (1 / area)", "  （1 / 面积）")};
           step.agrees = pdf.value && near(*pdf.value, density.pdf_area);
-          steps.push_back(marked_at_stub(step, pdf));
+          steps.push_back(marked_at_stub(words, step, pdf));
         } else {
           const glm::vec3 outward =
               glm::normalize(probe_calls.sample->light_sample->point - light.sphere.center);
-          const Outcome<float> pdf = outcome_of([&] { return uniform_sphere_pdf(outward); });
+          const Outcome<float> pdf = outcome_of(words, [&] { return uniform_sphere_pdf(outward); });
           TraceStep step{"07_sampling", "uniform_sphere_pdf",
-                         at + ": the light's points, uniform_sphere_pdf(" + text(outward) + ")",
+                         at + words(": the light's points, ", "：光源上的点的密度，") + "uniform_sphere_pdf(" +
+                             text(outward) + ")",
                          pdf.value ? text(*pdf.value) : pdf.failure,
-                         text(1.0 / (4.0 * kPiInDouble)) + "  (1 / (4 pi))"};
+                         text(1.0 / (4.0 * kPiInDouble)) + words("  (1 / (4 pi))", "  （1 / (4 pi)）")};
           step.agrees = pdf.value && near(*pdf.value, 1.0 / (4.0 * kPiInDouble));
-          steps.push_back(marked_at_stub(step, pdf));
+          steps.push_back(marked_at_stub(words, step, pdf));
         }
-        const Outcome<float> pdf = outcome_of([&] {
+        const Outcome<float> pdf = outcome_of(words, [&] {
           return area_pdf_to_solid_angle(float(density.pdf_area), float(density.distance), float(density.cos_at_light));
         });
         TraceStep step{"08_direct_light", "area_pdf_to_solid_angle",
-                       at + ": area_pdf_to_solid_angle(pdf_area " + text(density.pdf_area) + ", distance " +
-                           text(density.distance) + ", cos_at_light " + text(density.cos_at_light) + ")",
+                       at + words(": ", "：") + "area_pdf_to_solid_angle(pdf_area " + text(density.pdf_area) +
+                           ", distance " + text(density.distance) + ", cos_at_light " +
+                           text(density.cos_at_light) + ")",
                        pdf.value ? text(*pdf.value) : pdf.failure,
-                       text(density.per_steradian) + "  (pdf_area * distance^2 / cos_at_light)"};
+                       text(density.per_steradian) + words("  (pdf_area * distance^2 / cos_at_light)",
+                                                           "  （pdf_area * distance^2 / cos_at_light）")};
         step.agrees = pdf.value && near(*pdf.value, density.per_steradian);
-        steps.push_back(marked_at_stub(step, pdf));
+        steps.push_back(marked_at_stub(words, step, pdf));
       }
-      const ContractDirect expected = contract_direct(contracts, hit, bsdf, wo, probe_calls);
+      const ContractDirect expected = contract_direct(words, contracts, hit, bsdf, wo, probe_calls);
       // A shadow ray whose answer differs is a step of its own; the estimate below takes your
       // answer, so that only the estimator's arithmetic is held to the contract there.
-      if (auto shadow = shadow_ray_step(at, probe_calls, expected, hit, "08_direct_light", "estimate_direct_light"))
+      if (auto shadow =
+              shadow_ray_step(words, at, probe_calls, expected, hit, "08_direct_light", "estimate_direct_light"))
         steps.push_back(*shadow);
       TraceStep step{"08_direct_light", "estimate_direct_light",
-                     at + ": estimate_direct_light(context, hit, bsdf, wo, sampler), called once more on its own",
+                     at + words(": ", "：") + "estimate_direct_light(context, hit, bsdf, wo, sampler)" +
+                         words(", called once more on its own", "，单独再调用一次"),
                      estimate.value ? text(*estimate.value) : estimate.failure,
-                     expected.value ? text(*expected.value) : "not checked: " + expected.why, expected.what};
+                     expected.value ? text(*expected.value) : words("not checked: ", "没有检查：") + expected.why,
+                     expected.what};
       step.agrees = estimate.value && expected.wrong_light.empty() &&
                     (!expected.value || near(glm::dvec3(*estimate.value), *expected.value, kValueTolerance));
-      steps.push_back(marked_at_stub(step, estimate));
+      steps.push_back(marked_at_stub(words, step, estimate));
 
       // The light sample of your path itself: its value is not seen, only its calls.
       const LightCalls path_calls = light_calls(calls, vertex.first, vertex.end);
-      const ContractDirect path_direct = contract_direct(contracts, hit, bsdf, wo, path_calls);
+      const ContractDirect path_direct = contract_direct(words, contracts, hit, bsdf, wo, path_calls);
       surface.direct = path_direct.value;
-      if (auto shadow = shadow_ray_step(at + " (your path's own light sample)", path_calls, path_direct, hit,
-                                      path_tracer ? "09_path" : "08_direct_light",
-                                      path_tracer ? "path_radiance" : "estimate_direct_light"))
+      if (auto shadow = shadow_ray_step(words, at + words(" (your path's own light sample)", "（你的路径自己的光源样本）"),
+                                        path_calls, path_direct, hit, path_tracer ? "09_path" : "08_direct_light",
+                                        path_tracer ? "path_radiance" : "estimate_direct_light"))
         steps.push_back(*shadow);
       if (!path_calls.sample && !contracts.lights.empty())
         unsampled_light.push_back(d);
       else if (!path_direct.value && light_not_followed.empty())
-        light_not_followed = path_direct.why + " at " + at;
+        light_not_followed = words(path_direct.why + " at " + at, "在" + at + "，" + path_direct.why);
     } else {
       surface.direct = glm::dvec3(0.0);
     }
@@ -653,29 +717,35 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
     const float p = contracts.continue_probability(d, glm::vec3(throughput));
     std::string roulette;
     if (path_tracer && d < settings.max_depth && (p < 1.0f || !surface.went_on))
-      roulette = "Russian roulette: p = context.continue_probability(" + std::to_string(depth) + ", throughput " +
-                 text(glm::vec3(throughput)) + ") = " + text(p) +
-                 (surface.went_on ? (p < 1.0f ? "; your path went on (the contract divides by p)" : "; your path went on")
-                                  : "; your path ended here");
+      roulette = words("Russian roulette: ", "俄罗斯轮盘赌：") + "p = context.continue_probability(" +
+                 std::to_string(depth) + ", throughput " + text(glm::vec3(throughput)) + ") = " + text(p) +
+                 (surface.went_on ? (p < 1.0f ? words("; your path went on (the contract divides by p)",
+                                                      "；你的路径继续了（契约会除以 p）")
+                                              : words("; your path went on", "；你的路径继续了"))
+                                  : words("; your path ended here", "；你的路径在这里结束"));
     if (vertex.bounce) {
       const RecordedCall& bounce = *vertex.bounce;
-      const std::string call =
-          at + ": bsdf_sample_f(" + bsdf_name(bsdf) + ", u_lobe " + text(bounce.u_lobe) + ", u " + text(bounce.u) + ")";
+      const std::string call = at + words(": ", "：") + "bsdf_sample_f(" + bsdf_name(words, bsdf) + ", u_lobe " +
+                               text(bounce.u_lobe) + ", u " + text(bounce.u) + ")";
       // Its arguments: this surface's BSDF, its normal (either side) and minus the ray's direction.
       std::string wrong_arguments;
       if (std::fabs(glm::dot(bounce.normal, hit.geometric_normal)) < 1.0f - 1e-4f)
-        wrong_arguments = "the normal " + text(bounce.normal) + ", not the hit's geometric_normal " +
+        wrong_arguments = words("the normal ", "法线 ") + text(bounce.normal) +
+                          words(", not the hit's geometric_normal ", "，而不是交点的 geometric_normal ") +
                           text(hit.geometric_normal);
       else if (!same_direction(bounce.wo, wo))
-        wrong_arguments = "wo " + text(bounce.wo) + ", not minus the ray's direction " + text(wo);
+        wrong_arguments = "wo " + text(bounce.wo) + words(", not minus the ray's direction ", "，而不是光线方向的相反方向 ") +
+                          text(wo);
       else if (bounce.bsdf.kind != bsdf.kind || bounce.bsdf.albedo != bsdf.albedo)
-        wrong_arguments = "another BSDF than bsdf_of(material, diffuse_color_at(material, hit))";
+        wrong_arguments = words("another BSDF than bsdf_of(material, diffuse_color_at(material, hit))",
+                                "另一个 BSDF，而不是 bsdf_of(material, diffuse_color_at(material, hit))");
       if (!wrong_arguments.empty()) {
-        steps.push_back(TraceStep{"09_path", "path_radiance", call, "called with " + wrong_arguments,
-                                  "this surface's BSDF, normal and wo", "", false});
-        not_followed = "your bounce at " + at + " was sampled with other arguments";
+        steps.push_back(TraceStep{"09_path", "path_radiance", call, words("called with ", "调用时用了") + wrong_arguments,
+                                  words("this surface's BSDF, normal and wo", "这个表面的 BSDF、法线和 wo"), "", false});
+        not_followed = words("your bounce at " + at + " was sampled with other arguments", "你在" + at + " 的弹射是用别的参数采样的");
       } else if (!bounce.bsdf_sample) {
-        steps.push_back(TraceStep{"", "", call, "no sample: the path ends", "no sample: the path ends", roulette, true});
+        const std::string no_sample = words("no sample: the path ends", "没有样本：路径结束");
+        steps.push_back(TraceStep{"", "", call, no_sample, no_sample, roulette, true});
       } else {
         const BsdfSample& sample = *bounce.bsdf_sample;
         const glm::vec3 facing = glm::dot(hit.geometric_normal, wo) > 0.0f ? hit.geometric_normal : -hit.geometric_normal;
@@ -691,9 +761,13 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
           const double cos_facing = glm::dot(glm::dvec3(facing), glm::dvec3(sample.wi)) / length;
           const bool direction_ok = std::fabs(length - 1.0) < 1e-3 && cos_facing > 0.0;
           TraceStep step{"07_sampling", direction_ok ? "cosine_hemisphere_pdf" : "sample_cosine_hemisphere",
-                         call + ": your sample_cosine_hemisphere(u) and cosine_hemisphere_pdf", got,
-                         direction_ok ? "pdf " + text(cos_facing / kPiInDouble) + "  (cos / pi for this direction)"
-                                      : "a unit direction above the surface (|wi| = 1, z > 0 locally)",
+                         call + words(": your ", "：你的 ") + "sample_cosine_hemisphere(u)" + words(" and ", " 和 ") +
+                             "cosine_hemisphere_pdf",
+                         got,
+                         direction_ok ? "pdf " + text(cos_facing / kPiInDouble) +
+                                            words("  (cos / pi for this direction)", "  （这个方向的 cos / pi）")
+                                      : words("a unit direction above the surface (|wi| = 1, z > 0 locally)",
+                                              "表面上方的单位方向（|wi| = 1，局部坐标中 z > 0）"),
                          roulette};
           step.agrees = direction_ok && near(sample.pdf, cos_facing / kPiInDouble);
           steps.push_back(step);
@@ -702,8 +776,9 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
           surface.f = glm::dvec3(bsdf.albedo) / kPiInDouble;
           surface.pdf = cosine / kPiInDouble;
         } else {
-          steps.push_back(
-              TraceStep{"", "", call, got, "the framework's (" + std::string(bsdf_name(bsdf)) + ")", roulette, true});
+          steps.push_back(TraceStep{"", "", call, got,
+                                    words("the framework's (", "由框架计算（") + bsdf_name(words, bsdf) + words(")", "）"),
+                                    roulette, true});
           surface.f = glm::dvec3(sample.f);
           surface.pdf = sample.pdf;
         }
@@ -711,19 +786,26 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
         throughput *= surface.f * (surface.cosine / surface.pdf);
         if (path_tracer && !surface.went_on && !vertex.own_next_ray && p >= 1.0f && d == settings.max_depth - 1 &&
             throughput != glm::dvec3(0.0))
-          stopped_short = "your path stopped after sampling the bounce at " + at + ", the surface before depth " +
-                          "max_depth = " + std::to_string(settings.max_depth) + ", which counts too (a loop "
-                          "depth < max_depth?)";
+          stopped_short =
+              words("your path stopped after sampling the bounce at " + at + ", the surface before depth " +
+                        "max_depth = " + std::to_string(settings.max_depth) +
+                        ", which counts too (a loop "
+                        "depth < max_depth?)",
+                    "你的路径在" + at + " 采样弹射之后就停止了，这是深度 max_depth = " + std::to_string(settings.max_depth) +
+                        " 之前的表面，而深度 max_depth 处的表面也要算（循环写成了 depth < max_depth？）");
       }
     } else if (path_tracer && d < settings.max_depth && !bsdf.is_black() && !vertex.own_next_ray && p < 1.0f) {
       steps.push_back(TraceStep{"", "",
-                                at + ": Russian roulette, p = context.continue_probability(" + std::to_string(depth) +
-                                    ", throughput " + text(glm::vec3(throughput)) + ")",
-                                "the path ended here", "p = " + text(p) + ": the path goes on with probability p", "",
-                                true});
+                                at + words(": Russian roulette, ", "：俄罗斯轮盘赌，") +
+                                    "p = context.continue_probability(" + std::to_string(depth) + ", throughput " +
+                                    text(glm::vec3(throughput)) + ")",
+                                words("the path ended here", "路径在这里结束"),
+                                "p = " + text(p) + words(": the path goes on with probability p", "：路径以概率 p 继续"),
+                                "", true});
     }
     if (path_tracer && vertex.own_next_ray && not_followed.empty())
-      not_followed = "your path samples its bounce at " + at + " without bsdf_sample_f, which the trace follows";
+      not_followed = words("your path samples its bounce at " + at + " without bsdf_sample_f, which the trace follows",
+                           "你的路径在" + at + " 采样弹射时没有用跟踪所依据的 bsdf_sample_f");
     surfaces.push_back(surface);
   }
 
@@ -731,31 +813,38 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
   // samples and bounces; or, for the direct-light integrator (the framework's, around your
   // estimate_direct_light), the light of this very sample's light sample.
   TraceStep step{path_tracer ? "09_path" : "08_direct_light", path_tracer ? "path_radiance" : "estimate_direct_light",
-                 path_tracer ? "path_radiance(context, camera_ray, sampler): this sample's value"
-                             : "this sample's value: the framework's direct_light_li with your estimate_direct_light",
+                 path_tracer
+                     ? "path_radiance(context, camera_ray, sampler)" + words(": this sample's value", "：这个样本的值")
+                     : words("this sample's value: the framework's direct_light_li with your estimate_direct_light",
+                             "这个样本的值：框架的 direct_light_li（调用你的 estimate_direct_light）"),
                  radiance.value ? text(*radiance.value) : radiance.failure, ""};
   if (!radiance.value) {
-    step.expected = "a radiance, three finite numbers";
+    step.expected = words("a radiance, three finite numbers", "一个辐亮度，即三个有限的数");
     step.agrees = false;
-    steps.push_back(marked_at_stub(step, radiance));
+    steps.push_back(marked_at_stub(words, step, radiance));
     return;
   }
   const glm::dvec3 value(*radiance.value);
   const int last_depth = static_cast<int>(path.size()) - 1;
   const std::optional<glm::dvec3> expected =
       not_followed.empty() ? path_value(surfaces, contracts, PathRules{}) : std::nullopt;
+  const std::string not_checked = words("not checked: ", "没有检查：");
   if (!not_followed.empty()) {
-    step.expected = "not checked: " + not_followed;  // (other arguments are marked at the bounce)
+    step.expected = not_checked + not_followed;  // (other arguments are marked at the bounce)
   } else if (path_tracer && last_depth > settings.max_depth) {
-    step.expected = "a path that ends at the surface at depth max_depth";
+    step.expected = words("a path that ends at the surface at depth max_depth", "在深度 max_depth 处的表面结束的路径");
     step.agrees = false;
-    step.note = "your path went on after the surface at depth max_depth = " + std::to_string(settings.max_depth);
+    step.note = words("your path went on after the surface at depth max_depth = ",
+                      "你的路径在深度 max_depth = ") +
+                std::to_string(settings.max_depth) + words("", " 处的表面之后还在继续");
   } else if (!expected && (!path_tracer || !light_not_followed.empty() || unsampled_light.empty())) {
-    step.expected = "not checked: " + (light_not_followed.empty() ? std::string("a light sample could not be followed")
-                                                                  : light_not_followed);
+    step.expected = not_checked + (light_not_followed.empty()
+                                       ? words("a light sample could not be followed", "有一个光源样本无法跟踪")
+                                       : light_not_followed);
   } else if (!expected) {
     // A diffuse surface whose light your path did not sample.
-    const std::string where = "surface " + std::to_string(unsampled_light.empty() ? 0 : unsampled_light.front());
+    const std::string where =
+        words("surface ", "表面 ") + std::to_string(unsampled_light.empty() ? 0 : unsampled_light.front());
     PathRules none;
     none.no_light_sample_is_zero = true;
     PathRules emission_only = none;
@@ -764,42 +853,55 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
     const std::optional<glm::dvec3> by_emission = path_value(surfaces, contracts, emission_only);
     if (by_emission && without && near(value, *by_emission, kValueTolerance) &&
         !near(value, *without, kValueTolerance)) {
-      step.expected = text(*by_emission) + "  (your path's emission, without light sampling)";
-      step.note = "your path samples no light and counts the emission its bounces reach instead: the same mean, "
-                  "with more noise; the contract asks for estimate_direct_light at every diffuse surface";
+      step.expected = text(*by_emission) + words("  (your path's emission, without light sampling)",
+                                                 "  （你的路径的自发光，没有光源采样）");
+      step.note = words("your path samples no light and counts the emission its bounces reach instead: the same mean, "
+                        "with more noise; the contract asks for estimate_direct_light at every diffuse surface",
+                        "你的路径不采样光源，而是计入弹射所到达的自发光：均值相同，噪声更多；契约要求在每个漫反射表面"
+                        "调用 estimate_direct_light");
     } else if (without && near(value, *without, kValueTolerance)) {
-      step.expected = "the direct light at " + where;
+      step.expected = words("the direct light at " + where, where + " 处的直接光照");
       step.agrees = false;
-      step.note = "your path adds no direct light at " + where +
-                  ", a diffuse surface: call estimate_direct_light there (docs/09_path.md, section 2)";
+      step.note = words("your path adds no direct light at " + where +
+                            ", a diffuse surface: call estimate_direct_light there (docs/09_path.md, section 2)",
+                        "你的路径没有在" + where +
+                            "（一个漫反射表面）加上直接光照：要在那里调用 estimate_direct_light（docs/zh/09_path.md，第 2 节）");
     } else {
-      step.expected = "not checked: your path sampled no light at " + where + " with sample_li";
+      step.expected = words("not checked: your path sampled no light at " + where + " with sample_li",
+                            "没有检查：你的路径在" + where + " 没有用 sample_li 采样光源");
     }
   } else {
-    step.expected = text(*expected) + "  (the contract's rules on your path's surfaces, light samples and bounces)";
+    step.expected =
+        text(*expected) + words("  (the contract's rules on your path's surfaces, light samples and bounces)",
+                                "  （契约的规则作用于你的路径的这些表面、光源样本和弹射）");
     step.agrees = near(value, *expected, kValueTolerance);
     if (!step.agrees && path_tracer) {
       // A mistake that gives your value comes first; a roulette of your own that gives it too is
       // named beside it (one sample cannot tell them apart), and alone it is no disagreement.
-      const std::string mistake = fitted_mistakes(surfaces, contracts, *radiance.value, *expected);
-      const std::string own_roulette = fitted_own_roulette(surfaces, contracts, *radiance.value);
+      const std::string mistake = fitted_mistakes(words, surfaces, contracts, *radiance.value, *expected);
+      const std::string own_roulette = fitted_own_roulette(words, surfaces, contracts, *radiance.value);
       if (!mistake.empty()) {
         step.note = mistake;
-        if (!own_roulette.empty()) step.note += " (or else " + own_roulette + ")";
+        if (!own_roulette.empty()) step.note += words(" (or else ", "（也可能是：") + own_roulette + words(")", "）");
       } else if (!own_roulette.empty()) {
         step.agrees = true;
-        step.expected = text(*expected) + "  (with context.continue_probability's p)";
+        step.expected = text(*expected) + words("  (with context.continue_probability's p)",
+                                                "  （用 context.continue_probability 的 p）");
         step.note = own_roulette;
       }
     }
     if (!step.agrees && !path_tracer)
-      step.note = "the light sample your estimate_direct_light drew in this sample gives the contract's value above";
+      step.note =
+          words("the light sample your estimate_direct_light drew in this sample gives the contract's value above",
+                "你的 estimate_direct_light 在这个样本中抽取的光源样本，按契约的规则给出的是上面的值");
     if (step.agrees && !stopped_short.empty()) {
       step.agrees = false;
       step.note = stopped_short;
     }
   }
-  if (recorder.overflowed) step.note += (step.note.empty() ? "" : "; ") + std::string("only the first calls were followed");
+  if (recorder.overflowed)
+    step.note += (step.note.empty() ? "" : words("; ", "；")) +
+                 words("only the first calls were followed", "只跟踪了前面的一部分调用");
   steps.push_back(step);
 }
 

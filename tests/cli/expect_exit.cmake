@@ -1,8 +1,9 @@
-# cmake -DEXPECTED_EXIT=N [-DSTDERR_REGEX=re] [-DSTDERR_FORBID=re] [-DSTDOUT_REGEX=re] [-DEXPECTED_FILE=path]
-#       [-DREPEAT=n] -P expect_exit.cmake -- cmd args...
+# cmake -DEXPECTED_EXIT=N [-DSTDERR_REGEX=re] [-DSTDERR_FORBID=re] [-DSTDOUT_REGEX=re] [-DSTDOUT_FORBID=re]
+#       [-DEXPECTED_FILE=path] [-DREPEAT=n] -P expect_exit.cmake -- cmd args...
 # Runs cmd (REPEAT times, default once) and fails (with the command, its status and its output)
 # unless it exits with N, its stderr matches STDERR_REGEX and not STDERR_FORBID, its stdout
-# matches STDOUT_REGEX, and EXPECTED_FILE was written and is not empty, every time.
+# matches STDOUT_REGEX and not STDOUT_FORBID, and EXPECTED_FILE was written and is not empty,
+# every time.
 set(command "")
 set(after_separator OFF)
 math(EXPR last "${CMAKE_ARGC} - 1")
@@ -39,6 +40,9 @@ foreach(run RANGE 1 ${REPEAT})
   endif()
   if(DEFINED STDERR_FORBID AND err MATCHES "${STDERR_FORBID}")
     message(FATAL_ERROR "stderr matches '${STDERR_FORBID}' ('${CMAKE_MATCH_0}'), which it must not\n${report}")
+  endif()
+  if(DEFINED STDOUT_FORBID AND out MATCHES "${STDOUT_FORBID}")
+    message(FATAL_ERROR "stdout matches '${STDOUT_FORBID}' ('${CMAKE_MATCH_0}'), which it must not\n${report}")
   endif()
   if(DEFINED EXPECTED_FILE)
     if(NOT EXISTS "${EXPECTED_FILE}")

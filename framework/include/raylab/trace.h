@@ -68,8 +68,8 @@ struct TraceSettings {
   // The functions traced as yours: each left nullptr is the stage's own that this program links
   // (a grader's stage server gives its own for the stages it does not grade, as its pictures use).
   TracingFunctions yours;
-  // The words of the camera ray's steps in Simplified Chinese (values and code as they are); the
-  // Monte Carlo part's are English.
+  // The words of the trace's steps in Simplified Chinese, the camera ray's and the Monte Carlo
+  // part's alike (values and code as they are).
   bool chinese = false;
 };
 
