@@ -105,12 +105,11 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
   trace.position_in_pixel = position_in_pixel;
 
   // The steps' words in the trace's language.
-  const auto words = [&](const char* english, const char* chinese) {
-    return std::string(settings.chinese ? chinese : english);
-  };
+  const Words words{settings.chinese};
   const std::string not_written = words("not written yet", "尚未编写");
-  const auto ray_text = [&](const Ray& r) {
-    return words("origin ", "起点 ") + text(r.origin) + words("  direction ", "  方向 ") + text(r.direction);
+  // A mesh as the steps name it: by its name, else its index.
+  const auto mesh_name = [&](std::size_t m) {
+    return scene.meshes[m].name.empty() ? std::to_string(m) : "\"" + scene.meshes[m].name + "\"";
   };
   const auto t_text = [&](const std::optional<float>& t) {
     return t ? words("hit at t = ", "在 t = ") + text(*t) + words("", " 处击中") : words("no hit", "没有击中");
@@ -132,7 +131,7 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
     TraceStep step{"01_camera_rays", "generate_camera_ray",
                    "generate_camera_ray(camera, " + std::to_string(x) + ", " + std::to_string(y) + ", " +
                        text(position_in_pixel) + ")",
-                   stub ? not_written : ray_text(*got), ray_text(ray)};
+                   stub ? not_written : ray_text(words, *got), ray_text(words, ray)};
     step.agrees = !stub && near(got->origin, ray.origin) && near(got->direction, ray.direction);
     trace.steps.push_back(step);
   }
@@ -181,9 +180,8 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       const std::optional<std::optional<TriangleHit>> got =
           yours([&] { return your_triangle_test(ray, p0, p1, p2); }, stub);
       const std::optional<TriangleHit> expected = contract.triangle(ray, p0, p1, p2);
-      const std::string mesh_name = mesh.name.empty() ? std::to_string(m) : "\"" + mesh.name + "\"";
-      const std::string what = settings.chinese ? "网格 " + mesh_name + " 的三角形 " + std::to_string(k)
-                                                : "triangle " + std::to_string(k) + " of mesh " + mesh_name;
+      const std::string what = settings.chinese ? "网格 " + mesh_name(m) + " 的三角形 " + std::to_string(k)
+                                                : "triangle " + std::to_string(k) + " of mesh " + mesh_name(m);
       if (got && *got) record(closest_yours, (*got)->t_hit, what, std::nullopt, m, k);
       if (expected) record(closest_contract, expected->t_hit, what, std::nullopt, m, k);
       if ((!stub && !*got && !expected) || (stub && triangle_stub_shown)) {
@@ -222,13 +220,9 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
     const SceneGeometry::TreeWalk walk = geometry.walk_to(camera_ray, target.sphere, target.mesh, target.triangle);
     const glm::vec3 inverse = ray_direction_inverse_of(camera_ray);
     for (const SceneGeometry::TreeNodeOnPath& node : walk.path) {
-      const std::string tree =
-          node.mesh < 0 ? words("the tree over the objects", "物体之上的树")
-                        : (settings.chinese ? "网格 " : "mesh ") +
-                              (scene.meshes[static_cast<std::size_t>(node.mesh)].name.empty()
-                                   ? std::to_string(node.mesh)
-                                   : "\"" + scene.meshes[static_cast<std::size_t>(node.mesh)].name + "\"") +
-                              words("'s tree", " 的树");
+      const std::string tree = node.mesh < 0 ? words("the tree over the objects", "物体之上的树")
+                                             : words("mesh ", "网格 ") + mesh_name(static_cast<std::size_t>(node.mesh)) +
+                                                   words("'s tree", " 的树");
       bool stub = false;
       const std::optional<std::optional<float>> got =
           yours([&] { return intersect_ray_box(camera_ray, inverse, node.box); }, stub);

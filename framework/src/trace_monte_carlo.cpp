@@ -42,20 +42,6 @@ using Kind = RecordedCall::Kind;
 // function agree to this fraction.
 constexpr double kValueTolerance = 1e-3;
 
-// The words of a text in the trace's language (TraceSettings::chinese), as trace.cpp's: values,
-// code and the names of functions are the same in both.
-struct Words {
-  bool chinese = false;
-  std::string operator()(const std::string& english, const std::string& chinese_text) const {
-    return chinese ? chinese_text : english;
-  }
-};
-
-// A ray in words (trace_text's text(ray) in English).
-std::string ray_text(const Words& words, const Ray& ray) {
-  return words("origin ", "起点 ") + text(ray.origin) + words("  direction ", "  方向 ") + text(ray.direction);
-}
-
 bool same_direction(const glm::vec3& a, const glm::vec3& b) {
   const float la = glm::length(a), lb = glm::length(b);
   if (!(la > 0.0f) || !(lb > 0.0f)) return false;
@@ -293,24 +279,26 @@ std::optional<TraceStep> shadow_ray_step(const Words& words, const std::string& 
                  answer(*direct.your_blocked), answer(*direct.contract_blocked), "", false};
   const glm::vec3 point = found.sample->light_sample->point;
   const float reach = ray.t_max * glm::length(ray.direction), to_point = glm::length(point - ray.origin);
-  if (found.shadow->kind == Kind::Occluded && *direct.your_blocked && reach >= to_point * (1.0f - 1e-6f)) {
+  const bool reaches_the_light =
+      found.shadow->kind == Kind::Occluded && *direct.your_blocked && reach >= to_point * (1.0f - 1e-6f);
+  const bool starts_on_the_surface = ray.origin == hit.point;
+  if (reaches_the_light || starts_on_the_surface) {  // the ray itself: the code that built it
     step.stage = stage;
     step.function = function;
-    step.note = words("your shadow ray reaches the light's point and hits the light itself: stop it just short of the "
-                      "point (direction = point - origin, t_max = 1 - 1e-4: docs/08_direct_light.md, section 5)",
-                      "你的阴影光线到达了光源上的点，击中了光源本身：让它停在这个点之前一点点"
-                      "（direction = point - origin，t_max = 1 - 1e-4：docs/zh/08_direct_light.md，第 5 节）");
-  } else if (ray.origin == hit.point) {
-    step.stage = stage;
-    step.function = function;
-    step.note = words("your shadow ray starts on the surface, where rounding puts it a little below, not at "
-                      "offset_ray_origin(hit, direction)",
-                      "你的阴影光线从表面上出发，舍入误差会让它落在表面下方一点点；要从 offset_ray_origin(hit, direction) "
-                      "出发");
-  } else {
-    step.note = words("your geometry (stages 02-05) answers this shadow ray otherwise than the contract's exact tests",
-                      "你的几何（阶段 02-05）对这条阴影光线的回答与契约的精确测试不同");
   }
+  step.note =
+      reaches_the_light
+          ? words("your shadow ray reaches the light's point and hits the light itself: stop it just short of the "
+                  "point (direction = point - origin, t_max = 1 - 1e-4: docs/08_direct_light.md, section 5)",
+                  "你的阴影光线到达了光源上的点，击中了光源本身：让它停在这个点之前一点点"
+                  "（direction = point - origin，t_max = 1 - 1e-4：docs/zh/08_direct_light.md，第 5 节）")
+      : starts_on_the_surface
+          ? words("your shadow ray starts on the surface, where rounding puts it a little below, not at "
+                  "offset_ray_origin(hit, direction)",
+                  "你的阴影光线从表面上出发，舍入误差会让它落在表面下方一点点；要从 offset_ray_origin(hit, direction) "
+                  "出发")
+          : words("your geometry (stages 02-05) answers this shadow ray otherwise than the contract's exact tests",
+                  "你的几何（阶段 02-05）对这条阴影光线的回答与契约的精确测试不同");
   return step;
 }
 

@@ -32,7 +32,20 @@ inline std::string text(double v) {
 inline std::string text(const glm::vec3& v) { return "(" + text(v.x) + ", " + text(v.y) + ", " + text(v.z) + ")"; }
 inline std::string text(const glm::dvec3& v) { return "(" + text(v.x) + ", " + text(v.y) + ", " + text(v.z) + ")"; }
 inline std::string text(const glm::vec2& v) { return "(" + text(v.x) + ", " + text(v.y) + ")"; }
-inline std::string text(const Ray& ray) { return "origin " + text(ray.origin) + "  direction " + text(ray.direction); }
+
+// The words of a text in the trace's language (TraceSettings::chinese): values, code and the
+// names of functions are the same in both.
+struct Words {
+  bool chinese = false;
+  std::string operator()(const std::string& english, const std::string& chinese_text) const {
+    return chinese ? chinese_text : english;
+  }
+};
+
+// A ray in words.
+inline std::string ray_text(const Words& words, const Ray& ray) {
+  return words("origin ", "起点 ") + text(ray.origin) + words("  direction ", "  方向 ") + text(ray.direction);
+}
 
 // Agreement within float rounding: relative `relative` of the larger magnitude, or 1e-5 near 0.
 inline bool near(double a, double b, double relative = 1e-4) {
