@@ -19,10 +19,10 @@ Scene scene_named(const std::string& name) {
 
 TEST(Trace, TheReferenceAgreesAlongEveryPath) {
   const TracingFunctions contract = testkit::exact_tracing();
-  int paths = 0, surfaces_after_the_first = 0;
+  int paths = 0, surfaces_after_the_first = 0, mis_weights = 0;
   for (const char* name : {"cornell", "cornell_specular", "furnace", "whitted", "mis_plates"}) {
     const Scene scene = scene_named(name);
-    for (const IntegratorKind integrator : {IntegratorKind::DirectLight, IntegratorKind::Path})
+    for (const IntegratorKind integrator : {IntegratorKind::DirectLight, IntegratorKind::Path, IntegratorKind::PathMis})
       for (const char* roulette : {"1", "0.6", "auto"})
         for (int pixel = 0; pixel < 4; ++pixel)
           for (int sample = 0; sample < 4; ++sample) {
@@ -39,13 +39,17 @@ TEST(Trace, TheReferenceAgreesAlongEveryPath) {
                                  << ", pixel (" << x << ", " << y << "), sample " << sample << ": step " << first + 1
                                  << " (" << (first >= 0 ? trace.steps[first].call : "") << ") disagrees";
             ++paths;
-            for (const TraceStep& step : trace.steps)
+            for (const TraceStep& step : trace.steps) {
               if (step.call.rfind("surface 1:", 0) == 0) ++surfaces_after_the_first;
+              mis_weights += step.function == "power_heuristic";
+            }
           }
   }
-  EXPECT_EQ(paths, 5 * 2 * 3 * 4 * 4);
-  // The paths go on past their first surface (the trace follows bounces, not only camera hits).
+  EXPECT_EQ(paths, 5 * 3 * 3 * 4 * 4);
+  // The paths go on past their first surface (the trace follows bounces, not only camera hits),
+  // and MIS's weights are traced.
   EXPECT_GT(surfaces_after_the_first, 100);
+  EXPECT_GT(mis_weights, 100);
 }
 
 // Through the trees (the bunny's, the Cornell box's over its objects): on every pixel that hits,
@@ -62,7 +66,7 @@ TEST(Trace, TheReferenceAgreesThroughTheTrees) {
       for (int x = 1; x < 64; x += 4) {
         const PixelTrace trace = trace_pixel(scene, x, y, TraceSettings{}, contract);
         EXPECT_EQ(trace.first_disagreement(), -1) << name << " (" << x << ", " << y << ")";
-        ASSERT_EQ(trace.segments.size(), 1u);
+        ASSERT_GE(trace.segments.size(), 1u);
         EXPECT_EQ(trace.segments[0].kind, TraceSegment::Kind::Camera);
         int boxes = 0, tested = 0;
         for (const TraceStep& step : trace.steps) {
@@ -80,6 +84,38 @@ TEST(Trace, TheReferenceAgreesThroughTheTrees) {
     EXPECT_GT(hits, 20) << name << ": few pixels hit a primitive under a tree";
     EXPECT_GE(box_steps, 2 * hits) << name << ": fewer than two boxes on the way to a hit";
   }
+}
+
+// Whitted's rays after the camera ray (the Whitted scene's mirror-like glass sphere, its floor
+// under two point lights): each agrees, each is drawn, and a pixel seen through the glass follows
+// its reflection and refraction rays down to the shadow rays of the floor behind it.
+TEST(Trace, TheReferenceAgreesAlongWhittedsRays) {
+  const TracingFunctions contract = testkit::exact_tracing();
+  Scene scene = scene_named("whitted");
+  scene.camera.width = 128;
+  scene.camera.height = 96;
+  int reflections = 0, refractions = 0, shadow_rays = 0;
+  for (int y = 2; y < 96; y += 6)
+    for (int x = 2; x < 128; x += 6) {
+      const PixelTrace trace = trace_pixel(scene, x, y, TraceSettings{}, contract);
+      EXPECT_EQ(trace.first_disagreement(), -1) << "(" << x << ", " << y << ")";
+      int rays = 0;
+      for (const TraceStep& step : trace.steps) {
+        const bool reflection = step.call.find(": the reflection ray") != std::string::npos;
+        const bool refraction = step.call.find(": the refraction ray") != std::string::npos;
+        const bool shadow = step.call.find(": the shadow ray towards light") != std::string::npos;
+        reflections += reflection;
+        refractions += refraction;
+        shadow_rays += shadow;
+        rays += reflection || refraction || shadow;
+      }
+      EXPECT_LE(rays, 24) << "(" << x << ", " << y << ")";
+      // Each ray drawn: the camera ray, then one segment per ray after it.
+      ASSERT_EQ(trace.segments.size(), static_cast<std::size_t>(rays) + 1) << "(" << x << ", " << y << ")";
+    }
+  EXPECT_GT(reflections, 10);
+  EXPECT_GT(refractions, 10);
+  EXPECT_GT(shadow_rays, 40);
 }
 
 TEST(Trace, RecordsOnlyWhileItTraces) {

@@ -68,7 +68,11 @@ pre { white-space: pre-wrap; overflow-wrap: anywhere; font-size: 14px; line-heig
 .note { color: var(--muted); font-size: .93rem; margin: 4px 0; }
 details.trace { margin: 10px 0; }
 details.trace summary { cursor: pointer; font-weight: 600; color: inherit; }
-table.trace { border-collapse: collapse; font-family: ui-monospace, monospace; font-size: .82rem; margin: 6px 0; }
+/* A long trace (a path's) scrolls in its own box, which opens at its first disagreement. */
+.trace-steps { position: relative; max-height: 28rem; overflow-y: auto; border: 1px solid var(--line); margin: 6px 0; }
+table.trace { border-collapse: collapse; font-family: ui-monospace, monospace; font-size: .82rem; }
+table.trace thead th { position: sticky; top: 0; background: #fff; }
+table.trace td:first-child { white-space: nowrap; }
 table.trace th, table.trace td { text-align: left; vertical-align: top; padding: 3px 8px;
   border-bottom: 1px solid var(--line); overflow-wrap: anywhere; }
 table.trace tr.agrees td { color: var(--muted); }
@@ -116,6 +120,10 @@ constexpr const char* kScript = R"js(
     return [r.left + window.scrollX, r.top + window.scrollY, r.width, r.height];
   }
   window.addEventListener('load', function () {
+    document.querySelectorAll('.trace-steps').forEach(function (box) {
+      var first = box.querySelector('tr.first');
+      if (first) box.scrollTop = Math.max(0, first.offsetTop - box.clientHeight / 3);
+    });
     var images = Array.prototype.slice.call(document.images);
     var missing = images.filter(function (image) { return !(image.complete && image.naturalWidth > 0); });
     if (missing.length > 0) {
@@ -223,10 +231,15 @@ std::string figure(const std::string& file, const std::string& caption) {
 // first disagreement marked with its function and file. Every text is the stage server's, escaped.
 std::string trace_html(const PixelTrace& trace, const std::string& command, Language language) {
   std::string html = "<details class=\"trace\" open><summary>" +
-                     escape_html(text_of({MessageId::report_trace_heading,
-                                          {{"x", std::to_string(trace.x)}, {"y", std::to_string(trace.y)}}},
+                     escape_html(text_of(trace.settings.integrator == IntegratorKind::Whitted
+                                             ? Message{MessageId::report_trace_heading,
+                                                       {{"x", std::to_string(trace.x)}, {"y", std::to_string(trace.y)}}}
+                                             : Message{MessageId::report_trace_heading_sample,
+                                                       {{"x", std::to_string(trace.x)},
+                                                        {"y", std::to_string(trace.y)},
+                                                        {"sample", std::to_string(trace.settings.sample)}}},
                                          language)) +
-                     "</summary>\n<table class=\"trace\"><thead><tr><th>#</th><th>" +
+                     "</summary>\n<div class=\"trace-steps\"><table class=\"trace\"><thead><tr><th>#</th><th>" +
                      escape_html(text_of(MessageId::report_trace_call, language)) + "</th><th>" +
                      escape_html(text_of(MessageId::report_yours, language)) + "</th><th>" +
                      escape_html(text_of(MessageId::report_trace_contract, language)) + "</th></tr></thead><tbody>\n";
@@ -250,7 +263,7 @@ std::string trace_html(const PixelTrace& trace, const std::string& command, Lang
             std::to_string(i + 1) + "</td><td>" + call + "</td><td>" + escape_html(step.yours) + "</td><td>" +
             escape_html(step.expected) + "</td></tr>\n";
   }
-  html += "</tbody></table>\n<p class=\"note\">" +
+  html += "</tbody></table></div>\n<p class=\"note\">" +
           escape_html(text_of({MessageId::report_trace_command, {{"command", command}}}, language)) + "</p></details>\n";
   return html;
 }

@@ -4,11 +4,15 @@
 #include "09_path_calls.h"
 #include "grader_geometry.h"
 #include "stage_call.h"
+#include "stage_image.h"
 
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
 #include "raylab/stages/09_path.h"
 #include "raylab/stages/09b_mis.h"
+#include "raylab/testkit/exact_tracing.h"
+
+#include <algorithm>
 
 #include <cstring>
 #include <stdexcept>
@@ -25,6 +29,20 @@ constexpr grading::StageCall kPathRender{"path_render", "path_radiance (renderin
                                          grading::MessageId::lost_during_path_rendering};
 constexpr grading::StageCall kPathMisRender{"path_mis_render", "path_radiance_mis (rendering)",
                                             grading::MessageId::lost_during_path_mis_rendering};
+constexpr grading::StageCall kPathTracePixel{"path_trace_pixel", "tracing a pixel of the path tracer's picture",
+                                             grading::MessageId::lost_during_stage_picture_trace};
+
+// The trace's settings for the picture of `request`, its sample left at 0.
+TraceSettings path_trace_settings(const PathRenderRequest& request, bool chinese) {
+  TraceSettings settings;
+  settings.integrator = request.mis ? IntegratorKind::PathMis : IntegratorKind::Path;
+  settings.samples_per_pixel = request.samples_per_pixel;
+  settings.seed = request.seed;
+  settings.max_depth = request.max_depth;
+  settings.roulette = RussianRoulette{request.roulette_probability, false};
+  settings.chinese = chinese;
+  return settings;
+}
 
 }  // namespace
 
@@ -55,6 +73,28 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
     return result;
   }, {}, reply_limit(2 * sizeof(int) + 2 * sizeof(std::uint64_t) + 2 * sizeof(glm::vec3) * (request.probe_only ? 1 :
                      static_cast<std::uint64_t>(std::max(request.width, 0)) * static_cast<std::uint64_t>(std::max(request.height, 0)))));
+}
+
+PixelTrace path_trace_pixel(const std::string& scene_path, const PathRenderRequest& request, int x, int y,
+                            bool chinese) {
+  Writer arguments;
+  arguments.put_string(scene_path);
+  arguments.put(request);
+  arguments.put<int>(x);
+  arguments.put<int>(y);
+  arguments.put<std::uint8_t>(chinese);
+  return remote(kPathTracePixel, arguments, [&](Reader& in) {
+    PixelTrace trace;
+    trace.x = x;
+    trace.y = y;
+    trace.settings = path_trace_settings(request, chinese);
+    // Shown, never believed: a sample outside the pixel's is shown as sample 0.
+    const int sample = in.get<int>();
+    trace.settings.sample = sample >= 0 && sample < request.samples_per_pixel ? sample : 0;
+    read_trace_steps(in, trace);
+    in.expect_end();
+    return trace;
+  }, {}, reply_limit(1u << 20));
 }
 
 }  // namespace grading
@@ -95,6 +135,28 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
   return PathRenderResult{std::move(output.mean), std::move(output.variance_of_mean)};
 }
 
+PixelTrace path_trace_pixel(const std::string& scene_path, const PathRenderRequest& request, int x, int y,
+                            bool chinese) {
+  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + scene_path);
+  scene.camera.width = request.width;
+  scene.camera.height = request.height;
+  if (request.albedo >= 0.0f)
+    for (Material& material : scene.materials) material.diffuse_color = glm::vec3(request.albedo);
+  if (request.background.x >= 0.0f && request.background.y >= 0.0f && request.background.z >= 0.0f)
+    scene.background = request.background;
+  TraceSettings settings = path_trace_settings(request, chinese);
+  settings.yours = grader_tracing();  // as path_render's picture: the grader's geometry
+  std::optional<PixelTrace> first;
+  for (int sample = 0; sample < std::min(request.samples_per_pixel, kMostTracedPathSamples); ++sample) {
+    settings.sample = sample;
+    PixelTrace trace = trace_pixel(scene, x, y, settings, testkit::exact_tracing());
+    if (trace.first_disagreement() >= 0) return trace;
+    if (!first) first = std::move(trace);
+  }
+  if (!first) throw std::invalid_argument("the picture has no samples to trace");
+  return *first;
+}
+
 }  // namespace grading
 
 namespace {
@@ -109,7 +171,18 @@ void serve_path_render(Reader& in, Writer& out) {
   out.put_vector(result.variance_of_mean.pixels());
 }
 
-const bool kServed = grading::serve(kPathRender, serve_path_render) && grading::serve(kPathMisRender, serve_path_render);
+void serve_path_trace_pixel(Reader& in, Writer& out) {
+  const std::string scene_path = in.get_string();
+  const auto request = in.get<PathRenderRequest>();
+  const int x = in.get<int>(), y = in.get<int>();
+  const bool chinese = in.get<std::uint8_t>() != 0;
+  const PixelTrace trace = grading::path_trace_pixel(scene_path, request, x, y, chinese);
+  out.put<int>(trace.settings.sample);
+  grading::write_trace_steps(out, trace);
+}
+
+const bool kServed = grading::serve(kPathRender, serve_path_render) && grading::serve(kPathMisRender, serve_path_render) &&
+                     grading::serve(kPathTracePixel, serve_path_trace_pixel);
 
 }  // namespace
 #endif

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "raylab/image.h"
+#include "raylab/trace.h"
 
 #include <glm/glm.hpp>
 
@@ -30,5 +31,14 @@ struct PathRenderResult {
   Image mean, variance_of_mean;
 };
 PathRenderResult path_render(const std::string& scene_path, const PathRenderRequest& request);
+
+// Pixel (x, y) of that picture (not a probe's) traced as the report shows a failing picture's
+// pixel (raylab/trace.h): its samples in turn, from sample 0, until one's trace disagrees with the
+// contract; that one, or sample 0's when none of the first kMostTracedPathSamples does (as many as
+// the graded pictures have: a sample that makes the pixel differ is among them).
+// settings.sample says which; `chinese`: the steps' words in Chinese.
+constexpr int kMostTracedPathSamples = 128;
+PixelTrace path_trace_pixel(const std::string& scene_path, const PathRenderRequest& request, int x, int y,
+                            bool chinese);
 
 }  // namespace raylab::grading

@@ -249,6 +249,46 @@ glm::vec3 z_colour(double z, double limit) {
   return grey * (1.0f - t) + full * t;
 }
 
+// The command that prints path_trace_pixel's trace on the student's machine (with the student's
+// own geometry, which the picture replaced by the grader's).
+std::string path_trace_command(const std::string& scene, const PathRenderRequest& request, const PixelTrace& trace,
+                               bool chinese) {
+  return std::string("build/bin/raylab trace ") + (chinese ? "--lang zh " : "") + "--integrator " +
+         (request.mis ? "mis" : "path") + " --width " + std::to_string(request.width) + " --height " +
+         std::to_string(request.height) + " --spp " + std::to_string(request.samples_per_pixel) + " --sample " +
+         std::to_string(trace.settings.sample) + " --seed " + std::to_string(request.seed) + " --max-depth " +
+         std::to_string(request.max_depth) + " --roulette " + gtest_text(request.roulette_probability) + " --pixel " +
+         std::to_string(trace.x) + " " + std::to_string(trace.y) + " " + scene;
+}
+
+// A failing Cornell picture: the pixel of the worst region whose mean differs most from the
+// reference's in the worst channel, traced sample by sample in the stage server
+// (path_trace_pixel), under the pictures and as a note; nothing when the trace cannot be had.
+void attach_worst_region_trace(ImageComparison& images, const std::string& scene, const PathRenderRequest& request,
+                               const PathRenderResult& render, const Image& reference_mean, const RegionTest& test) {
+  int x = test.worst_x, y = test.worst_y;
+  double largest = -1;
+  for (int py = test.worst_y; py < test.worst_y + kRegion; ++py)
+    for (int px = test.worst_x; px < test.worst_x + kRegion; ++px) {
+      const double difference =
+          std::fabs(double(render.mean.at(px, py)[test.worst_channel]) - reference_mean.at(px, py)[test.worst_channel]);
+      if (difference > largest) {
+        largest = difference;
+        x = px;
+        y = py;
+      }
+    }
+  const bool chinese = language() == Language::Chinese;
+  PixelTrace trace;
+  try {
+    trace = path_trace_pixel(scene, request, x, y, chinese);
+  } catch (const std::exception&) {
+    return;
+  }
+  const std::string command = path_trace_command(scene, request, trace, chinese);
+  attach_pixel_trace(images, std::move(trace), command);
+}
+
 }  // namespace
 
 std::optional<RegionTest> expect_cornell_matches_reference(const std::string& stage_id, int scene_index, bool mis,
@@ -313,6 +353,7 @@ std::optional<RegionTest> expect_cornell_matches_reference(const std::string& st
     write_image(part(2), directory + "/" + name + "-z.png");
     ImageComparison images{name + "-yours.png", name + "-reference.png", name + "-z.png"};
     images.difference_label = Message{MessageId::report_z_scores};
+    if (test.failures > 0) attach_worst_region_trace(images, scene, request, render, reference_mean, test);
     add_image(images);
   }
   add_note({MessageId::path_note_picture, {{"scene", scene}, {"path", path}}});

@@ -2,6 +2,8 @@
 // stage server (stage_image_calls.cpp); support.h compares it with the reference.
 #pragma once
 
+#include "protocol.h"
+
 #include "raylab/image.h"
 #include "raylab/trace.h"
 
@@ -28,5 +30,10 @@ constexpr std::size_t kMostTracedSteps = 200, kMostTracedTextBytes = 300;
 PixelTrace trace_stage_image_pixel(const std::string& stage_id, int x, int y, bool chinese);
 // The command that prints the same trace on the student's machine.
 std::string stage_image_trace_command(const std::string& stage_id, int x, int y, bool chinese);
+
+// A trace's steps as a stage server sends them, and as the judge reads them back into `trace`
+// (at most kMostTracedSteps of them, each text cut at kMostTracedTextBytes).
+void write_trace_steps(protocol::Writer& out, const PixelTrace& trace);
+void read_trace_steps(protocol::Reader& in, PixelTrace& trace);
 
 }  // namespace raylab::grading

@@ -36,6 +36,31 @@ std::string stage_image_trace_command(const std::string& stage_id, int x, int y,
          " " + std::to_string(y) + " " + (stage ? std::string(stage->image_scene) : std::string("SCENE"));
 }
 
+void write_trace_steps(Writer& out, const PixelTrace& trace) {
+  out.put<std::uint32_t>(static_cast<std::uint32_t>(trace.steps.size()));
+  for (const TraceStep& step : trace.steps) {
+    for (const std::string* text : {&step.stage, &step.function, &step.call, &step.yours, &step.expected, &step.note})
+      out.put_string(*text);
+    out.put<std::uint8_t>(step.agrees);
+  }
+  out.put<int>(trace.untouched_spheres);
+  out.put<int>(trace.untouched_triangles);
+}
+
+void read_trace_steps(Reader& in, PixelTrace& trace) {
+  const auto count = in.get<std::uint32_t>();
+  const auto cut = [](const std::string& text) { return protocol::cut_text(text, kMostTracedTextBytes, " [...]"); };
+  for (std::uint32_t i = 0; i < count; ++i) {
+    std::string stage = in.get_string(), function = in.get_string(), call = in.get_string(), yours = in.get_string(),
+                expected = in.get_string(), note = in.get_string();
+    const bool agrees = in.get<std::uint8_t>() != 0;
+    if (trace.steps.size() < kMostTracedSteps)
+      trace.steps.emplace_back(cut(stage), cut(function), cut(call), cut(yours), cut(expected), cut(note), agrees);
+  }
+  trace.untouched_spheres = in.get<int>();
+  trace.untouched_triangles = in.get<int>();
+}
+
 #if RAYLAB_JUDGE
 Image render_stage_image(const std::string& stage_id) {
   Writer arguments;
@@ -63,17 +88,7 @@ PixelTrace trace_stage_image_pixel(const std::string& stage_id, int x, int y, bo
     PixelTrace trace;
     trace.x = x;
     trace.y = y;
-    const auto count = in.get<std::uint32_t>();
-    const auto cut = [](const std::string& text) { return protocol::cut_text(text, kMostTracedTextBytes, " [...]"); };
-    for (std::uint32_t i = 0; i < count; ++i) {
-      std::string stage = in.get_string(), function = in.get_string(), call = in.get_string(), yours = in.get_string(),
-                  expected = in.get_string(), note = in.get_string();
-      const bool agrees = in.get<std::uint8_t>() != 0;
-      if (trace.steps.size() < kMostTracedSteps)
-        trace.steps.emplace_back(cut(stage), cut(function), cut(call), cut(yours), cut(expected), cut(note), agrees);
-    }
-    trace.untouched_spheres = in.get<int>();
-    trace.untouched_triangles = in.get<int>();
+    read_trace_steps(in, trace);
     in.expect_end();
     return trace;
   }, {}, reply_limit(1u << 20));
@@ -152,15 +167,7 @@ void serve_trace_stage_image_pixel(Reader& in, Writer& out) {
   const std::string stage_id = in.get_string();
   const int x = in.get<int>(), y = in.get<int>();
   const bool chinese = in.get<std::uint8_t>() != 0;
-  const PixelTrace trace = trace_stage_image_pixel(stage_id, x, y, chinese);
-  out.put<std::uint32_t>(static_cast<std::uint32_t>(trace.steps.size()));
-  for (const TraceStep& step : trace.steps) {
-    for (const std::string* text : {&step.stage, &step.function, &step.call, &step.yours, &step.expected, &step.note})
-      out.put_string(*text);
-    out.put<std::uint8_t>(step.agrees);
-  }
-  out.put<int>(trace.untouched_spheres);
-  out.put<int>(trace.untouched_triangles);
+  write_trace_steps(out, trace_stage_image_pixel(stage_id, x, y, chinese));
 }
 
 const bool kTraceServed = serve(kTraceStageImagePixel, serve_trace_stage_image_pixel);

@@ -1,6 +1,6 @@
 #include "support.h"
 
-
+#include "09_path_calls.h"
 #include "grading.h"
 
 #include "raylab/error.h"
@@ -137,33 +137,45 @@ namespace {
 void add_worst_pixel_trace(ImageComparison& images, const std::string& stage_id, const ImageDifference& difference) {
   const int x = difference.max_x, y = difference.max_y;
   const bool chinese = language() == Language::Chinese;
+  PixelTrace trace;
   try {
-    images.worst_pixel = trace_stage_image_pixel(stage_id, x, y, chinese);
+    trace = trace_stage_image_pixel(stage_id, x, y, chinese);
   } catch (const std::exception&) {
     return;
   }
-  images.trace_command = stage_image_trace_command(stage_id, x, y, chinese);
-  const PixelTrace& trace = *images.worst_pixel;
+  attach_pixel_trace(images, std::move(trace), stage_image_trace_command(stage_id, x, y, chinese));
+}
+
+}  // namespace
+
+void attach_pixel_trace(ImageComparison& images, PixelTrace trace, const std::string& command) {
+  images.worst_pixel = std::move(trace);
+  images.trace_command = command;
+  const PixelTrace& traced = *images.worst_pixel;
+  const int x = traced.x, y = traced.y;
   std::vector<MessageArg> args{{"x", std::to_string(x)}, {"y", std::to_string(y)}, {"command", images.trace_command}};
-  const int first = trace.first_disagreement();
+  // A Monte Carlo picture's trace is one sample of the pixel (stage 09's path_trace_pixel).
+  const bool sampled = traced.settings.integrator != IntegratorKind::Whitted;
+  if (sampled) args.insert(args.end(), {{"sample", std::to_string(traced.settings.sample)},
+                                        {"samples", std::to_string(std::min(traced.settings.samples_per_pixel,
+                                                                            kMostTracedPathSamples))}});
+  const int first = traced.first_disagreement();
   if (first < 0) {
-    add_note({MessageId::note_trace_agrees, args});
+    add_note({sampled ? MessageId::note_path_trace_agrees : MessageId::note_trace_agrees, args});
     return;
   }
-  const TraceStep& step = trace.steps[static_cast<std::size_t>(first)];
+  const TraceStep& step = traced.steps[static_cast<std::size_t>(first)];
   args.insert(args.end(), {{"step", std::to_string(first + 1)}, {"yours", step.yours}, {"expected", step.expected}});
   if (step.function.empty()) {
     args.emplace_back("call", step.call);
-    add_note({MessageId::note_trace_disagrees_at_step, args});
+    add_note({sampled ? MessageId::note_path_trace_disagrees_at_step : MessageId::note_trace_disagrees_at_step, args});
     return;
   }
   const std::string file = step.file();
   args.emplace_back("function", step.function);
   args.emplace_back("file", file.empty() ? step.stage : file);
-  add_note({MessageId::note_trace_disagrees, args});
+  add_note({sampled ? MessageId::note_path_trace_disagrees : MessageId::note_trace_disagrees, args});
 }
-
-}  // namespace
 
 void expect_image_matches_reference(const std::string& stage_id, float channel_threshold, double max_fraction) {
   const std::string directory = output_directory();

@@ -98,4 +98,10 @@ std::string seed_shown(const nlohmann::json& case_file);
 // more than max_fraction of the pixels differ by more than channel_threshold.
 void expect_image_matches_reference(const std::string& stage_id, float channel_threshold, double max_fraction);
 
+struct ImageComparison;  // grading.h
+// A traced pixel of a failing picture (raylab/trace.h), shown under the picture in the report, and
+// a note naming its first disagreement (or saying it has none) with `command`, which prints the
+// same trace on the student's machine.
+void attach_pixel_trace(ImageComparison& images, PixelTrace trace, const std::string& command);
+
 }  // namespace raylab::grading

@@ -350,7 +350,7 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
         ->check(CLI::Range(1, kMaxSamplesPerPixel));
     trace_command->add_option(
         "--integrator", trace_options.integrator,
-        "As raylab render's (default: the scene's): direct and path trace the sample's whole path");
+        "As raylab render's (default: the scene's): direct, path and mis trace the sample's whole path");
     trace_command->add_option("--max-depth", trace_options.max_depth, "As raylab render's (default: the scene's)")
         ->check(CLI::Range(0, 64));
     trace_command->add_option("--roulette", trace_options.roulette, "As raylab render's (default 1: no roulette)");

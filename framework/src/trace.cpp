@@ -290,43 +290,49 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
   } catch (const NotImplemented&) {
     // A tree's stub: the renderer tests every primitive then, as the steps above do.
   }
-  if (settings.integrator == IntegratorKind::DirectLight || settings.integrator == IntegratorKind::Path)
+  if (settings.integrator != IntegratorKind::Whitted) {
     trace_monte_carlo(scene, ray, sampler, contract, trace);
+  } else {
+    try {
+      trace_whitted(scene, ray, contract, trace);
+    } catch (const NotImplemented&) {
+      // A stub of your geometry: marked at its first call along the camera ray above.
+    }
+  }
   return trace;
 }
 
 void print_trace(std::ostream& out, const std::string& scene_path, const PixelTrace& trace) {
   const TraceSettings& settings = trace.settings;
   const bool zh = settings.chinese;
-  const bool monte_carlo =
-      settings.integrator == IntegratorKind::DirectLight || settings.integrator == IntegratorKind::Path;
+  const bool monte_carlo = settings.integrator != IntegratorKind::Whitted;
   const std::string pixel = "(" + std::to_string(trace.x) + ", " + std::to_string(trace.y) + ")";
   const std::string sample = std::to_string(settings.sample), count_of_samples = std::to_string(settings.samples_per_pixel);
   if (zh)
     out << "raylab trace " << scene_path << "：像素 " << pixel << "，" << count_of_samples << " 个样本中的第 " << sample
         << " 个（种子 " << settings.seed << "），穿过像素中的 " << text(trace.position_in_pixel) << "，积分器 "
         << integrator_name(settings.integrator) << "\n"
-        << "沿这个样本的" << (monte_carlo ? "路径" : "相机光线")
+        << "沿这个样本的" << (monte_carlo ? "路径" : "光线（相机光线及其后的反射、折射和阴影光线）")
         << "列出你的阶段函数的每次调用，旁边是契约对同样的输入和同样的随机数给出的结果（本套件自己的精确版本）。\n"
         << "球和三角形的求交测试使用契约的相机光线。\n\n";
   else
     out << "raylab trace " << scene_path << ": pixel " << pixel << ", sample " << sample << " of " << count_of_samples
         << " (seed " << settings.seed << "), through " << text(trace.position_in_pixel)
         << " in the pixel, integrator " << integrator_name(settings.integrator) << "\n"
-        << "Each call of your stage functions along this sample's " << (monte_carlo ? "path" : "camera ray")
+        << (monte_carlo ? "Each call of your stage functions along this sample's path"
+                        : "Each call of your stage functions along this sample's rays (the camera ray, and the\n"
+                          "reflection, refraction and shadow rays after it)")
         << ", beside what the contract gives for the\n"
         << "same inputs and the same random numbers (the kit's own exact versions). The sphere and triangle tests use\n"
         << "the contract's camera ray.\n\n";
-  if (settings.integrator == IntegratorKind::PathMis)
-    out << (zh ? "（mis 积分器的路径还不能跟踪：只有它的相机光线。）\n\n"
-               : "(The mis integrator's path is not traced yet: only its camera ray.)\n\n");
   const int first = trace.first_disagreement();
   for (std::size_t i = 0; i < trace.steps.size(); ++i) {
     const TraceStep& step = trace.steps[i];
     out << "  " << i + 1 << ". " << (step.stage.empty() ? "" : (zh ? "阶段 " : "stage ") + step.stage + "  ")
-        << step.call << "\n"
-        << (zh ? "       你的      " : "       yours     ") << step.yours << "\n"
-        << (zh ? "       契约      " : "       contract  ") << step.expected << "\n";
+        << step.call << "\n";
+    if (!step.yours.empty() || !step.expected.empty())  // (a step that only says what is not traced has neither)
+      out << (zh ? "       你的      " : "       yours     ") << step.yours << "\n"
+          << (zh ? "       契约      " : "       contract  ") << step.expected << "\n";
     if (!step.note.empty()) out << (zh ? "       说明      " : "       note      ") << step.note << "\n";
     if (static_cast<int>(i) == first) {
       out << (zh ? "       ^ 第一个不一致之处" : "       ^ the first disagreement");
@@ -354,18 +360,17 @@ void print_trace(std::ostream& out, const std::string& scene_path, const PixelTr
   }
   out << "\n";
   if (zh)
-    out << (first < 0 ? std::string("沿这条") + (monte_carlo ? "路径" : "光线") + "的每个调用都与契约一致。\n"
+    out << (first < 0 ? std::string(monte_carlo ? "沿这条路径" : "沿这些光线") + "的每个调用都与契约一致。\n"
                       : "从第一个不一致之处开始看：它之后的步骤可能只是因为它才不同。\n");
   else
     out << (first < 0
-                ? std::string("Every call agrees with the contract along this ") + (monte_carlo ? "path" : "ray") + ".\n"
+                ? std::string("Every call agrees with the contract along ") + (monte_carlo ? "this path" : "these rays") + ".\n"
                 : "Start at the first disagreement: the steps after it may differ only because of it.\n");
 }
 
 void write_trace_json(std::ostream& out, const Camera& camera, const PixelTrace& trace) {
   const bool zh = trace.settings.chinese;
-  const bool monte_carlo =
-      trace.settings.integrator == IntegratorKind::DirectLight || trace.settings.integrator == IntegratorKind::Path;
+  const bool monte_carlo = trace.settings.integrator != IntegratorKind::Whitted;
   nlohmann::json steps = nlohmann::json::array();
   for (const TraceStep& step : trace.steps)
     steps.push_back({{"stage", step.stage},
@@ -391,8 +396,8 @@ void write_trace_json(std::ostream& out, const Camera& camera, const PixelTrace&
   const int first = trace.first_disagreement();
   std::string summary;
   if (first < 0) {
-    summary = zh ? std::string("沿这条") + (monte_carlo ? "路径" : "光线") + "的每个调用都与契约一致。"
-                 : std::string("Every call agrees with the contract along this ") + (monte_carlo ? "path" : "ray") + ".";
+    summary = zh ? std::string(monte_carlo ? "沿这条路径" : "沿这些光线") + "的每个调用都与契约一致。"
+                 : std::string("Every call agrees with the contract along ") + (monte_carlo ? "this path" : "these rays") + ".";
   } else {
     const TraceStep& step = trace.steps[static_cast<std::size_t>(first)];
     const std::string where = step.function.empty() ? step.call : step.function;

@@ -19,6 +19,7 @@
 #include "raylab/stages/07_sampling.h"
 #include "raylab/stages/08_direct_light.h"
 #include "raylab/stages/09_path.h"
+#include "raylab/stages/09b_mis.h"
 #include "raylab/trace_recorder.h"
 
 #include <algorithm>
@@ -162,6 +163,27 @@ glm::dvec3 contract_f(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3
   return glm::dvec3(bsdf_f(bsdf, normal, wo, wi));
 }
 
+// The contract's density of the BSDF strategy for a direction (what MIS weighs against): stage 07's
+// cos / pi on wo's side for a diffuse surface; the framework's (stage 10's) for a rough metal; 0
+// for mirrors and glass.
+double contract_bsdf_pdf(const Bsdf& bsdf, const glm::vec3& normal, const glm::vec3& wo, const glm::vec3& wi) {
+  if (bsdf.is_specular()) return 0.0;
+  const double cos_o = glm::dot(glm::dvec3(normal), glm::dvec3(wo)), cos_i = glm::dot(glm::dvec3(normal), glm::dvec3(wi));
+  if (!(cos_o * cos_i > 0.0)) return 0.0;
+  if (bsdf.kind == BsdfKind::Lambertian) return std::fabs(cos_i) / (glm::length(glm::dvec3(wi)) * kPiInDouble);
+  return bsdf_pdf(bsdf, normal, wo, wi);
+}
+
+// The weight of a sample of strategy f (density pdf_f) against strategy g, one sample each: the
+// power heuristic (exponent 2), or the balance heuristic (exponent 1, a mistake's rule); 1 for a
+// delta (an infinite pdf_f), 0 where f cannot make the sample.
+double mis_weight(double pdf_f, double pdf_g, int exponent = 2) {
+  if (std::isinf(pdf_f)) return 1.0;
+  if (!(pdf_f > 0.0)) return 0.0;
+  const double f = exponent == 2 ? pdf_f * pdf_f : pdf_f, g = exponent == 2 ? pdf_g * pdf_g : pdf_g;
+  return f / (f + g);
+}
+
 // A sampled light point's density per steradian as the contract gives it (stage 08's
 // area_pdf_to_solid_angle of uniform area sampling), and its inputs.
 struct LightDensity {
@@ -199,6 +221,11 @@ struct ContractDirect {
   std::string why, what;            // what: the light sample, in words
   std::string wrong_light;          // your code sampled another light than the one it chose
   std::optional<bool> your_blocked, contract_blocked;  // both set: the shadow ray, when your code traced one
+  // The light strategy's density of the sample's direction (per steradian, the choice included),
+  // and the direction: what MIS weighs the sample with (stage 09b). 0 with no sample.
+  double light_pdf = 0.0;
+  bool delta = false;  // a point light's sample: weight 1 under MIS
+  glm::vec3 direction{0.0f};
 };
 
 ContractDirect contract_direct(const Words& words, const RenderContext& contract, const SurfaceHit& hit,
@@ -235,6 +262,9 @@ ContractDirect contract_direct(const Words& words, const RenderContext& contract
   }
   const LightSample& sample = *found.sample->light_sample;
   const LightDensity density = contract_light_density(found.sample->light, sample);
+  direct.light_pdf = density.per_steradian * chosen_with;
+  direct.delta = found.sample->light.kind == LightKind::Point;
+  direct.direction = sample.direction;
   const glm::vec3& normal = hit.geometric_normal;
   const glm::dvec3 f = contract_f(bsdf, normal, wo, sample.direction);
   bool blocked = false;
@@ -351,6 +381,13 @@ struct PathRules {
   bool background = true;
   bool last_surface = true;            // the surface at depth == max_depth counts
   bool no_light_sample_is_zero = false;  // a diffuse surface whose light your code did not sample adds 0
+  // Stage 09b's rules (path_radiance_mis): the light sample of a diffuse surface and the emission
+  // found by the bounce from one both count, each weighted against the other strategy.
+  bool mis = false;
+  int mis_exponent = 2;              // 2: the power heuristic; 1: the balance heuristic
+  bool mis_weigh_light = true;       // false: the light sample keeps weight 1
+  bool mis_weigh_emission = true;    // false: the emission after a diffuse bounce counts fully
+  bool mis_last_vertex_one = true;   // false: the light sample at depth == max_depth is weighted too
   // Correct variants: Russian roulette with a probability of your own instead of
   // context.continue_probability's (the same mean): a fixed one, or the throughput's largest
   // channel (before or after the bounce's weight, from depth `own_from_depth` on, at least
@@ -371,6 +408,12 @@ struct SurfaceTerms {
   glm::dvec3 albedo{0.0}, f{0.0};
   double cosine = 0.0, pdf = 0.0;
   bool diffuse_bounce = false, specular_bounce = false;
+  // For MIS: the densities of the light sample's direction (the light strategy's, the choice
+  // included, and the BSDF's; a point light's is a delta), and, for the emission found here after
+  // a diffuse bounce, that bounce's density and the light strategy's of the same direction.
+  double light_pdf = 0.0, light_bsdf_pdf = 0.0;
+  bool light_delta = false;
+  double emission_bsdf_pdf = 0.0, emission_light_pdf = 0.0;
 };
 
 std::optional<glm::dvec3> path_value(const std::vector<SurfaceTerms>& surfaces, const RenderContext& context,
@@ -389,11 +432,18 @@ std::optional<glm::dvec3> path_value(const std::vector<SurfaceTerms>& surfaces, 
     if (!rules.last_surface && static_cast<int>(depth) >= context.max_depth) return radiance;
     const bool counts = depth == 0        ? rules.camera_emission
                         : after_specular ? rules.emission_after_specular
-                                         : rules.emission_after_diffuse;
-    if (counts) radiance += throughput * surface.emission;
+                                         : rules.emission_after_diffuse || rules.mis;
+    const bool weigh_emission = rules.mis && rules.mis_weigh_emission && depth > 0 && !after_specular;
+    if (counts)
+      radiance += throughput * surface.emission *
+                  (weigh_emission ? mis_weight(surface.emission_bsdf_pdf, surface.emission_light_pdf, rules.mis_exponent)
+                                  : 1.0);
     if (!surface.specular) {
+      const bool weigh_light = rules.mis && rules.mis_weigh_light && !surface.light_delta &&
+                               (static_cast<int>(depth) < context.max_depth || !rules.mis_last_vertex_one);
       if (surface.direct)
-        radiance += throughput * *surface.direct;
+        radiance += throughput * *surface.direct *
+                    (weigh_light ? mis_weight(surface.light_pdf, surface.light_bsdf_pdf, rules.mis_exponent) : 1.0);
       else if (!rules.no_light_sample_is_zero)
         return std::nullopt;
     }
@@ -414,8 +464,10 @@ struct PathMistake {
   const char* english;
   const char* chinese;
   std::function<void(PathRules&)> make;
+  enum class Of { Both, Path, Mis } of = Of::Both;  // the path tracers whose mistake it can be
 };
 const std::vector<PathMistake>& path_mistakes() {
+  using Of = PathMistake::Of;
   static const std::vector<PathMistake> mistakes = {
       {"Russian roulette not divided by p (a path that goes on must be divided "
        "by p)",
@@ -427,7 +479,7 @@ const std::vector<PathMistake>& path_mistakes() {
       {"emission counted after a diffuse bounce too (estimate_direct_light "
        "counted it already)",
        "漫反射弹射之后也计算了自发光（estimate_direct_light 已经计算过它）",
-       [](PathRules& r) { r.emission_after_diffuse = true; }},
+       [](PathRules& r) { r.emission_after_diffuse = true; }, Of::Path},
       {"no emission counted after a mirror or glass bounce", "镜面或玻璃弹射之后没有计算自发光",
        [](PathRules& r) { r.emission_after_specular = false; }},
       {"the emission of a light the camera sees left out", "漏掉了相机直接看到的光源的自发光",
@@ -436,6 +488,19 @@ const std::vector<PathMistake>& path_mistakes() {
        [](PathRules& r) { r.background = false; }},
       {"the surface at depth == max_depth left out", "漏掉了 depth == max_depth 处的表面",
        [](PathRules& r) { r.last_surface = false; }},
+      {"no MIS weights at all (stage 09's rules: the light sample keeps weight 1, the emission a diffuse bounce "
+       "finds is not counted)",
+       "完全没有 MIS 权重（阶段 09 的规则：光源样本的权重保持为 1，漫反射弹射找到的自发光不计入）",
+       [](PathRules& r) { r.mis = false; }, Of::Mis},
+      {"the light sample not weighted (it keeps weight 1)", "光源样本没有加权（权重保持为 1）",
+       [](PathRules& r) { r.mis_weigh_light = false; }, Of::Mis},
+      {"the emission a diffuse bounce finds counted in full, without its weight",
+       "漫反射弹射找到的自发光被完整计入，没有乘它的权重", [](PathRules& r) { r.mis_weigh_emission = false; }, Of::Mis},
+      {"the balance heuristic pdf_f / (pdf_f + pdf_g), not the power heuristic",
+       "用了平衡启发式 pdf_f / (pdf_f + pdf_g)，而不是幂启发式", [](PathRules& r) { r.mis_exponent = 1; }, Of::Mis},
+      {"the light sample at the last vertex (depth == max_depth) weighted, though no BSDF sample follows it",
+       "最后一个顶点（depth == max_depth）的光源样本也加了权重，但它之后没有 BSDF 样本",
+       [](PathRules& r) { r.mis_last_vertex_one = false; }, Of::Mis},
   };
   return mistakes;
 }
@@ -443,7 +508,7 @@ const std::vector<PathMistake>& path_mistakes() {
 // Your value as a correct path's with a Russian roulette probability of its own (PathRules), in
 // words, or "".
 std::string fitted_own_roulette(const Words& words, const std::vector<SurfaceTerms>& surfaces,
-                                const RenderContext& context, const glm::vec3& yours) {
+                                const RenderContext& context, const PathRules& base, const glm::vec3& yours) {
   const auto fits = [&](const PathRules& rules) {
     const std::optional<glm::dvec3> value = path_value(surfaces, context, rules);
     return value && near(glm::dvec3(yours), *value, kValueTolerance);
@@ -451,7 +516,7 @@ std::string fitted_own_roulette(const Words& words, const std::vector<SurfaceTer
   for (const OwnRoulette own : {OwnRoulette::ByThroughputBefore, OwnRoulette::ByThroughputAfter})
     for (const int from_depth : {0, 1, 2})
       for (const double floor : {0.0, 0.05}) {
-        PathRules rules;
+        PathRules rules = base;
         rules.own = own;
         rules.own_from_depth = from_depth;
         rules.own_floor = floor;
@@ -467,7 +532,7 @@ std::string fitted_own_roulette(const Words& words, const std::vector<SurfaceTer
   // A fixed probability of the common ones (GAMES101 assignment 7 uses 0.8). Not any number: with
   // one bounce, some fixed probability gives every value that a wrong factor on the bounce gives.
   for (const float p : {0.5f, 0.6f, 0.7f, 0.75f, 0.8f, 0.85f, 0.9f, 0.95f, 0.99f}) {
-    PathRules rules;
+    PathRules rules = base;
     rules.own = OwnRoulette::Fixed;
     rules.own_fixed_p = p;
     if (fits(rules))
@@ -482,14 +547,18 @@ std::string fitted_own_roulette(const Words& words, const std::vector<SurfaceTer
 
 // The mistakes (one, or two together) whose rules give `yours` where the contract's do not.
 std::string fitted_mistakes(const Words& words, const std::vector<SurfaceTerms>& surfaces,
-                            const RenderContext& context, const glm::vec3& yours, const glm::dvec3& contract) {
-  const auto& mistakes = path_mistakes();
+                            const RenderContext& context, const PathRules& base, const glm::vec3& yours,
+                            const glm::dvec3& contract) {
+  std::vector<PathMistake> mistakes;
+  for (const PathMistake& mistake : path_mistakes())
+    if (mistake.of == PathMistake::Of::Both || (mistake.of == PathMistake::Of::Mis) == base.mis)
+      mistakes.push_back(mistake);
   const auto fits = [&](const PathRules& rules) {
     const std::optional<glm::dvec3> value = path_value(surfaces, context, rules);
     return value && !near(*value, contract, kValueTolerance) && near(glm::dvec3(yours), *value, kValueTolerance);
   };
   for (const PathMistake& mistake : mistakes) {
-    PathRules rules;
+    PathRules rules = base;
     mistake.make(rules);
     if (fits(rules))
       return words("your value is the contract's with ", "你的值正是契约的规则犯了这个错误时给出的值：") +
@@ -497,7 +566,7 @@ std::string fitted_mistakes(const Words& words, const std::vector<SurfaceTerms>&
   }
   for (std::size_t a = 0; a < mistakes.size(); ++a)
     for (std::size_t b = a + 1; b < mistakes.size(); ++b) {
-      PathRules rules;
+      PathRules rules = base;
       mistakes[a].make(rules);
       mistakes[b].make(rules);
       if (fits(rules))
@@ -515,7 +584,11 @@ std::string fitted_mistakes(const Words& words, const std::vector<SurfaceTerms>&
 void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampler, const TracingFunctions& contract,
                        PixelTrace& trace) {
   const TraceSettings& settings = trace.settings;
-  const bool path_tracer = settings.integrator == IntegratorKind::Path;
+  // The path tracers: stage 09's path_radiance, or stage 09b's path_radiance_mis, whose rules add
+  // MIS weights to the same path.
+  const bool mis = settings.integrator == IntegratorKind::PathMis;
+  const bool path_tracer = settings.integrator == IntegratorKind::Path || mis;
+  const std::string path_stage = mis ? "09b_mis" : "09_path", path_function = mis ? "path_radiance_mis" : "path_radiance";
   // The steps' words in the trace's language.
   const Words words{settings.chinese};
   // Yours: the geometry your stages 02-05 trace (as raylab render's); the contract's: every
@@ -534,7 +607,9 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
     RecordingCalls recording(recorder);
     ShadingStats stats;
     radiance = outcome_of(words, [&] {
-      return path_tracer ? path_radiance(yours, camera_ray, sampler) : direct_light_li(yours, camera_ray, sampler, stats);
+      return mis           ? path_radiance_mis(yours, camera_ray, sampler)
+             : path_tracer ? path_radiance(yours, camera_ray, sampler)
+                           : direct_light_li(yours, camera_ray, sampler, stats);
     });
   }
   const std::vector<RecordedCall>& calls = recorder.calls;
@@ -562,6 +637,20 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
       }
     }
   }
+
+  // Stage 09b: your power_heuristic on the contract's two densities of a direction, beside the
+  // contract's weight.
+  const auto weight_step = [&](const std::string& at, const std::string& what, double pdf_f, double pdf_g) {
+    const float f = static_cast<float>(pdf_f), g = static_cast<float>(pdf_g);
+    const Outcome<float> got = outcome_of(words, [&] { return power_heuristic(1, f, 1, g); });
+    const double expected = mis_weight(f, g);
+    TraceStep step{"09b_mis", "power_heuristic",
+                   at + words(": ", "：") + what + words(", ", "，") + "power_heuristic(1, " + text(f) + ", 1, " + text(g) + ")",
+                   got.value ? text(*got.value) : got.failure,
+                   text(expected) + "  (pdf_f^2 / (pdf_f^2 + pdf_g^2))"};
+    step.agrees = got.value && near(double(*got.value), expected);
+    steps.push_back(marked_at_stub(words, step, got));
+  };
 
   std::vector<SurfaceTerms> surfaces;
   glm::dvec3 throughput(1.0);        // the contract's, for the roulette's p
@@ -600,6 +689,17 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
     surface.hit = true;
     surface.emission = glm::dvec3(emitted_radiance(material, hit, vertex.ray.direction));
     surface.specular = bsdf.is_specular();
+    // MIS: the emission a diffuse bounce found, weighted against the light strategy's density of
+    // the same direction from the surface before.
+    if (mis && depth > 0 && !surfaces.back().specular_bounce && surfaces.back().pdf > 0.0) {
+      surface.emission_bsdf_pdf = surfaces.back().pdf;
+      surface.emission_light_pdf =
+          contracts.lights.pdf_li(path[depth - 1].hit->point, glm::normalize(vertex.ray.direction));
+      if (surface.emission != glm::dvec3(0.0))
+        weight_step(at, words("the weight of the emission your bounce found (BSDF strategy against the light's)",
+                              "你的弹射找到的自发光的权重（BSDF 策略对光源策略）"),
+                    surface.emission_bsdf_pdf, surface.emission_light_pdf);
+    }
 
     if (bsdf.kind == BsdfKind::Lambertian) {
       const Outcome<glm::vec3> f = outcome_of(words, [&] { return lambertian_f(bsdf.albedo); });
@@ -688,9 +788,17 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
       const LightCalls path_calls = light_calls(calls, vertex.first, vertex.end);
       const ContractDirect path_direct = contract_direct(words, contracts, hit, bsdf, wo, path_calls);
       surface.direct = path_direct.value;
+      surface.light_pdf = path_direct.light_pdf;
+      surface.light_delta = path_direct.delta;
+      surface.light_bsdf_pdf = contract_bsdf_pdf(bsdf, hit.geometric_normal, wo, path_direct.direction);
+      if (mis && !path_direct.delta && path_direct.light_pdf > 0.0 && d < settings.max_depth &&
+          path_direct.value && *path_direct.value != glm::dvec3(0.0))
+        weight_step(at, words("the weight of your path's light sample (light strategy against the BSDF's)",
+                              "你的路径的光源样本的权重（光源策略对 BSDF 策略）"),
+                    surface.light_pdf, surface.light_bsdf_pdf);
       if (auto shadow = shadow_ray_step(words, at + words(" (your path's own light sample)", "（你的路径自己的光源样本）"),
-                                        path_calls, path_direct, hit, path_tracer ? "09_path" : "08_direct_light",
-                                        path_tracer ? "path_radiance" : "estimate_direct_light"))
+                                        path_calls, path_direct, hit, path_tracer ? path_stage : "08_direct_light",
+                                        path_tracer ? path_function : "estimate_direct_light"))
         steps.push_back(*shadow);
       if (!path_calls.sample && !contracts.lights.empty())
         unsampled_light.push_back(d);
@@ -728,7 +836,7 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
         wrong_arguments = words("another BSDF than bsdf_of(material, diffuse_color_at(material, hit))",
                                 "另一个 BSDF，而不是 bsdf_of(material, diffuse_color_at(material, hit))");
       if (!wrong_arguments.empty()) {
-        steps.push_back(TraceStep{"09_path", "path_radiance", call, words("called with ", "调用时用了") + wrong_arguments,
+        steps.push_back(TraceStep{path_stage, path_function, call, words("called with ", "调用时用了") + wrong_arguments,
                                   words("this surface's BSDF, normal and wo", "这个表面的 BSDF、法线和 wo"), "", false});
         not_followed = words("your bounce at " + at + " was sampled with other arguments", "你在" + at + " 的弹射是用别的参数采样的");
       } else if (!bounce.bsdf_sample) {
@@ -800,9 +908,9 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
   // The sample's value: path_radiance's against the contract's rules on the same surfaces, light
   // samples and bounces; or, for the direct-light integrator (the framework's, around your
   // estimate_direct_light), the light of this very sample's light sample.
-  TraceStep step{path_tracer ? "09_path" : "08_direct_light", path_tracer ? "path_radiance" : "estimate_direct_light",
+  TraceStep step{path_tracer ? path_stage : "08_direct_light", path_tracer ? path_function : "estimate_direct_light",
                  path_tracer
-                     ? "path_radiance(context, camera_ray, sampler)" + words(": this sample's value", "：这个样本的值")
+                     ? path_function + "(context, camera_ray, sampler)" + words(": this sample's value", "：这个样本的值")
                      : words("this sample's value: the framework's direct_light_li with your estimate_direct_light",
                              "这个样本的值：框架的 direct_light_li（调用你的 estimate_direct_light）"),
                  radiance.value ? text(*radiance.value) : radiance.failure, ""};
@@ -814,8 +922,10 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
   }
   const glm::dvec3 value(*radiance.value);
   const int last_depth = static_cast<int>(path.size()) - 1;
+  PathRules rules;  // the contract's
+  rules.mis = mis;
   const std::optional<glm::dvec3> expected =
-      not_followed.empty() ? path_value(surfaces, contracts, PathRules{}) : std::nullopt;
+      not_followed.empty() ? path_value(surfaces, contracts, rules) : std::nullopt;
   const std::string not_checked = words("not checked: ", "没有检查：");
   if (!not_followed.empty()) {
     step.expected = not_checked + not_followed;  // (other arguments are marked at the bounce)
@@ -866,8 +976,8 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
     if (!step.agrees && path_tracer) {
       // A mistake that gives your value comes first; a roulette of your own that gives it too is
       // named beside it (one sample cannot tell them apart), and alone it is no disagreement.
-      const std::string mistake = fitted_mistakes(words, surfaces, contracts, *radiance.value, *expected);
-      const std::string own_roulette = fitted_own_roulette(words, surfaces, contracts, *radiance.value);
+      const std::string mistake = fitted_mistakes(words, surfaces, contracts, rules, *radiance.value, *expected);
+      const std::string own_roulette = fitted_own_roulette(words, surfaces, contracts, rules, *radiance.value);
       if (!mistake.empty()) {
         step.note = mistake;
         if (!own_roulette.empty()) step.note += words(" (or else ", "（也可能是：") + own_roulette + words(")", "）");

@@ -10,15 +10,19 @@
 //     trees' nodes from the root down to the leaf that holds the contract's closest hit: your box
 //     test on each of their boxes (the ray enters each, as each holds that primitive), and whether
 //     your traversal tested that primitive, with the count of primitive tests it made;
-//   - with --integrator direct or path (trace_monte_carlo.cpp): the path your code took, surface
+//   - with --integrator direct, path or mis (trace_monte_carlo.cpp): the path your code took, surface
 //     by surface: the closest hit of each bounce ray, at each diffuse surface lambertian_f, the
 //     light's point density (stage 07) and area_pdf_to_solid_angle, estimate_direct_light called
 //     once more on its own (stage 08), the shadow rays, each bounce's direction, density (stage
 //     07) and Russian roulette, and the sample's value (path_radiance, stage 09; or, with
-//     direct, the framework's around your estimate_direct_light) against the value the
-//     contract's rules give for the same surfaces, light samples and bounces.
-//   Not traced: the nodes a traversal visits off that path, Whitted's bounces, and the mis
-// integrator's vertices (stage 09b).
+//     direct, the framework's around your estimate_direct_light; with mis, path_radiance_mis,
+//     stage 09b, and your power_heuristic on the two densities of each weighted light sample and
+//     emission) against the value the contract's rules give for the same surfaces, light samples
+//     and bounces.
+//   - with --integrator whitted (trace_whitted.cpp): the reflection, refraction and shadow rays
+//     Whitted shading traces after the camera ray, your geometry's answer along each beside the
+//     contract's, and where they differ, the sphere and triangle tests along that ray that differ;
+//   Not traced: the nodes a traversal visits off the path to the camera ray's hit.
 #pragma once
 
 #include "raylab/geometry.h"
@@ -100,6 +104,12 @@ struct PixelTrace {
 // pixel outside the image or a sample outside [0, samples_per_pixel).
 PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& settings,
                        const TracingFunctions& contract);
+
+// Whitted's rays after the camera ray (trace_whitted.cpp): from the surface your geometry hits
+// along `camera_ray`, the reflection, refraction and shadow rays the framework's Whitted shading
+// traces, each answered by your geometry beside the contract's exact tests, appended to `trace`
+// (at most the first 24).
+void trace_whitted(const Scene& scene, const Ray& camera_ray, const TracingFunctions& contract, PixelTrace& trace);
 
 // The Monte Carlo part (trace_monte_carlo.cpp): the steps of the sample's path, from the
 // `sampler` positioned after the camera ray's numbers, appended to `trace`.

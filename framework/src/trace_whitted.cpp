@@ -1,0 +1,208 @@
+// raylab trace, Whitted's rays after the camera ray (raylab/trace.h): the reflection and
+// refraction rays the framework's Whitted shading (whitted.cpp) spawns at each surface your
+// geometry hit, and its shadow rays towards the point lights, each answered by your geometry
+// (stages 02-05) beside the contract's exact tests. The directions and the shading are the
+// framework's; what can differ is what your stages find along them. Where an answer differs, the
+// sphere and triangle tests along that ray that differ are listed before it, so that the first
+// disagreement names the function.
+#include "raylab/trace.h"
+
+#include "trace_text.h"
+
+#include "raylab/shading.h"
+#include "raylab/stages/02_sphere.h"
+#include "raylab/stages/03_triangle.h"
+
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+using namespace trace_text;
+
+namespace {
+
+// At most this many rays after the camera ray are traced (a glass sphere doubles them at each
+// bounce): the first ones, in the order the renderer traces them.
+constexpr int kMostWhittedRays = 24;
+
+struct WhittedTracer {
+  const Scene& scene;
+  const TraceSettings& settings;
+  const TracingFunctions& contract;
+  const SceneGeometry& your_geometry;
+  const SceneGeometry& contract_geometry;
+  PixelTrace& trace;
+  Words words{settings.chinese};
+  int rays = 0, surfaces = 0;
+  bool cut = false;
+
+  std::string hit_text(const std::optional<SurfaceHit>& hit) const {
+    if (!hit) return words("nothing: the background", "什么也没有击中：背景");
+    const Material& material = scene.materials[hit->material];
+    return words("hit at t = ", "在 t = ") + text(hit->t_hit) + words(", point ", " 处击中，交点 ") + text(hit->point) +
+           words(", ", "，") +
+           (material.name.empty() ? words("material ", "材质 ") + std::to_string(hit->material)
+                                  : words("material '", "材质 '") + material.name + "'");
+  }
+
+  // The sphere and triangle tests along `ray` whose answers differ from the contract's (a stub
+  // once), as steps of stages 02 and 03.
+  void differing_primitive_tests(const Ray& ray, const std::string& at) {
+    const auto sphere_test = settings.yours.sphere ? settings.yours.sphere : intersect_ray_sphere;
+    const auto triangle_test = settings.yours.triangle ? settings.yours.triangle : intersect_ray_triangle;
+    const auto t_text = [&](const std::optional<float>& t) {
+      return t ? words("hit at t = ", "在 t = ") + text(*t) + words("", " 处击中") : words("no hit", "没有击中");
+    };
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+      const Sphere& sphere = scene.spheres[i];
+      bool stub = false;
+      const std::optional<std::optional<float>> got = yours([&] { return sphere_test(ray, sphere.center, sphere.radius); }, stub);
+      const std::optional<float> expected = contract.sphere(ray, sphere.center, sphere.radius);
+      if (!stub && near(*got, expected)) continue;
+      trace.steps.emplace_back("02_sphere", "intersect_ray_sphere",
+                               at + words(": ", "：") + "intersect_ray_sphere(ray, " + words("center ", "球心 ") +
+                                   text(sphere.center) + ", " + words("radius ", "半径 ") + text(sphere.radius) +
+                                   ")   [" + words("sphere ", "球 ") + std::to_string(i) + "]",
+                               stub ? words("not written yet", "尚未编写") : t_text(*got), t_text(expected), "", false);
+      if (stub) break;
+    }
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+      const TriangleMesh& mesh = scene.meshes[m];
+      for (std::size_t k = 0; k < mesh.triangle_count(); ++k) {
+        const glm::vec3& p0 = mesh.positions[mesh.indices[3 * k]];
+        const glm::vec3& p1 = mesh.positions[mesh.indices[3 * k + 1]];
+        const glm::vec3& p2 = mesh.positions[mesh.indices[3 * k + 2]];
+        bool stub = false;
+        const std::optional<std::optional<TriangleHit>> got = yours([&] { return triangle_test(ray, p0, p1, p2); }, stub);
+        const std::optional<TriangleHit> expected = contract.triangle(ray, p0, p1, p2);
+        if (!stub && near(*got, expected)) continue;
+        const auto triangle_text = [&](const std::optional<TriangleHit>& hit) {
+          return hit ? t_text(hit->t_hit) : words("no hit", "没有击中");
+        };
+        const std::string name = mesh.name.empty() ? std::to_string(m) : "\"" + mesh.name + "\"";
+        trace.steps.emplace_back("03_triangle", "intersect_ray_triangle",
+                                 at + words(": ", "：") + "intersect_ray_triangle(ray, " + text(p0) + ", " + text(p1) +
+                                     ", " + text(p2) + ")   [" +
+                                     words("triangle " + std::to_string(k) + " of mesh " + name,
+                                           "网格 " + name + " 的三角形 " + std::to_string(k)) +
+                                     "]",
+                                 stub ? words("not written yet", "尚未编写") : triangle_text(*got),
+                                 triangle_text(expected), "", false);
+        if (stub) return;
+      }
+    }
+  }
+
+  // One bounce ray: its closest hit by your geometry and by the contract's; then, along your hit,
+  // the surface it reaches.
+  void bounce(const Ray& ray, int depth, const std::string& kind_text) {
+    if (rays >= kMostWhittedRays) {
+      cut = true;
+      return;
+    }
+    ++rays;
+    const std::optional<SurfaceHit> hit = your_geometry.intersect(ray);
+    const std::optional<SurfaceHit> expected = contract_geometry.intersect(ray);
+    const bool agrees = hit.has_value() == expected.has_value() &&
+                        (!expected || (near(hit->t_hit, expected->t_hit) && hit->material == expected->material));
+    const std::string at = kind_text + " (" + ray_text(words, ray) + ")";
+    if (!agrees) differing_primitive_tests(ray, kind_text);
+    // The surface your hit reaches is numbered as the steps after it name it.
+    const int reached = surfaces;
+    const std::string surface_text = hit ? words(" (surface ", "（表面 ") + std::to_string(reached) + words(")", "）") : "";
+    TraceStep step{"", "", at + words(": the closest hit", "：最近交点"), hit_text(hit) + surface_text,
+                   hit_text(expected)};
+    step.agrees = agrees;
+    if (!agrees)
+      step.note = words("your geometry (stages 02-05: spheres, triangles, boxes, trees) finds another hit along this "
+                        "ray than the contract's exact tests",
+                        "你的几何（阶段 02-05：球、三角形、包围盒、树）沿这条光线找到的交点与契约的精确测试不同");
+    trace.steps.push_back(step);
+    trace.segments.push_back({ray.origin, ray.origin + ray.direction * (hit ? hit->t_hit : miss_length(scene)),
+                              TraceSegment::Kind::Bounce});
+    if (hit) surface(ray, *hit, depth);
+  }
+
+  // What the framework's Whitted shading traces at a surface your geometry hit `depth` bounces
+  // from the camera (whitted.cpp, without its skips: every ray that may matter).
+  void surface(const Ray& ray, const SurfaceHit& hit, int depth) {
+    const std::string at = words("surface ", "表面 ") + std::to_string(surfaces++);  // (surface 0: the camera ray's)
+    const Material& material = scene.materials[hit.material];
+    const glm::vec3 direction = glm::normalize(ray.direction);
+    const glm::vec3& normal = hit.geometric_normal;
+    const bool may_bounce = depth < settings.max_depth;
+    switch (material.kind) {
+      case MaterialKind::ReflectiveRefractive: {
+        if (!may_bounce) return;
+        const float reflectance = fresnel_reflectance(direction, normal, material.index_of_refraction);
+        bounce(spawn_ray(hit, glm::normalize(reflect(direction, normal))), depth + 1,
+               at + words(": the reflection ray", "：反射光线"));
+        if (reflectance < 1.0f)
+          bounce(spawn_ray(hit, glm::normalize(refract(direction, normal, material.index_of_refraction))), depth + 1,
+                 at + words(": the refraction ray", "：折射光线"));
+        return;
+      }
+      case MaterialKind::Reflective:
+      case MaterialKind::Mirror:
+      case MaterialKind::Microfacet:
+        if (may_bounce)
+          bounce(spawn_ray(hit, reflect(direction, normal)), depth + 1, at + words(": the reflection ray", "：反射光线"));
+        return;
+      case MaterialKind::DiffuseGlossy:
+      case MaterialKind::Diffuse:
+      default:
+        break;
+    }
+    const glm::vec3 facing_normal = glm::dot(direction, normal) < 0.0f ? normal : -normal;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+      const PointLight& light = scene.lights[i];
+      const glm::vec3 light_direction = glm::normalize(light.position - hit.point);
+      if (!(glm::dot(light_direction, facing_normal) > 0.0f)) continue;  // no shadow ray needed
+      if (rays >= kMostWhittedRays) {
+        cut = true;
+        return;
+      }
+      ++rays;
+      Ray shadow;
+      shadow.origin = offset_ray_origin(hit, light_direction);
+      shadow.direction = light.position - shadow.origin;
+      shadow.t_max = 1.0f - 1e-4f;
+      const bool blocked = your_geometry.occluded(shadow), expected = contract_geometry.occluded(shadow);
+      const std::string kind_text = at + words(": the shadow ray towards light ", "：射向光源 ") + std::to_string(i) +
+                                    words("", " 的阴影光线");
+      if (blocked != expected) differing_primitive_tests(shadow, kind_text);
+      const auto answer = [&](bool b) { return b ? words("blocked", "被遮挡") : words("clear", "没有被遮挡"); };
+      TraceStep step{"", "", kind_text + " (" + ray_text(words, shadow) + ", t_max " + text(shadow.t_max) + ")",
+                     answer(blocked), answer(expected)};
+      step.agrees = blocked == expected;
+      if (!step.agrees)
+        step.note = words("your geometry (stages 02-05) answers this shadow ray otherwise than the contract's exact tests",
+                          "你的几何（阶段 02-05）对这条阴影光线的回答与契约的精确测试不同");
+      trace.steps.push_back(step);
+      trace.segments.push_back({shadow.origin, light.position, TraceSegment::Kind::Shadow});
+    }
+  }
+};
+
+}  // namespace
+
+void trace_whitted(const Scene& scene, const Ray& camera_ray, const TracingFunctions& contract, PixelTrace& trace) {
+  const TraceSettings& settings = trace.settings;
+  const SceneGeometry your_geometry(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, settings.yours);
+  const SceneGeometry contract_geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, contract);
+  // From the surface your geometry found along the camera ray: the renderer shades that one.
+  const std::optional<SurfaceHit> hit = your_geometry.intersect(camera_ray);
+  if (!hit) return;
+  WhittedTracer tracer{scene, settings, contract, your_geometry, contract_geometry, trace};
+  tracer.surface(camera_ray, *hit, 0);
+  if (tracer.cut)
+    trace.steps.emplace_back("", "",
+                             tracer.words("(the rays after these are not traced: at most " +
+                                              std::to_string(kMostWhittedRays) + " after the camera ray)",
+                                          "（之后的光线没有跟踪：相机光线之后最多跟踪 " +
+                                              std::to_string(kMostWhittedRays) + " 条）"),
+                             "", "", "", true);
+}
+
+}  // namespace raylab
