@@ -53,8 +53,8 @@ TEST(Trace, TheReferenceAgreesAlongEveryPath) {
 }
 
 // Through the trees (the bunny's, the Cornell box's over its objects): on every pixel that hits,
-// the nodes from the root down to the leaf of the closest hit, each box entered, the primitive
-// tested; and the camera ray drawn to the hit.
+// the nodes from the root down to the leaf of the closest hit, each box entered, the leaves opened
+// all entered before the hit, the primitive tested; and the camera ray drawn to the hit.
 TEST(Trace, TheReferenceAgreesThroughTheTrees) {
   const TracingFunctions contract = testkit::exact_tracing();
   for (const char* name : {"bunny", "cornell"}) {
@@ -68,16 +68,22 @@ TEST(Trace, TheReferenceAgreesThroughTheTrees) {
         EXPECT_EQ(trace.first_disagreement(), -1) << name << " (" << x << ", " << y << ")";
         ASSERT_GE(trace.segments.size(), 1u);
         EXPECT_EQ(trace.segments[0].kind, TraceSegment::Kind::Camera);
-        int boxes = 0, tested = 0;
+        int boxes = 0, tested = 0, leaves = 0;
         for (const TraceStep& step : trace.steps) {
           boxes += step.function == "intersect_ray_box";
-          if (step.function == "intersect_bvh") {
+          if (step.function != "intersect_bvh") continue;
+          if (step.call.find("the leaves your intersect_bvh opened") == 0) {
+            ++leaves;
+            EXPECT_EQ(step.yours.find(" 0 the ray misses, 0 entered beyond"), step.yours.find(';') + 1) << step.yours;
+          } else {
             ++tested;
             EXPECT_EQ(step.yours.rfind("tested ", 0), 0u) << step.yours;
           }
         }
-        // A hit on a primitive under a tree: its path (at least the root), then the traversal's step.
+        // A hit on a primitive under a tree: its path (at least the root), then the traversal's
+        // leaves and whether it tested the primitive.
         EXPECT_EQ(tested, boxes > 0 ? 1 : 0) << name << " (" << x << ", " << y << ")";
+        EXPECT_EQ(leaves, tested) << name << " (" << x << ", " << y << ")";
         box_steps += boxes;
         hits += tested;
       }

@@ -7,7 +7,10 @@
 #include "raylab/stages/05_bvh.h"
 #include "raylab/stages/05c_wide_bvh.h"
 
+#include <cmath>
 #include <limits>
+#include <unordered_set>
+#include <vector>
 
 namespace raylab {
 
@@ -41,7 +44,9 @@ std::optional<float> SceneGeometry::test_triangle_watched(void* context, const R
   Query& query = *static_cast<Query*>(context);
   ++query.watch->tests;
   if (query.mesh_first_triangle + triangle == query.watch->triangle) query.watch->tested = true;
-  return test_triangle(context, ray, triangle);
+  const std::optional<float> t = test_triangle(context, ray, triangle);
+  query.watch->add(false, query.mesh_first_triangle + triangle, ray.t_max, t);
+  return t;
 }
 
 std::optional<float> SceneGeometry::test_object(void* context, const Ray& ray, std::uint32_t object) {
@@ -122,6 +127,7 @@ std::optional<float> SceneGeometry::intersect_object(std::uint32_t object, const
     const Sphere& sphere = spheres_[object];
     const std::optional<float> t = intersect_sphere_(ray, sphere.center, sphere.radius);
     if (t && *t < query.record->t_hit) query.record->set_sphere(object, *t);
+    if (query.watch) query.watch->add(true, object, ray.t_max, t);
     return t;
   }
   return intersect_mesh(meshes_[object - spheres_.size()], ray, query);
@@ -207,6 +213,57 @@ SceneGeometry::TreeWalk SceneGeometry::walk_to(const Ray& ray, std::optional<std
   walk.t_hit = intersect_objects(ray, query);
   walk.tested = watch.tested;
   walk.primitive_tests = watch.tests;
+
+  // The leaves the traversals opened (a leaf whose primitive was tested), in the order of their
+  // first test, each with the closest hit the tests before it had found.
+  const auto leaf_of = [](const Bvh& tree) {  // the leaf of each position of primitive_order
+    std::vector<std::uint32_t> leaf(tree.primitive_order.size(), Query::Watch::kNone);
+    for (std::uint32_t n = 0; n < tree.nodes.size(); ++n)
+      if (tree.nodes[n].is_leaf())
+        for (std::uint32_t i = tree.nodes[n].first_index;
+             i < tree.nodes[n].first_index + tree.nodes[n].primitive_count && i < leaf.size(); ++i)
+          leaf[i] = n;
+    std::vector<std::uint32_t> by_primitive(tree.primitive_order.size(), Query::Watch::kNone);
+    for (std::size_t i = 0; i < tree.primitive_order.size(); ++i)
+      if (tree.primitive_order[i] < by_primitive.size()) by_primitive[tree.primitive_order[i]] = leaf[i];
+    return by_primitive;
+  };
+  const bool object_tree = !only_one_tree_ && !objects_bvh_.nodes.empty();
+  const std::vector<std::uint32_t> object_leaf = object_tree ? leaf_of(objects_bvh_) : std::vector<std::uint32_t>{};
+  std::vector<std::vector<std::uint32_t>> part_leaf(meshes_.size());
+  std::unordered_set<std::uint64_t> seen;  // the tree (0 over the objects, else 1 + the part) and leaf
+  float closest = kInfinity;
+  const auto open = [&](int tree, std::uint32_t leaf, int of_mesh, const Bvh& bvh) {
+    if (leaf == Query::Watch::kNone) return;
+    if (!seen.insert((static_cast<std::uint64_t>(tree + 1) << 32) | leaf).second) return;
+    walk.leaves.push_back({of_mesh, leaf, bvh.nodes[leaf].bounds, closest});
+  };
+  for (const Query::Watch::Test& test : watch.order) {
+    std::uint32_t tested_object = test.index;
+    if (!test.is_sphere) {
+      std::uint32_t p = 0;
+      while (p < meshes_.size() && !(test.index >= meshes_[p].first_triangle &&
+                                     test.index - meshes_[p].first_triangle < meshes_[p].triangle_count))
+        ++p;
+      if (p == meshes_.size()) continue;
+      tested_object = static_cast<std::uint32_t>(spheres_.size()) + p;
+      if (object_tree && tested_object < object_leaf.size()) open(-1, object_leaf[tested_object], -1, objects_bvh_);
+      const Bvh& bvh = meshes_[p].bvh;
+      if (!bvh.nodes.empty()) {
+        if (part_leaf[p].empty()) part_leaf[p] = leaf_of(bvh);
+        const std::uint32_t local = test.index - meshes_[p].first_triangle;
+        if (local < part_leaf[p].size())
+          open(static_cast<int>(p), part_leaf[p][local], static_cast<int>(triangles_[test.index].mesh), bvh);
+      }
+    } else if (object_tree && tested_object < object_leaf.size()) {
+      open(-1, object_leaf[tested_object], -1, objects_bvh_);
+    }
+    if (test.t_max > closest + 1e-4f * (1.0f + std::fabs(closest))) {
+      if (walk.tests_beyond_a_hit++ == 0) walk.first_test_beyond_a_hit = {test.t_max, closest};
+    }
+    if (test.t && *test.t < closest) closest = *test.t;
+  }
+  walk.leaves_cut = watch.order.size() >= Query::Watch::kMostTests;
   return walk;
 }
 

@@ -3,8 +3,10 @@
 
 #include "raylab/geometry.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 namespace raylab {
 
@@ -22,6 +24,20 @@ struct SceneGeometry::Query {
     std::uint32_t triangle = kNone, sphere = kNone;
     bool tested = false;
     std::uint64_t tests = 0;
+    // Every test in the order the traversals called them (the first kMostTests): a sphere (an
+    // index into spheres_) or a triangle (into triangles_), the t_max of the ray it was given,
+    // and the t it hit at.
+    struct Test {
+      bool is_sphere = false;
+      std::uint32_t index = 0;
+      float t_max = 0.0f;
+      std::optional<float> t;
+    };
+    static constexpr std::size_t kMostTests = 1u << 16;
+    std::vector<Test> order;
+    void add(bool is_sphere, std::uint32_t index, float t_max, std::optional<float> t) {
+      if (order.size() < kMostTests) order.push_back({is_sphere, index, t_max, t});
+    }
   };
   Watch* watch = nullptr;
 };

@@ -215,14 +215,95 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
   // your box test must say so (stage 04); then whether your traversal tested that primitive
   // (stage 05) and how many it tested in all. `trees_agree`: the trees' closest hit is the
   // contract's (then not testing it, on a tie, is fine; else the traversal is marked).
+  const auto tree_name = [&](int mesh) {
+    return mesh < 0 ? words("the tree over the objects", "物体之上的树")
+                    : words("mesh ", "网格 ") + mesh_name(static_cast<std::size_t>(mesh)) + words("'s tree", " 的树");
+  };
+  // Every leaf your traversal opened along the camera ray: each must be one the ray enters (the
+  // exact slab test; a thick box it grazes may go either way), before the closest hit the tests
+  // before it had found (stage 05's "skip what lies beyond the closest hit found so far").
+  const auto trace_leaves_opened = [&](const SceneGeometry::TreeWalk& walk, const Ray& camera_ray,
+                                       const auto& name_of_tree) {
+    const SceneGeometry::LeafOpened* missed = nullptr;
+    const SceneGeometry::LeafOpened* beyond = nullptr;
+    int missed_count = 0, beyond_count = 0;
+    double beyond_entry = 0;
+    for (const SceneGeometry::LeafOpened& leaf : walk.leaves) {
+      const Slab slab = exact_slab(camera_ray, leaf.box);
+      if (!(slab.enter <= slab.exit)) {
+        if (exact_box_grazes(camera_ray, leaf.box)) continue;
+        ++missed_count;
+        if (!missed) missed = &leaf;
+      } else if (std::isfinite(leaf.closest_before) &&
+                 slab.enter > leaf.closest_before + 1e-4 * std::max(1.0, std::fabs(double(leaf.closest_before)))) {
+        ++beyond_count;
+        if (!beyond) {
+          beyond = &leaf;
+          beyond_entry = slab.enter;
+        }
+      }
+    }
+    const auto leaf_text = [&](const SceneGeometry::LeafOpened& leaf) {
+      return words("node ", "节点 ") + std::to_string(leaf.node) + words(" of ", "，") + name_of_tree(leaf.mesh) +
+             words(", box ", "，包围盒 ") + text(leaf.box.min) + " - " + text(leaf.box.max);
+    };
+    TraceStep step{"05_bvh", "intersect_bvh",
+                   words("the leaves your intersect_bvh opened along the camera ray (a leaf whose primitives it tested)",
+                         "你的 intersect_bvh 沿相机光线打开的叶节点（测试了其中图元的叶节点）"),
+                   words("opened ", "打开了 ") + std::to_string(walk.leaves.size()) +
+                       words(walk.leaves.size() == 1 ? " leaf" : " leaves", " 个叶节点") +
+                       (walk.leaves_cut ? words(" (the first ones)", "（只统计了前面的）") : "") + words("; ", "；") +
+                       std::to_string(missed_count) + words(" the ray misses, ", " 个光线没有进入，") +
+                       std::to_string(beyond_count) +
+                       words(" entered beyond a hit already found; ", " 个在已经找到的交点之后才进入；") +
+                       std::to_string(walk.tests_beyond_a_hit) +
+                       words(" primitive tests given a t_max beyond a hit already found",
+                             " 次图元测试得到的 t_max 超过了已经找到的交点"),
+                   words("only leaves the ray enters; each test's t_max lowered to the closest hit found so far "
+                         "(and a leaf beyond it skipped)",
+                         "只打开光线进入的叶节点；每次测试的 t_max 降到目前找到的最近交点（并跳过在它之后的叶节点）"),
+                   "", missed_count == 0 && walk.tests_beyond_a_hit == 0};
+    if (missed) {
+      // Your box test says the ray enters it: the box test's mistake; else the traversal opened a
+      // leaf its box test turned away.
+      bool stub = false;
+      const std::optional<std::optional<float>> got =
+          yours([&] { return intersect_ray_box(camera_ray, ray_direction_inverse_of(camera_ray), missed->box); }, stub);
+      const bool box_says_enters = !stub && got && got->has_value();
+      if (box_says_enters) {
+        step.stage = "04_box";
+        step.function = "intersect_ray_box";
+      }
+      step.note = leaf_text(*missed) +
+                  (box_says_enters
+                       ? words(": the ray misses this box, yet your intersect_ray_box says it enters at t = ",
+                               "：光线没有进入这个包围盒，你的 intersect_ray_box 却说它在 t = ") +
+                             text(**got) + words("", " 处进入")
+                       : words(": the ray misses this box (so does your intersect_ray_box), yet your traversal "
+                               "tested its primitives: test a node's box before anything below it",
+                               "：光线没有进入这个包围盒（你的 intersect_ray_box 也这么说），你的遍历却测试了其中的图元："
+                               "先测试节点的包围盒，再处理它下面的任何东西"));
+    } else if (walk.tests_beyond_a_hit > 0) {
+      step.note = words("your traversal called intersector.test with t_max = ", "你的遍历调用 intersector.test 时 t_max = ") +
+                  text(walk.first_test_beyond_a_hit.first) + words(" after a hit at t = ", "，而之前已经在 t = ") +
+                  text(walk.first_test_beyond_a_hit.second) +
+                  words(" had been found: lower the ray's t_max to each hit's t", " 处找到了交点：每次击中后把光线的 t_max 降到交点的 t");
+    } else if (beyond) {
+      // Not a disagreement: more work than needed, which the grader's work test weighs.
+      step.note = leaf_text(*beyond) + words(": the ray enters it at t = ", "：光线在 t = ") + text(beyond_entry) +
+                  words(", beyond the hit at t = ", " 处才进入它，而之前已经在 t = ") + text(beyond->closest_before) +
+                  words(" found before it: work a traversal can skip (a node whose entry is beyond the closest hit, "
+                        "and the near child first)",
+                        " 处找到了交点：这是遍历可以省去的工作（跳过起点在最近交点之后的节点，并先访问近的子节点）");
+    }
+    trace.steps.push_back(step);
+  };
   const auto trace_tree_path = [&](const SceneGeometry& geometry, const Ray& camera_ray, const Closest& target,
                                    bool trees_agree) {
     const SceneGeometry::TreeWalk walk = geometry.walk_to(camera_ray, target.sphere, target.mesh, target.triangle);
     const glm::vec3 inverse = ray_direction_inverse_of(camera_ray);
     for (const SceneGeometry::TreeNodeOnPath& node : walk.path) {
-      const std::string tree = node.mesh < 0 ? words("the tree over the objects", "物体之上的树")
-                                             : words("mesh ", "网格 ") + mesh_name(static_cast<std::size_t>(node.mesh)) +
-                                                   words("'s tree", " 的树");
+      const std::string tree = tree_name(node.mesh);
       bool stub = false;
       const std::optional<std::optional<float>> got =
           yours([&] { return intersect_ray_box(camera_ray, inverse, node.box); }, stub);
@@ -242,6 +323,7 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       trace.steps.push_back(step);
     }
     if (walk.path.empty()) return;
+    trace_leaves_opened(walk, camera_ray, tree_name);
     TraceStep tested{"05_bvh", "intersect_bvh",
                      words("the primitives your intersect_bvh tested along the camera ray",
                            "你的 intersect_bvh 沿相机光线测试的图元"),

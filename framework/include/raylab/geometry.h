@@ -30,6 +30,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace raylab {
@@ -134,8 +135,8 @@ class SceneGeometry {
   std::vector<std::vector<Bounds3>> tree_boxes_by_level() const;
 
   // How the trees lead a ray to one primitive (`raylab trace`): the nodes from the root down to
-  // the leaf that holds it (the tree over the objects, then its mesh's tree), and which primitive
-  // tests intersect(ray) called. The primitive: `sphere`, an index into scene.spheres, or
+  // the leaf that holds it (the tree over the objects, then its mesh's tree), which primitive
+  // tests intersect(ray) called, and the leaves it opened. The primitive: `sphere`, an index into scene.spheres, or
   // triangle `triangle` of scene.meshes[mesh] when `sphere` is nullopt.
   struct TreeNodeOnPath {
     int mesh = -1;  // -1: a node of the tree over the objects; else the index of the mesh whose tree
@@ -143,11 +144,25 @@ class SceneGeometry {
     int depth = 0;  // as tree_boxes_by_level counts it
     Bounds3 box;
   };
+  // A leaf a traversal opened (one of its primitives was tested), and the closest hit the tests
+  // made before it had found (kInfinity: none).
+  struct LeafOpened {
+    int mesh = -1;  // as TreeNodeOnPath's
+    std::uint32_t node = 0;
+    Bounds3 box;
+    float closest_before = kInfinity;
+  };
   struct TreeWalk {
     std::vector<TreeNodeOnPath> path;  // root first; empty when no tree holds the primitive
     bool tested = false;               // intersect(ray) called the primitive's test
     std::uint64_t primitive_tests = 0;  // every primitive test it called
     std::optional<float> t_hit;        // what it found
+    std::vector<LeafOpened> leaves;    // in the order the traversals opened them
+    bool leaves_cut = false;           // more tests than were kept: only the first leaves
+    // The tests given a ray whose t_max lay beyond a hit already found (the traversal did not
+    // lower t_max), and the first one's t_max and that hit's t.
+    std::uint64_t tests_beyond_a_hit = 0;
+    std::pair<float, float> first_test_beyond_a_hit{0.0f, 0.0f};
   };
   TreeWalk walk_to(const Ray& ray, std::optional<std::size_t> sphere, std::size_t mesh, std::size_t triangle) const;
 

@@ -8,8 +8,10 @@
 //     test (stages 02 and 03) that your code or the contract hits, and the closest hit;
 //   - the closest hit through your trees (stages 04-05), where the renderer uses them, and the
 //     trees' nodes from the root down to the leaf that holds the contract's closest hit: your box
-//     test on each of their boxes (the ray enters each, as each holds that primitive), and whether
-//     your traversal tested that primitive, with the count of primitive tests it made;
+//     test on each of their boxes (the ray enters each, as each holds that primitive); every leaf
+//     your traversal opened (one whose primitives it tested), each of which the ray must enter,
+//     and whether each test's t_max was lowered to the closest hit found before it; whether your
+//     traversal tested that primitive, with the count of primitive tests it made;
 //   - with --integrator direct, path or mis (trace_monte_carlo.cpp): the path your code took, surface
 //     by surface: the closest hit of each bounce ray, at each diffuse surface lambertian_f, the
 //     light's point density (stage 07) and area_pdf_to_solid_angle, estimate_direct_light called
@@ -21,8 +23,9 @@
 //     and bounces.
 //   - with --integrator whitted (trace_whitted.cpp): the reflection, refraction and shadow rays
 //     Whitted shading traces after the camera ray, your geometry's answer along each beside the
-//     contract's, and where they differ, the sphere and triangle tests along that ray that differ;
-//   Not traced: the nodes a traversal visits off the path to the camera ray's hit.
+//     contract's, and where they differ, the sphere and triangle tests along that ray that differ.
+//   Not traced: the inner nodes a traversal visits (seen only through the leaves it opens), and
+//   the trees along the rays after the camera ray (only their answers).
 #pragma once
 
 #include "raylab/geometry.h"
