@@ -47,7 +47,15 @@ Message StageSession::where() const {
   return {MessageId::lost_in_test, {{"test", test_}}};
 }
 
+StageSession::DiagnosticCalls::DiagnosticCalls(double seconds)
+    : previous_(StageSession::instance().diagnostic_seconds_) {
+  StageSession::instance().diagnostic_seconds_ = seconds;
+}
+StageSession::DiagnosticCalls::~DiagnosticCalls() { StageSession::instance().diagnostic_seconds_ = previous_; }
+
 void StageSession::lose(const Message& reason, bool timed_out) {
+  // A diagnostic call's loss: the server is stopped already (every path here stops it first).
+  if (diagnostic_seconds_) throw StageLost(render(reason, Language::English));
   if (!problem_) problem_ = Message{MessageId::lost_problem, {{"reason", reason}, {"where", where()}}};
   test_loss_ = Message{MessageId::lost_during_this_test, {{"reason", reason}}};
   ++losses_;
@@ -81,6 +89,11 @@ std::string StageSession::call(const StageCall& stage_call, const Writer& argume
   auto deadline = started + std::chrono::duration_cast<Clock::duration>(
                                 std::chrono::duration<double>(options_.stage_seconds - used_seconds_));
   if (options_.run_deadline < deadline) deadline = options_.run_deadline;
+  if (diagnostic_seconds_) {
+    const auto diagnostic_deadline =
+        started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(*diagnostic_seconds_));
+    if (diagnostic_deadline < deadline) deadline = diagnostic_deadline;
+  }
   struct Account {  // the call's time counts against the stage, however it ends
     StageSession& session;
     Clock::time_point started;

@@ -79,6 +79,22 @@ class StageSession {
   // malformed frame. Throws StageLost.
   [[noreturn]] void reject_reply(const StageCall& stage_call, const Message& what);
 
+  // While it lives, this thread's calls are diagnostic (a failing picture's traced pixel, which
+  // is only shown): each waits `seconds` at most (and no longer than the stage's deadline), and
+  // one that is lost stops the server as any lost call does (the next call starts a fresh one)
+  // but costs nothing else: the test, the stage's restarts and its problem are as if it had not
+  // been made. The call still throws StageLost, for the caller to go on without its answer.
+  class DiagnosticCalls {
+   public:
+    explicit DiagnosticCalls(double seconds);
+    ~DiagnosticCalls();
+    DiagnosticCalls(const DiagnosticCalls&) = delete;
+    DiagnosticCalls& operator=(const DiagnosticCalls&) = delete;
+
+   private:
+    std::optional<double> previous_;
+  };
+
   // Increases whenever a fresh server starts (what it was sent before is gone).
   unsigned server_generation() const { return generation_; }
   bool server_running() const { return process_.running(); }
@@ -97,6 +113,7 @@ class StageSession {
   int losses_ = 0;
   std::string test_, output_;
   std::optional<Message> test_loss_, abandoned_, problem_;
+  std::optional<double> diagnostic_seconds_;  // DiagnosticCalls
 };
 
 }  // namespace raylab::grading

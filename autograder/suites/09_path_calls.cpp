@@ -77,6 +77,7 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
 
 PixelTrace path_trace_pixel(const std::string& scene_path, const PathRenderRequest& request, int x, int y,
                             bool chinese) {
+  const StageSession::DiagnosticCalls diagnostic(kTraceSeconds);
   Writer arguments;
   arguments.put_string(scene_path);
   arguments.put(request);
@@ -88,9 +89,10 @@ PixelTrace path_trace_pixel(const std::string& scene_path, const PathRenderReque
     trace.x = x;
     trace.y = y;
     trace.settings = path_trace_settings(request, chinese);
-    // Shown, never believed: a sample outside the pixel's is shown as sample 0.
+    // Shown, never believed: a sample outside the pixel's is a malformed reply (no trace).
     const int sample = in.get<int>();
-    trace.settings.sample = sample >= 0 && sample < request.samples_per_pixel ? sample : 0;
+    if (sample < 0 || sample >= request.samples_per_pixel) throw protocol::ProtocolError(MessageId::protocol_malformed_lists);
+    trace.settings.sample = sample;
     read_trace_steps(in, trace);
     in.expect_end();
     return trace;
@@ -102,7 +104,8 @@ PixelTrace path_trace_pixel(const std::string& scene_path, const PathRenderReque
 #else
 namespace grading {
 
-PathRenderResult path_render(const std::string& scene_path, const PathRenderRequest& request) {
+// The scene of a request: its size, and the test's changes (a grey albedo, a background).
+Scene request_scene(const std::string& scene_path, const PathRenderRequest& request) {
   Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + scene_path);
   scene.camera.width = request.width;
   scene.camera.height = request.height;
@@ -110,6 +113,11 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
     for (Material& material : scene.materials) material.diffuse_color = glm::vec3(request.albedo);
   if (request.background.x >= 0.0f && request.background.y >= 0.0f && request.background.z >= 0.0f)
     scene.background = request.background;
+  return scene;
+}
+
+PathRenderResult path_render(const std::string& scene_path, const PathRenderRequest& request) {
+  const Scene scene = request_scene(scene_path, request);
   if (request.probe_only) {
     const SceneGeometry geometry(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, grader_tracing());
     const RenderContext context(scene, geometry, request.max_depth, Skips{},
@@ -137,13 +145,7 @@ PathRenderResult path_render(const std::string& scene_path, const PathRenderRequ
 
 PixelTrace path_trace_pixel(const std::string& scene_path, const PathRenderRequest& request, int x, int y,
                             bool chinese) {
-  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + scene_path);
-  scene.camera.width = request.width;
-  scene.camera.height = request.height;
-  if (request.albedo >= 0.0f)
-    for (Material& material : scene.materials) material.diffuse_color = glm::vec3(request.albedo);
-  if (request.background.x >= 0.0f && request.background.y >= 0.0f && request.background.z >= 0.0f)
-    scene.background = request.background;
+  const Scene scene = request_scene(scene_path, request);
   TraceSettings settings = path_trace_settings(request, chinese);
   settings.yours = grader_tracing();  // as path_render's picture: the grader's geometry
   std::optional<PixelTrace> first;

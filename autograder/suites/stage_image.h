@@ -26,13 +26,19 @@ Image render_stage_image(const std::string& stage_id);
 // keeps at most kMostTracedSteps steps, each text cut at kMostTracedTextBytes: the stage server
 // runs the student's code, and what it sends is shown, never believed.
 constexpr std::size_t kMostTracedSteps = 200, kMostTracedTextBytes = 300;
-// `chinese`: the steps' words in Chinese (TraceSettings::chinese).
+// `chinese`: the steps' words in Chinese (TraceSettings::chinese). The call is diagnostic
+// (StageSession::DiagnosticCalls, kTraceSeconds at most): a trace that crashes or loops throws
+// StageLost but costs the test nothing, as the trace runs the stage code on inputs the picture
+// did not.
+constexpr double kTraceSeconds = 10;
 PixelTrace trace_stage_image_pixel(const std::string& stage_id, int x, int y, bool chinese);
 // The command that prints the same trace on the student's machine.
 std::string stage_image_trace_command(const std::string& stage_id, int x, int y, bool chinese);
 
-// A trace's steps as a stage server sends them, and as the judge reads them back into `trace`
-// (at most kMostTracedSteps of them, each text cut at kMostTracedTextBytes).
+// A trace's steps as a stage server sends them (the first kMostTracedSteps, and how many there
+// were), and as the judge reads them back into `trace` (at most kMostTracedSteps, each text cut
+// at kMostTracedTextBytes; steps left out set trace.steps_cut, and such a trace is never said to
+// agree).
 void write_trace_steps(protocol::Writer& out, const PixelTrace& trace);
 void read_trace_steps(protocol::Reader& in, PixelTrace& trace);
 

@@ -12,6 +12,7 @@
 #include "raylab/testkit/exact_tracing.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <string_view>
@@ -37,10 +38,14 @@ std::string stage_image_trace_command(const std::string& stage_id, int x, int y,
 }
 
 void write_trace_steps(Writer& out, const PixelTrace& trace) {
-  out.put<std::uint32_t>(static_cast<std::uint32_t>(trace.steps.size()));
-  for (const TraceStep& step : trace.steps) {
+  const std::size_t sent = std::min(trace.steps.size(), kMostTracedSteps);
+  out.put<std::uint32_t>(static_cast<std::uint32_t>(std::min<std::size_t>(trace.steps.size(), UINT32_MAX)));
+  out.put<std::uint32_t>(static_cast<std::uint32_t>(sent));
+  const auto cut = [](const std::string& text) { return protocol::cut_text(text, kMostTracedTextBytes, " [...]"); };
+  for (std::size_t i = 0; i < sent; ++i) {
+    const TraceStep& step = trace.steps[i];
     for (const std::string* text : {&step.stage, &step.function, &step.call, &step.yours, &step.expected, &step.note})
-      out.put_string(*text);
+      out.put_string(cut(*text));
     out.put<std::uint8_t>(step.agrees);
   }
   out.put<int>(trace.untouched_spheres);
@@ -48,7 +53,8 @@ void write_trace_steps(Writer& out, const PixelTrace& trace) {
 }
 
 void read_trace_steps(Reader& in, PixelTrace& trace) {
-  const auto count = in.get<std::uint32_t>();
+  const auto total = in.get<std::uint32_t>(), count = in.get<std::uint32_t>();
+  trace.steps_cut = total > count || count > kMostTracedSteps;
   const auto cut = [](const std::string& text) { return protocol::cut_text(text, kMostTracedTextBytes, " [...]"); };
   for (std::uint32_t i = 0; i < count; ++i) {
     std::string stage = in.get_string(), function = in.get_string(), call = in.get_string(), yours = in.get_string(),
@@ -79,6 +85,7 @@ Image render_stage_image(const std::string& stage_id) {
 }
 
 PixelTrace trace_stage_image_pixel(const std::string& stage_id, int x, int y, bool chinese) {
+  const StageSession::DiagnosticCalls diagnostic(kTraceSeconds);
   Writer arguments;
   arguments.put_string(stage_id);
   arguments.put<int>(x);

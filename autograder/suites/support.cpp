@@ -161,7 +161,8 @@ void attach_pixel_trace(ImageComparison& images, PixelTrace trace, const std::st
                                                                             kMostTracedPathSamples))}});
   const int first = traced.first_disagreement();
   if (first < 0) {
-    add_note({sampled ? MessageId::note_path_trace_agrees : MessageId::note_trace_agrees, args});
+    // (A trace whose later steps were left out is not said to agree: the table shows what came.)
+    if (!traced.steps_cut) add_note({sampled ? MessageId::note_path_trace_agrees : MessageId::note_trace_agrees, args});
     return;
   }
   const TraceStep& step = traced.steps[static_cast<std::size_t>(first)];

@@ -7,6 +7,7 @@
 #include "raylab/stages/05_bvh.h"
 #include "raylab/stages/05c_wide_bvh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <unordered_set>
@@ -258,12 +259,12 @@ SceneGeometry::TreeWalk SceneGeometry::walk_to(const Ray& ray, std::optional<std
     } else if (object_tree && tested_object < object_leaf.size()) {
       open(-1, object_leaf[tested_object], -1, objects_bvh_);
     }
-    if (test.t_max > closest + 1e-4f * (1.0f + std::fabs(closest))) {
+    if (test.t_max > closest + 1e-4f * std::max(1.0f, std::fabs(closest))) {
       if (walk.tests_beyond_a_hit++ == 0) walk.first_test_beyond_a_hit = {test.t_max, closest};
     }
     if (test.t && *test.t < closest) closest = *test.t;
   }
-  walk.leaves_cut = watch.order.size() >= Query::Watch::kMostTests;
+  walk.leaves_cut = watch.dropped;
   return walk;
 }
 

@@ -35,8 +35,12 @@ struct SceneGeometry::Query {
     };
     static constexpr std::size_t kMostTests = 1u << 16;
     std::vector<Test> order;
+    bool dropped = false;  // tests after the first kMostTests were not kept
     void add(bool is_sphere, std::uint32_t index, float t_max, std::optional<float> t) {
-      if (order.size() < kMostTests) order.push_back({is_sphere, index, t_max, t});
+      if (order.size() < kMostTests)
+        order.push_back({is_sphere, index, t_max, t});
+      else
+        dropped = true;
     }
   };
   Watch* watch = nullptr;

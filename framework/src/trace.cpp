@@ -230,12 +230,15 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
     double beyond_entry = 0;
     for (const SceneGeometry::LeafOpened& leaf : walk.leaves) {
       const Slab slab = exact_slab(camera_ray, leaf.box);
+      const double rounding = 1e-4 * std::max(1.0, std::fabs(slab.enter));
       if (!(slab.enter <= slab.exit)) {
-        if (exact_box_grazes(camera_ray, leaf.box)) continue;
+        // Missed by rounding only (a flat box's too, a wall's): a float box test may say either.
+        if (slab.enter <= slab.exit + rounding || exact_box_grazes(camera_ray, leaf.box)) continue;
         ++missed_count;
         if (!missed) missed = &leaf;
       } else if (std::isfinite(leaf.closest_before) &&
                  slab.enter > leaf.closest_before + 1e-4 * std::max(1.0, std::fabs(double(leaf.closest_before)))) {
+        // (the same rounding as SceneGeometry::walk_to's for a test's t_max beyond a hit)
         ++beyond_count;
         if (!beyond) {
           beyond = &leaf;
@@ -371,6 +374,12 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
     }
   } catch (const NotImplemented&) {
     // A tree's stub: the renderer tests every primitive then, as the steps above do.
+  } catch (const std::exception& e) {
+    trace.steps.emplace_back("", "",
+                             words("the closest hit through your trees (build_bvh, intersect_bvh, intersect_ray_box)",
+                                   "经过你的树的最近交点（build_bvh、intersect_bvh、intersect_ray_box）"),
+                             words("threw: ", "抛出了异常：") + e.what(), words("a hit or none", "一个交点或没有交点"), "",
+                             false);
   }
   if (settings.integrator != IntegratorKind::Whitted) {
     trace_monte_carlo(scene, ray, sampler, contract, trace);
@@ -379,6 +388,10 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       trace_whitted(scene, ray, contract, trace);
     } catch (const NotImplemented&) {
       // A stub of your geometry: marked at its first call along the camera ray above.
+    } catch (const std::exception& e) {
+      // Your trees' build or the camera ray's hit threw: the steps above stand.
+      trace.steps.emplace_back("", "", words("the rays after the camera ray", "相机光线之后的光线"),
+                               words("threw: ", "抛出了异常：") + e.what(), words("an answer", "一个回答"), "", false);
     }
   }
   return trace;
@@ -396,7 +409,7 @@ void print_trace(std::ostream& out, const std::string& scene_path, const PixelTr
         << integrator_name(settings.integrator) << "\n"
         << "沿这个样本的" << (monte_carlo ? "路径" : "光线（相机光线及其后的反射、折射和阴影光线）")
         << "列出你的阶段函数的每次调用，旁边是契约对同样的输入和同样的随机数给出的结果（本套件自己的精确版本）。\n"
-        << "球和三角形的求交测试使用契约的相机光线。\n\n";
+        << "球和三角形的求交测试使用契约的相机光线" << (monte_carlo ? "" : "；之后的光线从你的交点出发") << "。\n\n";
   else
     out << "raylab trace " << scene_path << ": pixel " << pixel << ", sample " << sample << " of " << count_of_samples
         << " (seed " << settings.seed << "), through " << text(trace.position_in_pixel)
@@ -406,7 +419,7 @@ void print_trace(std::ostream& out, const std::string& scene_path, const PixelTr
                           "reflection, refraction and shadow rays after it)")
         << ", beside what the contract gives for the\n"
         << "same inputs and the same random numbers (the kit's own exact versions). The sphere and triangle tests use\n"
-        << "the contract's camera ray.\n\n";
+        << "the contract's camera ray" << (monte_carlo ? "" : "; the rays after it start at your hits") << ".\n\n";
   const int first = trace.first_disagreement();
   for (std::size_t i = 0; i < trace.steps.size(); ++i) {
     const TraceStep& step = trace.steps[i];

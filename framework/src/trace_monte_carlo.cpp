@@ -49,18 +49,6 @@ bool same_direction(const glm::vec3& a, const glm::vec3& b) {
   return glm::dot(a, b) / (la * lb) > 1.0f - 1e-5f;
 }
 
-std::string material_text(const Words& words, const Scene& scene, const SurfaceHit& hit) {
-  const Material& material = scene.materials[hit.material];
-  return material.name.empty() ? words("material ", "材质 ") + std::to_string(hit.material)
-                               : words("material '", "材质 '") + material.name + "'";
-}
-
-std::string hit_text(const Words& words, const Scene& scene, const std::optional<SurfaceHit>& hit) {
-  if (!hit) return words("nothing: the background", "什么也没有击中：背景");
-  return words("hit at t = ", "在 t = ") + text(hit->t_hit) + words(", point ", " 处击中，交点 ") + text(hit->point) +
-         words(", ", "，") + material_text(words, scene, *hit);
-}
-
 std::string bsdf_name(const Words& words, const Bsdf& bsdf) {
   switch (bsdf.kind) {
     case BsdfKind::Lambertian:
@@ -302,11 +290,10 @@ std::optional<TraceStep> shadow_ray_step(const Words& words, const std::string& 
                                          const std::string& function) {
   if (!direct.your_blocked || !found.shadow || !found.sample || !found.sample->light_sample) return std::nullopt;
   const Ray& ray = found.shadow->ray;
-  const auto answer = [&](bool blocked) { return blocked ? words("blocked", "被遮挡") : words("clear", "没有被遮挡"); };
   TraceStep step{"", "",
                  at + words(": the shadow ray (", "：阴影光线（") + ray_text(words, ray) + words(", t_max ", "，t_max ") +
                      text(ray.t_max) + words(")", "）"),
-                 answer(*direct.your_blocked), answer(*direct.contract_blocked), "", false};
+                 blocked_text(words, *direct.your_blocked), blocked_text(words, *direct.contract_blocked), "", false};
   const glm::vec3 point = found.sample->light_sample->point;
   const float reach = ray.t_max * glm::length(ray.direction), to_point = glm::length(point - ray.origin);
   const bool reaches_the_light =
@@ -327,8 +314,7 @@ std::optional<TraceStep> shadow_ray_step(const Words& words, const std::string& 
                   "offset_ray_origin(hit, direction)",
                   "你的阴影光线从表面上出发，舍入误差会让它落在表面下方一点点；要从 offset_ray_origin(hit, direction) "
                   "出发")
-          : words("your geometry (stages 02-05) answers this shadow ray otherwise than the contract's exact tests",
-                  "你的几何（阶段 02-05）对这条阴影光线的回答与契约的精确测试不同");
+          : shadow_answer_note(words);
   return step;
 }
 
@@ -658,7 +644,9 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
   std::vector<int> unsampled_light;  // the diffuse surfaces where your path sampled no light
   std::string light_not_followed;    // why a light sample of your path could not be followed
   std::string stopped_short;         // your path ended where the contract's goes on
-  for (std::size_t depth = 0; depth < path.size(); ++depth) {
+  // The surfaces up to one past max_depth (a path that goes on further is marked at its value).
+  const std::size_t traced_surfaces = std::min(path.size(), static_cast<std::size_t>(std::max(settings.max_depth, 0)) + 2);
+  for (std::size_t depth = 0; depth < traced_surfaces; ++depth) {
     const PathVertex& vertex = path[depth];
     const int d = static_cast<int>(depth);
     const std::string at = words("surface ", "表面 ") + std::to_string(depth);
@@ -670,12 +658,8 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
                      at + words(": the closest hit along the bounce ray (", "：沿弹射光线的最近交点（") +
                          ray_text(words, vertex.ray) + words(")", "）"),
                      hit_text(words, scene, vertex.hit), hit_text(words, scene, expected)};
-      step.agrees =
-          vertex.hit.has_value() == expected.has_value() &&
-          (!expected || (near(vertex.hit->t_hit, expected->t_hit) && vertex.hit->material == expected->material));
-      if (!step.agrees)
-        step.note = words("your geometry (stages 02-05: spheres, triangles, boxes, trees) finds another hit",
-                          "你的几何（阶段 02-05：球、三角形、包围盒、树）找到了另一个交点");
+      step.agrees = same_closest_hit(vertex.hit, expected);
+      if (!step.agrees) step.note = another_hit_note(words);
       steps.push_back(step);
     }
     if (!vertex.hit) {
@@ -943,10 +927,18 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
     // A diffuse surface whose light your path did not sample.
     const std::string where =
         words("surface ", "表面 ") + std::to_string(unsampled_light.empty() ? 0 : unsampled_light.front());
-    PathRules none;
+    PathRules none = rules;
     none.no_light_sample_is_zero = true;
-    PathRules emission_only = none;
-    emission_only.emission_after_diffuse = true;
+    PathRules emission_only = none;  // (with MIS: the emission a diffuse bounce finds, unweighted)
+    if (mis)
+      emission_only.mis_weigh_emission = false;
+    else
+      emission_only.emission_after_diffuse = true;
+    // What each diffuse surface must add: "estimate_direct_light", or with MIS its weighted light sample.
+    const std::string light_sample = mis ? words("a weighted light sample", "一个加权的光源样本")
+                                         : words("estimate_direct_light", " estimate_direct_light ");
+    const std::string handout = mis ? words("docs/09b_mis.md, section 4", "docs/zh/09b_mis.md，第 4 节")
+                                    : words("docs/09_path.md, section 2", "docs/zh/09_path.md，第 2 节");
     const std::optional<glm::dvec3> without = path_value(surfaces, contracts, none);
     const std::optional<glm::dvec3> by_emission = path_value(surfaces, contracts, emission_only);
     if (by_emission && without && near(value, *by_emission, kValueTolerance) &&
@@ -954,16 +946,16 @@ void trace_monte_carlo(const Scene& scene, const Ray& camera_ray, Sampler& sampl
       step.expected = text(*by_emission) + words("  (your path's emission, without light sampling)",
                                                  "  （你的路径的自发光，没有光源采样）");
       step.note = words("your path samples no light and counts the emission its bounces reach instead: the same mean, "
-                        "with more noise; the contract asks for estimate_direct_light at every diffuse surface",
+                        "with more noise; the contract asks for " + light_sample + " at every diffuse surface",
                         "你的路径不采样光源，而是计入弹射所到达的自发光：均值相同，噪声更多；契约要求在每个漫反射表面"
-                        "调用 estimate_direct_light");
+                        "使用" + light_sample);
     } else if (without && near(value, *without, kValueTolerance)) {
       step.expected = words("the direct light at " + where, where + " 处的直接光照");
       step.agrees = false;
-      step.note = words("your path adds no direct light at " + where +
-                            ", a diffuse surface: call estimate_direct_light there (docs/09_path.md, section 2)",
-                        "你的路径没有在" + where +
-                            "（一个漫反射表面）加上直接光照：要在那里调用 estimate_direct_light（docs/zh/09_path.md，第 2 节）");
+      step.note = words("your path adds no direct light at " + where + ", a diffuse surface: add " + light_sample +
+                            " there (" + handout + ")",
+                        "你的路径没有在" + where + "（一个漫反射表面）加上直接光照：要在那里加上" + light_sample + "（" +
+                            handout + "）");
     } else {
       step.expected = words("not checked: your path sampled no light at " + where + " with sample_li",
                             "没有检查：你的路径在" + where + " 没有用 sample_li 采样光源");

@@ -1,8 +1,9 @@
-// raylab trace's helpers (trace.cpp, trace_monte_carlo.cpp): values as the trace prints them,
+// raylab trace's helpers (trace.cpp, trace_monte_carlo.cpp, trace_whitted.cpp): values as the trace prints them,
 // agreement within rounding, and a stage call that may be a stub.
 #pragma once
 
 #include "raylab/error.h"
+#include "raylab/geometry.h"
 #include "raylab/ray.h"
 #include "raylab/scene.h"
 #include "raylab/stages/03_triangle.h"
@@ -47,6 +48,32 @@ inline std::string ray_text(const Words& words, const Ray& ray) {
   return words("origin ", "起点 ") + text(ray.origin) + words("  direction ", "  方向 ") + text(ray.direction);
 }
 
+// A hit's material in words, and a ray's closest hit (or the background).
+inline std::string material_text(const Words& words, const Scene& scene, const SurfaceHit& hit) {
+  const Material& material = scene.materials[hit.material];
+  return material.name.empty() ? words("material ", "材质 ") + std::to_string(hit.material)
+                               : words("material '", "材质 '") + material.name + "'";
+}
+inline std::string hit_text(const Words& words, const Scene& scene, const std::optional<SurfaceHit>& hit) {
+  if (!hit) return words("nothing: the background", "什么也没有击中：背景");
+  return words("hit at t = ", "在 t = ") + text(hit->t_hit) + words(", point ", " 处击中，交点 ") + text(hit->point) +
+         words(", ", "，") + material_text(words, scene, *hit);
+}
+// A shadow ray's answer in words.
+inline std::string blocked_text(const Words& words, bool blocked) {
+  return blocked ? words("blocked", "被遮挡") : words("clear", "没有被遮挡");
+}
+// What a shadow ray's answer that is not the contract's means, when the ray itself is right.
+inline std::string shadow_answer_note(const Words& words) {
+  return words("your geometry (stages 02-05) answers this shadow ray otherwise than the contract's exact tests",
+               "你的几何（阶段 02-05）对这条阴影光线的回答与契约的精确测试不同");
+}
+// What a bounce or secondary ray's closest hit that is not the contract's means.
+inline std::string another_hit_note(const Words& words) {
+  return words("your geometry (stages 02-05: spheres, triangles, boxes, trees) finds another hit",
+               "你的几何（阶段 02-05：球、三角形、包围盒、树）找到了另一个交点");
+}
+
 // Agreement within float rounding: relative `relative` of the larger magnitude, or 1e-5 near 0.
 inline bool near(double a, double b, double relative = 1e-4) {
   if (!std::isfinite(a) || !std::isfinite(b)) return a == b;
@@ -68,6 +95,13 @@ inline bool near(const std::optional<TriangleHit>& a, const std::optional<Triang
   return a.has_value() == b.has_value() &&
          (!a || (near(a->t_hit, b->t_hit) && std::fabs(a->barycentric_b1 - b->barycentric_b1) <= 1e-4 &&
                  std::fabs(a->barycentric_b2 - b->barycentric_b2) <= 1e-4));
+}
+
+// Your geometry's closest hit is the contract's: both none, or the same t (within rounding) and
+// material.
+inline bool same_closest_hit(const std::optional<SurfaceHit>& yours, const std::optional<SurfaceHit>& expected) {
+  return yours.has_value() == expected.has_value() &&
+         (!expected || (near(yours->t_hit, expected->t_hit) && yours->material == expected->material));
 }
 
 // Your function's answer, or nullopt with `not_written` set when it is a stub.

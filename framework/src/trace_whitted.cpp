@@ -13,6 +13,7 @@
 #include "raylab/stages/02_sphere.h"
 #include "raylab/stages/03_triangle.h"
 
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,10 @@ using namespace trace_text;
 namespace {
 
 // At most this many rays after the camera ray are traced (a glass sphere doubles them at each
-// bounce): the first ones, in the order the renderer traces them.
+// bounce): the first ones, in the order the renderer traces them; and along each ray whose answer
+// differs, at most this many of the primitive tests that differ.
 constexpr int kMostWhittedRays = 24;
+constexpr int kMostDifferingTestsPerRay = 8;
 
 struct WhittedTracer {
   const Scene& scene;
@@ -37,18 +40,10 @@ struct WhittedTracer {
   int rays = 0, surfaces = 0;
   bool cut = false;
 
-  std::string hit_text(const std::optional<SurfaceHit>& hit) const {
-    if (!hit) return words("nothing: the background", "什么也没有击中：背景");
-    const Material& material = scene.materials[hit->material];
-    return words("hit at t = ", "在 t = ") + text(hit->t_hit) + words(", point ", " 处击中，交点 ") + text(hit->point) +
-           words(", ", "，") +
-           (material.name.empty() ? words("material ", "材质 ") + std::to_string(hit->material)
-                                  : words("material '", "材质 '") + material.name + "'");
-  }
-
   // The sphere and triangle tests along `ray` whose answers differ from the contract's (a stub
-  // once), as steps of stages 02 and 03.
+  // once, at most kMostDifferingTestsPerRay), as steps of stages 02 and 03.
   void differing_primitive_tests(const Ray& ray, const std::string& at) {
+    int listed = 0;
     const auto sphere_test = settings.yours.sphere ? settings.yours.sphere : intersect_ray_sphere;
     const auto triangle_test = settings.yours.triangle ? settings.yours.triangle : intersect_ray_triangle;
     const auto t_text = [&](const std::optional<float>& t) {
@@ -60,6 +55,7 @@ struct WhittedTracer {
       const std::optional<std::optional<float>> got = yours([&] { return sphere_test(ray, sphere.center, sphere.radius); }, stub);
       const std::optional<float> expected = contract.sphere(ray, sphere.center, sphere.radius);
       if (!stub && near(*got, expected)) continue;
+      if (listed++ == kMostDifferingTestsPerRay) return;
       trace.steps.emplace_back("02_sphere", "intersect_ray_sphere",
                                at + words(": ", "：") + "intersect_ray_sphere(ray, " + words("center ", "球心 ") +
                                    text(sphere.center) + ", " + words("radius ", "半径 ") + text(sphere.radius) +
@@ -77,8 +73,11 @@ struct WhittedTracer {
         const std::optional<std::optional<TriangleHit>> got = yours([&] { return triangle_test(ray, p0, p1, p2); }, stub);
         const std::optional<TriangleHit> expected = contract.triangle(ray, p0, p1, p2);
         if (!stub && near(*got, expected)) continue;
+        if (listed++ == kMostDifferingTestsPerRay) return;
         const auto triangle_text = [&](const std::optional<TriangleHit>& hit) {
-          return hit ? t_text(hit->t_hit) : words("no hit", "没有击中");
+          return hit ? t_text(hit->t_hit) + words(", b1 = ", "，b1 = ") + text(hit->barycentric_b1) +
+                           words(", b2 = ", "，b2 = ") + text(hit->barycentric_b2)
+                     : words("no hit", "没有击中");
         };
         const std::string name = mesh.name.empty() ? std::to_string(m) : "\"" + mesh.name + "\"";
         trace.steps.emplace_back("03_triangle", "intersect_ray_triangle",
@@ -104,20 +103,16 @@ struct WhittedTracer {
     ++rays;
     const std::optional<SurfaceHit> hit = your_geometry.intersect(ray);
     const std::optional<SurfaceHit> expected = contract_geometry.intersect(ray);
-    const bool agrees = hit.has_value() == expected.has_value() &&
-                        (!expected || (near(hit->t_hit, expected->t_hit) && hit->material == expected->material));
+    const bool agrees = same_closest_hit(hit, expected);
     const std::string at = kind_text + " (" + ray_text(words, ray) + ")";
     if (!agrees) differing_primitive_tests(ray, kind_text);
     // The surface your hit reaches is numbered as the steps after it name it.
     const int reached = surfaces;
     const std::string surface_text = hit ? words(" (surface ", "（表面 ") + std::to_string(reached) + words(")", "）") : "";
-    TraceStep step{"", "", at + words(": the closest hit", "：最近交点"), hit_text(hit) + surface_text,
-                   hit_text(expected)};
+    TraceStep step{"", "", at + words(": the closest hit", "：最近交点"), hit_text(words, scene, hit) + surface_text,
+                   hit_text(words, scene, expected)};
     step.agrees = agrees;
-    if (!agrees)
-      step.note = words("your geometry (stages 02-05: spheres, triangles, boxes, trees) finds another hit along this "
-                        "ray than the contract's exact tests",
-                        "你的几何（阶段 02-05：球、三角形、包围盒、树）沿这条光线找到的交点与契约的精确测试不同");
+    if (!agrees) step.note = another_hit_note(words);
     trace.steps.push_back(step);
     trace.segments.push_back({ray.origin, ray.origin + ray.direction * (hit ? hit->t_hit : miss_length(scene)),
                               TraceSegment::Kind::Bounce});
@@ -172,13 +167,10 @@ struct WhittedTracer {
       const std::string kind_text = at + words(": the shadow ray towards light ", "：射向光源 ") + std::to_string(i) +
                                     words("", " 的阴影光线");
       if (blocked != expected) differing_primitive_tests(shadow, kind_text);
-      const auto answer = [&](bool b) { return b ? words("blocked", "被遮挡") : words("clear", "没有被遮挡"); };
       TraceStep step{"", "", kind_text + " (" + ray_text(words, shadow) + ", t_max " + text(shadow.t_max) + ")",
-                     answer(blocked), answer(expected)};
+                     blocked_text(words, blocked), blocked_text(words, expected)};
       step.agrees = blocked == expected;
-      if (!step.agrees)
-        step.note = words("your geometry (stages 02-05) answers this shadow ray otherwise than the contract's exact tests",
-                          "你的几何（阶段 02-05）对这条阴影光线的回答与契约的精确测试不同");
+      if (!step.agrees) step.note = shadow_answer_note(words);
       trace.steps.push_back(step);
       trace.segments.push_back({shadow.origin, light.position, TraceSegment::Kind::Shadow});
     }
@@ -195,7 +187,21 @@ void trace_whitted(const Scene& scene, const Ray& camera_ray, const TracingFunct
   const std::optional<SurfaceHit> hit = your_geometry.intersect(camera_ray);
   if (!hit) return;
   WhittedTracer tracer{scene, settings, contract, your_geometry, contract_geometry, trace};
-  tracer.surface(camera_ray, *hit, 0);
+  try {
+    tracer.surface(camera_ray, *hit, 0);
+  } catch (const NotImplemented&) {
+    throw;  // a stub: marked at its first call along the camera ray
+  } catch (const std::exception& e) {
+    // Your geometry threw along a ray after the camera ray: the rays after it are not traced.
+    trace.steps.emplace_back("", "",
+                             tracer.words("the next ray after the camera ray", "相机光线之后的下一条光线"),
+                             tracer.words("threw: ", "抛出了异常：") + e.what(),
+                             tracer.words("an answer", "一个回答"),
+                             tracer.words("your geometry (stages 02-05) threw; the rays after it are not traced",
+                                          "你的几何（阶段 02-05）抛出了异常；之后的光线没有跟踪"),
+                             false);
+    return;
+  }
   if (tracer.cut)
     trace.steps.emplace_back("", "",
                              tracer.words("(the rays after these are not traced: at most " +

@@ -75,8 +75,8 @@ struct TraceSettings {
   // The functions traced as yours: each left nullptr is the stage's own that this program links
   // (a grader's stage server gives its own for the stages it does not grade, as its pictures use).
   TracingFunctions yours;
-  // The words of the trace's steps in Simplified Chinese, the camera ray's and the Monte Carlo
-  // part's alike (values and code as they are).
+  // The words of the trace's steps in Simplified Chinese, every part's alike (values and code as
+  // they are).
   bool chinese = false;
 };
 
@@ -95,8 +95,11 @@ struct PixelTrace {
   std::vector<TraceStep> steps;
   // Not listed: missed by yours and the contract alike, or a stub's calls after its first.
   int untouched_spheres = 0, untouched_triangles = 0;
-  // The rays your code traced for this sample: the camera ray to your closest hit; with direct
-  // and path, the path's rays and shadow rays as your code made them.
+  // Steps were left out after the first ones (a grader's report keeps a bounded number).
+  bool steps_cut = false;
+  // The rays traced for this sample: the camera ray to your closest hit; with whitted, the
+  // reflection, refraction and shadow rays after it (the framework's, from your hits); with
+  // direct, path and mis, the path's rays and shadow rays as your code made them.
   std::vector<TraceSegment> segments;
   // The index of the first step that disagrees, or -1.
   int first_disagreement() const;
