@@ -18,8 +18,10 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace raylab {
 namespace {
@@ -159,6 +161,55 @@ TEST(Image, EightBitFilesHoldTheBytesOpenImageIoWrote) {
       }
   EXPECT_EQ(wrong, 0) << "values written otherwise than OpenImageIO wrote them, out of 2 x "
                       << 3 * input.pixels().size();
+}
+
+// The PPM writer's bytes (image.cpp converts a picture through a table of runs of floats) are
+// srgb_byte's for every value: each float within 3 of a step (from 0 to 1 by their bits) and at
+// each end of the table's runs of 2^16 floats, 0 and 1, values outside [0, 1], infinities, NaN,
+// and 100 000 random values in [0, 1].
+TEST(Image, PpmBytesAreSrgbByteOfEveryValue) {
+  std::vector<float> values = {0.0f, -0.0f, 1.0f, -1.0f, 2.0f, 1e30f, -1e30f, std::nanf(""),
+                               std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                               std::numeric_limits<float>::denorm_min(), std::nextafter(1.0f, 0.0f)};
+  const auto from_bits = [](std::uint32_t b) {
+    float value;
+    std::memcpy(&value, &b, sizeof value);
+    return value;
+  };
+  for (std::uint32_t run = 0; run < (0x3f800000u >> 16); ++run)
+    for (const std::uint32_t b : {run << 16, (run << 16) | 0xffffu}) values.push_back(from_bits(b));
+  for (float v = 0.0f; v < 1.0f;) {  // each step from 0 to 1, found by srgb_byte itself
+    std::uint32_t low = bits_of(v), high = 0x3f800000u;
+    const std::uint8_t byte = srgb_byte(v);
+    while (high - low > 1) {  // the first float past v with another byte
+      const std::uint32_t middle = low + (high - low) / 2;
+      (srgb_byte(from_bits(middle)) == byte ? low : high) = middle;
+    }
+    for (std::uint32_t b = high - 3; b <= high + 3; ++b) values.push_back(from_bits(b));
+    v = from_bits(high);
+  }
+  std::uint64_t state = 12345;
+  for (int i = 0; i < 100000; ++i) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    values.push_back(static_cast<float>(state >> 40) / static_cast<float>(1ull << 24));
+  }
+  while (values.size() % 3 != 0) values.push_back(0.5f);
+  const int pixels = static_cast<int>(values.size() / 3);
+  Image image(pixels, 1);
+  std::memcpy(image.data(), values.data(), values.size() * sizeof(float));
+  const std::filesystem::path path = scratch_dir() / "every_value.ppm";
+  write_image(image, path.string());
+  const std::string ppm = read_bytes(path, 1 << 24);
+  ASSERT_GE(ppm.size(), values.size());
+  const std::size_t header = ppm.size() - values.size();
+  int wrong = 0;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (static_cast<std::uint8_t>(ppm[header + i]) != srgb_byte(values[i]) && ++wrong <= 5)
+      ADD_FAILURE() << "linear " << values[i] << " (bits 0x" << std::hex << bits_of(values[i]) << std::dec
+                    << "): wrote " << int(static_cast<std::uint8_t>(ppm[header + i])) << ", srgb_byte gives "
+                    << int(srgb_byte(values[i]));
+  EXPECT_EQ(wrong, 0) << "of " << values.size();
+  EXPECT_GT(values.size(), 130000u);
 }
 
 TEST(Image, OnlyExrIsWrittenThroughOpenImageIo) {

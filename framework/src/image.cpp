@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -73,12 +74,51 @@ constexpr float kSrgbByteStarts[255] = {
     0.9429903f, 0.95163417f, 0.96032387f, 0.9690599f, 0.9778419f, 0.9866704f, 0.9955453f,
 };
 
+// srgb_byte for a whole picture, without its binary search per value (a fifth of a Whitted
+// render's whole process): the byte at the start of each run of 2^16 floats from 0 up to 1, by
+// their bits (16 256 runs), and as a run holds at most one of the steps (the closest two are
+// 100 923 floats apart: checked here, else every value takes srgb_byte), one comparison finishes
+// it. Outside [0, 1) (negative, 1 and above, NaN): srgb_byte itself. The same bytes as srgb_byte
+// for every float.
+class SrgbTable {
+ public:
+  static constexpr int kShift = 16;
+  static constexpr std::uint32_t kOne = 0x3f800000u;  // the bits of 1.0f
+  SrgbTable() : first_(kOne >> kShift) {
+    for (std::size_t k = 0; k + 1 < std::size(kSrgbByteStarts); ++k)
+      if ((bits(kSrgbByteStarts[k]) >> kShift) == (bits(kSrgbByteStarts[k + 1]) >> kShift)) return;  // (never)
+    for (std::uint32_t run = 0; run < first_.size(); ++run) first_[run] = srgb_byte(from_bits(run << kShift));
+    usable_ = true;
+  }
+  std::uint8_t operator()(float linear) const {
+    const std::uint32_t b = bits(linear);
+    if (!usable_ || b >= kOne) return srgb_byte(linear);  // (negative values and NaN have the top bits set)
+    const std::uint8_t first = first_[b >> kShift];
+    return first < 255 && linear >= kSrgbByteStarts[first] ? static_cast<std::uint8_t>(first + 1) : first;
+  }
+
+ private:
+  static std::uint32_t bits(float value) {
+    std::uint32_t b;
+    std::memcpy(&b, &value, sizeof b);
+    return b;
+  }
+  static float from_bits(std::uint32_t b) {
+    float value;
+    std::memcpy(&value, &b, sizeof value);
+    return value;
+  }
+  std::vector<std::uint8_t> first_;
+  bool usable_ = false;
+};
+
 // The pixels as 8-bit sRGB, row by row, R G B.
 std::vector<unsigned char> srgb_bytes(const Image& image) {
-  std::vector<unsigned char> bytes;
-  bytes.reserve(image.pixels().size() * 3);
+  static const SrgbTable to_byte;
+  std::vector<unsigned char> bytes(image.pixels().size() * 3);
+  unsigned char* out = bytes.data();
   for (const glm::vec3& pixel : image.pixels())
-    for (int c = 0; c < 3; ++c) bytes.push_back(srgb_byte(pixel[c]));
+    for (int c = 0; c < 3; ++c) *out++ = to_byte(pixel[c]);
   return bytes;
 }
 
@@ -105,6 +145,9 @@ png_image png_of(const Image& image) {
   png.width = static_cast<png_uint_32>(image.width());
   png.height = static_cast<png_uint_32>(image.height());
   png.format = PNG_FORMAT_RGB;
+  // Speed before size: the Whitted scene's 1280x960 PNG is written in 1 ms instead of 22 ms
+  // (0.125 s against 0.147 s for the whole render), 66 KB instead of 42 KB; the pixels the same.
+  png.flags = PNG_IMAGE_FLAG_FAST;
   return png;
 }
 std::string png_reason(const png_image& png) { return png.message[0] != '\0' ? png.message : "libpng gave no reason"; }
