@@ -107,18 +107,7 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
   // The steps' words in the trace's language.
   const Words words{settings.chinese};
   const std::string not_written = words("not written yet", "尚未编写");
-  // A mesh as the steps name it: by its name, else its index.
-  const auto mesh_name = [&](std::size_t m) {
-    return scene.meshes[m].name.empty() ? std::to_string(m) : "\"" + scene.meshes[m].name + "\"";
-  };
-  const auto t_text = [&](const std::optional<float>& t) {
-    return t ? words("hit at t = ", "在 t = ") + text(*t) + words("", " 处击中") : words("no hit", "没有击中");
-  };
-  const auto triangle_text = [&](const std::optional<TriangleHit>& hit) {
-    return hit ? t_text(hit->t_hit) + words(", b1 = ", "，b1 = ") + text(hit->barycentric_b1) +
-                     words(", b2 = ", "，b2 = ") + text(hit->barycentric_b2)
-               : words("no hit", "没有击中");
-  };
+  const auto mesh_name = [&](std::size_t m) { return mesh_text(scene, m); };
   const auto your_camera_ray = settings.yours.camera_ray ? settings.yours.camera_ray : generate_camera_ray;
   const auto your_sphere_test = settings.yours.sphere ? settings.yours.sphere : intersect_ray_sphere;
   const auto your_triangle_test = settings.yours.triangle ? settings.yours.triangle : intersect_ray_triangle;
@@ -163,39 +152,30 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       continue;
     }
     sphere_stub_shown = sphere_stub_shown || stub;
-    TraceStep step{"02_sphere", "intersect_ray_sphere",
-                   "intersect_ray_sphere(ray, " + words("center ", "球心 ") + text(sphere.center) + ", " +
-                       words("radius ", "半径 ") + text(sphere.radius) + ")   [" + what + "]",
-                   stub ? not_written : t_text(*got), t_text(expected)};
+    TraceStep step{"02_sphere", "intersect_ray_sphere", sphere_call_text(words, sphere, i),
+                   stub ? not_written : t_text(words, *got), t_text(words, expected)};
     step.agrees = !stub && near(*got, expected);
     trace.steps.push_back(step);
   }
-  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-    const TriangleMesh& mesh = scene.meshes[m];
-    for (std::size_t k = 0; k < mesh.triangle_count(); ++k) {
-      const glm::vec3& p0 = mesh.positions[mesh.indices[3 * k]];
-      const glm::vec3& p1 = mesh.positions[mesh.indices[3 * k + 1]];
-      const glm::vec3& p2 = mesh.positions[mesh.indices[3 * k + 2]];
-      bool stub = false;
-      const std::optional<std::optional<TriangleHit>> got =
-          yours([&] { return your_triangle_test(ray, p0, p1, p2); }, stub);
-      const std::optional<TriangleHit> expected = contract.triangle(ray, p0, p1, p2);
-      const std::string what = settings.chinese ? "网格 " + mesh_name(m) + " 的三角形 " + std::to_string(k)
-                                                : "triangle " + std::to_string(k) + " of mesh " + mesh_name(m);
-      if (got && *got) record(closest_yours, (*got)->t_hit, what, std::nullopt, m, k);
-      if (expected) record(closest_contract, expected->t_hit, what, std::nullopt, m, k);
-      if ((!stub && !*got && !expected) || (stub && triangle_stub_shown)) {
-        ++trace.untouched_triangles;
-        continue;
-      }
-      triangle_stub_shown = triangle_stub_shown || stub;
-      TraceStep step{"03_triangle", "intersect_ray_triangle",
-                     "intersect_ray_triangle(ray, " + text(p0) + ", " + text(p1) + ", " + text(p2) + ")   [" + what + "]",
-                     stub ? not_written : triangle_text(*got), triangle_text(expected)};
-      step.agrees = !stub && near(*got, expected);
-      trace.steps.push_back(step);
+  for_each_triangle(scene, [&](std::size_t m, std::size_t k, const glm::vec3& p0, const glm::vec3& p1,
+                               const glm::vec3& p2) {
+    bool stub = false;
+    const std::optional<std::optional<TriangleHit>> got = yours([&] { return your_triangle_test(ray, p0, p1, p2); }, stub);
+    const std::optional<TriangleHit> expected = contract.triangle(ray, p0, p1, p2);
+    const std::string what = settings.chinese ? "网格 " + mesh_name(m) + " 的三角形 " + std::to_string(k)
+                                              : "triangle " + std::to_string(k) + " of mesh " + mesh_name(m);
+    if (got && *got) record(closest_yours, (*got)->t_hit, what, std::nullopt, m, k);
+    if (expected) record(closest_contract, expected->t_hit, what, std::nullopt, m, k);
+    if ((!stub && !*got && !expected) || (stub && triangle_stub_shown)) {
+      ++trace.untouched_triangles;
+      return;
     }
-  }
+    triangle_stub_shown = triangle_stub_shown || stub;
+    TraceStep step{"03_triangle", "intersect_ray_triangle", triangle_call_text(words, p0, p1, p2, k, mesh_name(m)),
+                   stub ? not_written : triangle_hit_text(words, *got), triangle_hit_text(words, expected)};
+    step.agrees = !stub && near(*got, expected);
+    trace.steps.push_back(step);
+  });
 
   // The closest hit, as the renderer picks it from the answers above.
   const std::string background = words("nothing: the background", "什么也没有击中：背景");

@@ -48,6 +48,43 @@ inline std::string ray_text(const Words& words, const Ray& ray) {
   return words("origin ", "起点 ") + text(ray.origin) + words("  direction ", "  方向 ") + text(ray.direction);
 }
 
+// A primitive test's answer in words: its t, and a triangle's barycentrics.
+inline std::string t_text(const Words& words, const std::optional<float>& t) {
+  return t ? words("hit at t = ", "在 t = ") + text(*t) + words("", " 处击中") : words("no hit", "没有击中");
+}
+inline std::string triangle_hit_text(const Words& words, const std::optional<TriangleHit>& hit) {
+  return hit ? t_text(words, hit->t_hit) + words(", b1 = ", "，b1 = ") + text(hit->barycentric_b1) +
+                   words(", b2 = ", "，b2 = ") + text(hit->barycentric_b2)
+             : words("no hit", "没有击中");
+}
+// A sphere test's call, and a triangle test's, as the steps show them.
+inline std::string sphere_call_text(const Words& words, const Sphere& sphere, std::size_t index) {
+  return "intersect_ray_sphere(ray, " + words("center ", "球心 ") + text(sphere.center) + ", " +
+         words("radius ", "半径 ") + text(sphere.radius) + ")   [" + words("sphere ", "球 ") + std::to_string(index) +
+         "]";
+}
+// (`mesh`: the mesh as the steps name it, by its name in quotes, else its index)
+inline std::string triangle_call_text(const Words& words, const glm::vec3& p0, const glm::vec3& p1,
+                                      const glm::vec3& p2, std::size_t triangle, const std::string& mesh) {
+  return "intersect_ray_triangle(ray, " + text(p0) + ", " + text(p1) + ", " + text(p2) + ")   [" +
+         words("triangle " + std::to_string(triangle) + " of mesh " + mesh,
+               "网格 " + mesh + " 的三角形 " + std::to_string(triangle)) +
+         "]";
+}
+inline std::string mesh_text(const Scene& scene, std::size_t m) {
+  return scene.meshes[m].name.empty() ? std::to_string(m) : "\"" + scene.meshes[m].name + "\"";
+}
+// Each triangle of the scene's meshes in turn: visit(mesh index, triangle index, p0, p1, p2).
+template <typename Visit>
+void for_each_triangle(const Scene& scene, const Visit& visit) {
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const TriangleMesh& mesh = scene.meshes[m];
+    for (std::size_t k = 0; k < mesh.triangle_count(); ++k)
+      visit(m, k, mesh.positions[mesh.indices[3 * k]], mesh.positions[mesh.indices[3 * k + 1]],
+            mesh.positions[mesh.indices[3 * k + 2]]);
+  }
+}
+
 // A hit's material in words, and a ray's closest hit (or the background).
 inline std::string material_text(const Words& words, const Scene& scene, const SurfaceHit& hit) {
   const Material& material = scene.materials[hit.material];

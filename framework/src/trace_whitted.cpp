@@ -43,54 +43,37 @@ struct WhittedTracer {
   // The sphere and triangle tests along `ray` whose answers differ from the contract's (a stub
   // once, at most kMostDifferingTestsPerRay), as steps of stages 02 and 03.
   void differing_primitive_tests(const Ray& ray, const std::string& at) {
-    int listed = 0;
     const auto sphere_test = settings.yours.sphere ? settings.yours.sphere : intersect_ray_sphere;
     const auto triangle_test = settings.yours.triangle ? settings.yours.triangle : intersect_ray_triangle;
-    const auto t_text = [&](const std::optional<float>& t) {
-      return t ? words("hit at t = ", "在 t = ") + text(*t) + words("", " 处击中") : words("no hit", "没有击中");
-    };
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+    const std::string not_written = words("not written yet", "尚未编写"), colon = words(": ", "：");
+    int listed = 0;
+    bool stub_listed = false;
+    for (std::size_t i = 0; i < scene.spheres.size() && listed < kMostDifferingTestsPerRay && !stub_listed; ++i) {
       const Sphere& sphere = scene.spheres[i];
       bool stub = false;
       const std::optional<std::optional<float>> got = yours([&] { return sphere_test(ray, sphere.center, sphere.radius); }, stub);
       const std::optional<float> expected = contract.sphere(ray, sphere.center, sphere.radius);
       if (!stub && near(*got, expected)) continue;
-      if (listed++ == kMostDifferingTestsPerRay) return;
-      trace.steps.emplace_back("02_sphere", "intersect_ray_sphere",
-                               at + words(": ", "：") + "intersect_ray_sphere(ray, " + words("center ", "球心 ") +
-                                   text(sphere.center) + ", " + words("radius ", "半径 ") + text(sphere.radius) +
-                                   ")   [" + words("sphere ", "球 ") + std::to_string(i) + "]",
-                               stub ? words("not written yet", "尚未编写") : t_text(*got), t_text(expected), "", false);
-      if (stub) break;
+      ++listed;
+      stub_listed = stub;
+      trace.steps.emplace_back("02_sphere", "intersect_ray_sphere", at + colon + sphere_call_text(words, sphere, i),
+                               stub ? not_written : t_text(words, *got), t_text(words, expected), "", false);
     }
-    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-      const TriangleMesh& mesh = scene.meshes[m];
-      for (std::size_t k = 0; k < mesh.triangle_count(); ++k) {
-        const glm::vec3& p0 = mesh.positions[mesh.indices[3 * k]];
-        const glm::vec3& p1 = mesh.positions[mesh.indices[3 * k + 1]];
-        const glm::vec3& p2 = mesh.positions[mesh.indices[3 * k + 2]];
-        bool stub = false;
-        const std::optional<std::optional<TriangleHit>> got = yours([&] { return triangle_test(ray, p0, p1, p2); }, stub);
-        const std::optional<TriangleHit> expected = contract.triangle(ray, p0, p1, p2);
-        if (!stub && near(*got, expected)) continue;
-        if (listed++ == kMostDifferingTestsPerRay) return;
-        const auto triangle_text = [&](const std::optional<TriangleHit>& hit) {
-          return hit ? t_text(hit->t_hit) + words(", b1 = ", "，b1 = ") + text(hit->barycentric_b1) +
-                           words(", b2 = ", "，b2 = ") + text(hit->barycentric_b2)
-                     : words("no hit", "没有击中");
-        };
-        const std::string name = mesh.name.empty() ? std::to_string(m) : "\"" + mesh.name + "\"";
-        trace.steps.emplace_back("03_triangle", "intersect_ray_triangle",
-                                 at + words(": ", "：") + "intersect_ray_triangle(ray, " + text(p0) + ", " + text(p1) +
-                                     ", " + text(p2) + ")   [" +
-                                     words("triangle " + std::to_string(k) + " of mesh " + name,
-                                           "网格 " + name + " 的三角形 " + std::to_string(k)) +
-                                     "]",
-                                 stub ? words("not written yet", "尚未编写") : triangle_text(*got),
-                                 triangle_text(expected), "", false);
-        if (stub) return;
-      }
-    }
+    stub_listed = false;
+    for_each_triangle(scene, [&](std::size_t m, std::size_t k, const glm::vec3& p0, const glm::vec3& p1,
+                                 const glm::vec3& p2) {
+      if (listed >= kMostDifferingTestsPerRay || stub_listed) return;
+      bool stub = false;
+      const std::optional<std::optional<TriangleHit>> got = yours([&] { return triangle_test(ray, p0, p1, p2); }, stub);
+      const std::optional<TriangleHit> expected = contract.triangle(ray, p0, p1, p2);
+      if (!stub && near(*got, expected)) return;
+      ++listed;
+      stub_listed = stub;
+      trace.steps.emplace_back("03_triangle", "intersect_ray_triangle",
+                               at + colon + triangle_call_text(words, p0, p1, p2, k, mesh_text(scene, m)),
+                               stub ? not_written : triangle_hit_text(words, *got), triangle_hit_text(words, expected),
+                               "", false);
+    });
   }
 
   // One bounce ray: its closest hit by your geometry and by the contract's; then, along your hit,
