@@ -154,6 +154,13 @@ SceneGeometry::TreeWalk SceneGeometry::walk_to(const Ray& ray, std::optional<std
                                                std::size_t triangle) const {
   TreeWalk walk;
   Query::Watch watch;
+  // The part of the meshes that holds triangles_[i], or meshes_.size().
+  const auto part_of = [&](std::uint32_t i) {
+    std::uint32_t p = 0;
+    while (p < meshes_.size() && !(i >= meshes_[p].first_triangle && i - meshes_[p].first_triangle < meshes_[p].triangle_count))
+      ++p;
+    return p;
+  };
   // The primitive as the geometry holds it, and the object (a sphere, or a part of the meshes).
   std::optional<std::uint32_t> object, in_part;
   if (sphere) {
@@ -164,11 +171,11 @@ SceneGeometry::TreeWalk SceneGeometry::walk_to(const Ray& ray, std::optional<std
     for (std::uint32_t i = 0; i < triangles_.size() && !object; ++i) {
       if (triangles_[i].mesh != mesh || triangles_[i].first_index != 3 * triangle) continue;
       watch.triangle = i;
-      for (std::uint32_t p = 0; p < meshes_.size(); ++p)
-        if (i >= meshes_[p].first_triangle && i - meshes_[p].first_triangle < meshes_[p].triangle_count) {
-          object = static_cast<std::uint32_t>(spheres_.size()) + p;
-          in_part = i - meshes_[p].first_triangle;
-        }
+      const std::uint32_t p = part_of(i);
+      if (p < meshes_.size()) {
+        object = static_cast<std::uint32_t>(spheres_.size()) + p;
+        in_part = i - meshes_[p].first_triangle;
+      }
     }
   }
   // The nodes from a tree's root to the leaf that holds primitive `primitive`, at depth `depth` on.
@@ -242,10 +249,7 @@ SceneGeometry::TreeWalk SceneGeometry::walk_to(const Ray& ray, std::optional<std
   for (const Query::Watch::Test& test : watch.order) {
     std::uint32_t tested_object = test.index;
     if (!test.is_sphere) {
-      std::uint32_t p = 0;
-      while (p < meshes_.size() && !(test.index >= meshes_[p].first_triangle &&
-                                     test.index - meshes_[p].first_triangle < meshes_[p].triangle_count))
-        ++p;
+      const std::uint32_t p = part_of(test.index);
       if (p == meshes_.size()) continue;
       tested_object = static_cast<std::uint32_t>(spheres_.size()) + p;
       if (object_tree && tested_object < object_leaf.size()) open(-1, object_leaf[tested_object], -1, objects_bvh_);

@@ -202,8 +202,7 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
   // Every leaf your traversal opened along the camera ray: each must be one the ray enters (the
   // exact slab test; a thick box it grazes may go either way), before the closest hit the tests
   // before it had found (stage 05's "skip what lies beyond the closest hit found so far").
-  const auto trace_leaves_opened = [&](const SceneGeometry::TreeWalk& walk, const Ray& camera_ray,
-                                       const auto& name_of_tree) {
+  const auto trace_leaves_opened = [&](const SceneGeometry::TreeWalk& walk, const Ray& camera_ray) {
     const SceneGeometry::LeafOpened* missed = nullptr;
     const SceneGeometry::LeafOpened* beyond = nullptr;
     int missed_count = 0, beyond_count = 0;
@@ -227,7 +226,7 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       }
     }
     const auto leaf_text = [&](const SceneGeometry::LeafOpened& leaf) {
-      return words("node ", "节点 ") + std::to_string(leaf.node) + words(" of ", "，") + name_of_tree(leaf.mesh) +
+      return words("node ", "节点 ") + std::to_string(leaf.node) + words(" of ", "，") + tree_name(leaf.mesh) +
              words(", box ", "，包围盒 ") + text(leaf.box.min) + " - " + text(leaf.box.max);
     };
     TraceStep step{"05_bvh", "intersect_bvh",
@@ -306,7 +305,7 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       trace.steps.push_back(step);
     }
     if (walk.path.empty()) return;
-    trace_leaves_opened(walk, camera_ray, tree_name);
+    trace_leaves_opened(walk, camera_ray);
     TraceStep tested{"05_bvh", "intersect_bvh",
                      words("the primitives your intersect_bvh tested along the camera ray",
                            "你的 intersect_bvh 沿相机光线测试的图元"),
