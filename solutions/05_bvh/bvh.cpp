@@ -1,13 +1,13 @@
 // Reference solution, stage 05_bvh (and the bonus 5b, binned SAH). The contract is in
 // assignments/05_bvh/bvh.cpp and docs/05_bvh.md.
 //
-// Beyond the contract, for speed (docs/performance.md): the builders move copies of the
-// primitives' boxes in the order being built (contiguous reads instead of an index lookup per
-// primitive), the SAH bins all three axes in one pass and gets the children's bounds from its
-// partition pass, grows boxes with SSE, prices the three axes' splits at once (one per SSE
-// lane) or, in nodes of few primitives, only the splits after used bins, trees of 64k
-// primitives and more build their top subtrees on several threads (all of it the same tree
-// bit for bit), and the traversal inlines the reference's own box test
+// Beyond the contract, for speed (docs/performance.md, "BVH build" and "BVH traversal"): the
+// builders move copies of the primitives' boxes in the order being built (contiguous reads
+// instead of an index lookup per primitive), the SAH bins all three axes in one pass and gets
+// the children's bounds from its partition pass, grows boxes with SSE, prices the three axes'
+// splits at once (one per SSE lane) or, in nodes of few primitives, only the splits after used
+// bins, trees of 64k primitives and more build their top subtrees on several threads (all of it
+// the same tree bit for bit), and the traversal inlines the reference's own box test
 // (solutions/04_box/box_slabs.h) and tests both children at their parent, and tests the
 // renderer's triangles with the reference's own stage-03 test inlined
 // (solutions/03_triangle/moller_trumbore.h; PrimitiveIntersector::triangles).

@@ -9,7 +9,7 @@
 // meets a vertex the triangles around it give t's an ulp apart and trees of other widths may
 // prune between them (as the 4-wide tree already does against the binary one): the course
 // scenes render to the same bits either way (tests/test_render.cpp). Not a stage and not part
-// of any student contract; docs/performance.md measures it.
+// of any student contract; docs/performance.md, "BVH traversal", measures it.
 #pragma once
 
 #include "../05_bvh/leaf_test.h"

@@ -125,7 +125,7 @@ constexpr int kBlockDimensions = 8;
 // The sampler computes two blocks at once: each block's numbers are one long chain of dependent
 // steps (the shuffle's Laine-Karras permutation, then the Sobol' table's gathers and the second
 // coordinate's permutation, four multiplies each), and two chains side by side take about the
-// time of one (docs/performance.md, "The seeds kept for a pixel's samples").
+// time of one (docs/performance.md, "The sampler").
 constexpr int kBlocksAtOnce = 2;
 constexpr int kDimensionsAtOnce = kBlocksAtOnce * kBlockDimensions;
 

@@ -76,10 +76,9 @@ class Sampler {
   // The numbers of the 16 dimensions 16k, ..., 16k + 15 that contain dimension_, computed
   // together (owen_sobol::fill_dimension_blocks: two blocks of eight dimensions, each in the lanes
   // of AVX2 where the CPU has it; the same numbers either way). A draw then reads them: hashing each
-  // dimension on its own was a fifth of a path's instructions (docs/performance.md, "The sampler's
-  // numbers eight dimensions at a time"). The blocks' seeds depend on the pixel, not on the
-  // sample: the first kSeedBlocksHeld blocks' are kept for the pixel's next samples ("The seeds
-  // kept for a pixel's samples").
+  // dimension on its own was a fifth of a path's instructions (docs/performance.md, "The
+  // sampler"). The blocks' seeds depend on the pixel, not on the sample: the first
+  // kSeedBlocksHeld blocks' are kept for the pixel's next samples (the same section).
   void fill_block();
   // Block `block`'s seeds for this pixel: kept, or (past those kept) computed into `scratch`.
   const owen_sobol::BlockSeeds& seeds_of_block(std::uint32_t block, owen_sobol::BlockSeeds& scratch);

@@ -112,8 +112,8 @@ struct PrimitiveIntersector {
   // renderer sets it when the primitives are a mesh's triangles tested with stage 03's
   // Moller-Trumbore: then triangles[primitive] is the triangle `test` would test, so that the
   // reference's traversal can run its own inlined test on a whole leaf instead of a call per
-  // triangle (docs/performance.md). A traversal that does so counts each triangle it tests
-  // in stats.primitives_tested, as a call of `test`.
+  // triangle (docs/performance.md, "How the reference traces a scene"). A traversal that does
+  // so counts each triangle it tests in stats.primitives_tested, as a call of `test`.
   const TriangleEdges* triangles = nullptr;
   // With `triangles`, optionally: the same triangles in the traversed tree's leaf order, for
   // the reference's test of a leaf's triangles four at a time (same answers, same counts).
