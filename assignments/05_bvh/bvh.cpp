@@ -30,8 +30,10 @@
 //   A Bvh over all the primitives (empty nodes and primitive_order if there are none) in which
 //   every leaf holds at most max_leaf_size primitives and only a node holding more than
 //   max_leaf_size is split: along the longest axis of its bounds, at the median of its
-//   primitives' centroids (the first child gets the smaller half, by count). Throw
-//   std::invalid_argument if max_leaf_size is outside 1 .. kBvhMaxLeafSize.
+//   primitives' centroids (the first child gets the smaller half, by count). Find the median
+//   with your select_kth (stage 04b_quickselect, raylab/stages/04b_quickselect.h): its items are
+//   the node's part of primitive_order, and its order compares two primitives' centroids along
+//   the axis. Throw std::invalid_argument if max_leaf_size is outside 1 .. kBvhMaxLeafSize.
 //
 // READ docs/05_bvh.md, section 2 (the build step by step).
 //
@@ -78,6 +80,7 @@
 //   and print no "testing every primitive" line.
 #include "raylab/error.h"
 #include "raylab/stages/04_box.h"
+#include "raylab/stages/04b_quickselect.h"
 #include "raylab/stages/05_bvh.h"
 
 #include <algorithm>

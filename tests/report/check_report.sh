@@ -5,7 +5,7 @@
 # CHECKER (check_report.cpp) check both against results.json.
 # Usage: [REMOVE_PICTURE=FILE] [STAGE_SERVER=PATH] check_report.sh GRADER CHECKER WORK LANG [CHECKER_OPTIONS...]
 # (STAGE_SERVER: the stage server GRADER grades, --stage-server; by default its own. STAGE_SERVERS_FOR:
-# "stage=path ...", each a --stage-server-for)
+# "stage=path ...", each a --stage-server-for. GRADE_STAGES: "id ...", grade only these, each a --stage)
 set -euo pipefail
 grader=$1 checker=$2 work=$(realpath -m "$3") lang=$4
 shift 4
@@ -29,6 +29,7 @@ mkdir -p "$work"
 servers=()
 [ -z "${STAGE_SERVER:-}" ] || servers+=(--stage-server "$STAGE_SERVER")
 for stage_server in ${STAGE_SERVERS_FOR:-}; do servers+=(--stage-server-for "$stage_server"); done
+for stage in ${GRADE_STAGES:-}; do servers+=(--stage "$stage"); done
 env -u LC_ALL -u LC_MESSAGES -u LANG -u LANGUAGE "$grader" ${servers[@]+"${servers[@]}"} --lang "$lang" --output "$work/grading-output" \
   --json "$work/results.json" --timeout 60 > "$work/grader.log" 2>&1 ||
   { cat "$work/grader.log"; echo "FAIL: the grader failed"; exit 1; }

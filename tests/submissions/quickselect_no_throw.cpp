@@ -1,0 +1,28 @@
+// Grader self-test submission (stage 04b_quickselect): mistake: k >= count returns without a
+// word instead of throwing std::invalid_argument. A correct quickselect otherwise.
+#include "raylab/stages/04b_quickselect.h"
+
+#include <random>
+#include <utility>
+
+namespace raylab {
+
+void select_kth(std::uint32_t* items, std::size_t count, std::size_t k, const ItemOrder& order) {
+  if (k >= count) return;
+  std::mt19937 random(5);
+  std::size_t begin = 0, end = count;
+  while (end - begin > 1) {
+    const std::uint32_t pivot = items[begin + random() % (end - begin)];
+    std::size_t less_end = begin, i = begin, greater_begin = end;
+    while (i < greater_begin) {
+      if (order.less(order.context, items[i], pivot)) std::swap(items[i++], items[less_end++]);
+      else if (order.less(order.context, pivot, items[i])) std::swap(items[i], items[--greater_begin]);
+      else ++i;
+    }
+    if (k < less_end) end = less_end;
+    else if (k >= greater_begin) begin = greater_begin;
+    else return;
+  }
+}
+
+}  // namespace raylab
