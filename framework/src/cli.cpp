@@ -5,11 +5,13 @@
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
 #include "raylab/trace.h"
+#include "raylab/tree_bench.h"
 #include "raylab/view_worker.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -75,7 +77,31 @@ struct RenderOptions {
   bool watertight = false;
   bool reference_stages = false;  // the program links solutions/ (LinkedStages::Reference)
   const ReferenceTreeFunctions* reference_tree = nullptr;  // with reference_stages: run_cli's
+  // --accel: which stage trees (StageTree's words); given, it also makes raylab-reference trace
+  // the reference's code of that tree as a student's program traces the student's.
+  std::string accel = "best";
+  bool accel_given = false;
 };
+
+// What --accel says, in one line (raylab render's first): the tree the geometry traces, and why
+// better ones were passed over.
+std::string tree_choice_text(const SceneGeometry::TreeChoice& choice) {
+  std::string text;
+  if (choice.small_sets_only) {
+    text = "raylab: tree: none needed, every set of primitives is small (4 or fewer): each is tested";
+  } else if (choice.reference) {
+    text = "raylab: tree: the reference's own (SAH, 8 or 4 wide)";
+  } else {
+    switch (choice.used) {
+      case StageTree::Median: text = "raylab: tree: your median BVH (stage 05_bvh; --accel median)"; break;
+      case StageTree::Sah: text = "raylab: tree: your SAH BVH (stage 05b_bvh_sah; --accel sah)"; break;
+      case StageTree::Wide: text = "raylab: tree: your 4-wide BVH (stage 05c_wide_bvh; --accel wide)"; break;
+      default: text = "raylab: tree: none, every primitive tested (--accel none)"; break;
+    }
+  }
+  for (const std::string& why : choice.passed_over) text += "\n  not used: " + why;
+  return text;
+}
 
 // --integrator and --roulette of raylab render and raylab trace: checked before the scene loads
 // (an unknown name is a usage error, whatever the scene), then the integrator that runs (the
@@ -128,8 +154,11 @@ RenderSetup render_setup(const RenderOptions& options) {
   settings.roulette = roulette;
   settings.threads = options.threads;
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
-  settings.tracing.reference_stages = options.reference_stages;
-  if (options.reference_stages) settings.tracing.reference_tree = options.reference_tree;
+  const std::optional<StageTree> tree = stage_tree_named(options.accel);
+  if (!tree) throw UsageError("--accel: unknown tree '" + options.accel + "' (known: best, median, sah, wide, none)");
+  settings.tracing.tree = *tree;
+  settings.tracing.reference_stages = options.reference_stages && !options.accel_given;
+  if (settings.tracing.reference_stages) settings.tracing.reference_tree = options.reference_tree;
   return {std::move(scene), settings};
 }
 
@@ -159,8 +188,12 @@ int run_render(const RenderOptions& options) {
   if (writes_through_openimageio(options.output_path) || writes_through_openimageio(options.variance_path) ||
       writes_through_openimageio(options.sample_rate_path))
     settings.on_workers_started = [&image_io_preload] { image_io_preload.emplace(); };
+  const auto start = std::chrono::steady_clock::now();
+  const SceneGeometry geometry = render_geometry(scene, settings);
+  if (!options.quiet) std::fprintf(stderr, "%s\n", tree_choice_text(geometry.tree_choice()).c_str());
   RenderStats stats;
-  const RenderOutput output = render_with_variance(scene, settings, &stats);
+  const RenderOutput output = render_with_variance(scene, geometry, settings, &stats);
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const Image& image = output.mean;
   write_image(image, options.output_path);
   if (!options.variance_path.empty()) write_image(output.variance_of_mean, options.variance_path);
@@ -176,11 +209,21 @@ int run_render(const RenderOptions& options) {
     samples = text;
   }
   if (options.samples_by_noise) samples += " on average, by noise";
+  // The trees' work per ray, where it was counted (not by the reference's own tree).
+  std::string work;
+  const std::uint64_t rays = stats.work.rays();
+  if (rays > 0 && stats.nodes_visited + stats.primitives_tested > 0) {
+    char text[96];
+    std::snprintf(text, sizeof text, "; %.1f nodes and %.1f primitives per ray",
+                  static_cast<double>(stats.nodes_visited) / static_cast<double>(rays),
+                  static_cast<double>(stats.primitives_tested) / static_cast<double>(rays));
+    work = text;
+  }
   if (!options.quiet)
-    std::fprintf(stderr, "rendered %s: %dx%d at %s in %.3f s on %d threads (%.2f Mrays/s) -> %s\n",
+    std::fprintf(stderr, "rendered %s: %dx%d at %s in %.3f s on %d threads (%.2f Mrays/s%s) -> %s\n",
                  options.scene_path.c_str(), image.width(), image.height(), samples.c_str(), stats.seconds,
-                 stats.threads, stats.seconds > 0 ? stats.work.rays() / stats.seconds * 1e-6 : 0.0,
-                 options.output_path.c_str());
+                 stats.threads, stats.seconds > 0 ? static_cast<double>(rays) / stats.seconds * 1e-6 : 0.0,
+                 work.c_str(), options.output_path.c_str());
   return kExitOk;
 }
 
@@ -324,11 +367,27 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
   render_command->add_option("--sample-rate", options.sample_rate_path,
                              "With --adaptive or --spp-by-noise: also write each pixel's samples as a fraction of --spp "
                              "(white: --spp of them)");
+  render_command
+      ->add_option("--accel", options.accel,
+                   "The trees that find the hits: median (stage 05), sah (05b), wide (05c), none (every primitive), or "
+                   "best (default: the last of wide, sah, median whose stages are written and that agree with "
+                   "testing every primitive on a sample of rays; the first line says which)")
+      ->check(CLI::IsMember({"best", "median", "sah", "wide", "none"}));
   render_command->add_flag("--watertight", options.watertight,
                            "Use the watertight triangle test (bonus stage 06_robustness) instead of stage 03's");
   render_command->add_flag("-q,--quiet", options.quiet,
                            "No progress (shown on stderr for renders longer than a second or two) and no summary line");
   TraceOptions trace_options;
+  TreeBenchOptions bench_options;
+  CLI::App* bench_command = app.add_subcommand(
+      "bench", "Your trees side by side on a scene: build time, rays per second, nodes and primitives per ray");
+  bench_command->add_option("scene", bench_options.scene_path, "Scene file (JSON), e.g. scenes/bunny.json")->required();
+  bench_command->add_option("--width", bench_options.width, "Camera rays: one through each pixel of this size (320)")
+      ->check(CLI::Range(1, 4096));
+  bench_command->add_option("--height", bench_options.height, "(240)")->check(CLI::Range(1, 4096));
+  if (stages == LinkedStages::Reference)
+    bench_command->add_flag("--save-reference", bench_options.save_reference,
+                            "Write the rows into reference_bench.json beside the scene (what raylab bench shows students)");
   CLI::App* trace_command = nullptr;
   if (contract) {
     trace_command = app.add_subcommand(
@@ -401,8 +460,12 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
     return kExitBadInput;
   }
 
+  options.accel_given = render_command->count("--accel") > 0;
+  bench_options.reference_program = options.reference_stages;
+  bench_options.reference_tree = reference_tree;
   try {
     if (*render_command) return run_render(options);
+    if (*bench_command) return run_tree_bench(bench_options);
     if (trace_command && *trace_command) return run_trace(trace_options, *contract);
     if (*view_command) return run_view(argv[0], view_command->remaining());
     if (*worker_command) return run_view_worker_command(worker_options, first_sample, frames_fd, send_tree);

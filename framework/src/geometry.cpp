@@ -21,6 +21,12 @@ SceneGeometry::Triangle::Triangle(const glm::vec3& p0_, const glm::vec3& p1_, co
   normal = has_area ? unnormalised / length : glm::vec3(0.0f);
 }
 
+SceneGeometry::Work SceneGeometry::take_thread_work() {
+  const Work work = thread_tree_work;
+  thread_tree_work = Work();
+  return work;
+}
+
 std::optional<BvhHit> SceneGeometry::traverse_the_4_wide_tree(const Ray& ray, bool any_hit,
                                                               TriangleHit* closest_hit) const {
   // The traversal tests the triangles itself (their columns) where it can; the calls below are

@@ -82,6 +82,7 @@ std::optional<float> SceneGeometry::intersect_every_object(const Ray& ray, Query
   const Triangle* const triangles = triangles_.data();
   const MeshPart* const meshes = meshes_.data();
   const std::size_t mesh_count = meshes_.size();
+  thread_tree_work.primitives += sphere_count;
   for (std::uint32_t i = 0; i < sphere_count; ++i) {
     if (const std::optional<float> t = intersect_sphere_(search, spheres[i].center, spheres[i].radius)) {
       search.t_max = *t;
@@ -99,6 +100,7 @@ std::optional<float> SceneGeometry::intersect_every_object(const Ray& ray, Query
       continue;
     }
     const std::uint32_t end = mesh.first_triangle + mesh.triangle_count;
+    thread_tree_work.primitives += mesh.triangle_count;
     for (std::uint32_t i = mesh.first_triangle; i < end; ++i) {
       const Triangle& tri = triangles[i];
       if (const std::optional<TriangleHit> hit = intersect_triangle_(search, tri.p0, tri.p1, tri.p2)) {
@@ -115,6 +117,7 @@ std::optional<float> SceneGeometry::intersect_every_object(const Ray& ray, Query
 // The any-hit form of the loops above: t_max never shrinks, so the ray is used as it is (no
 // copy: a shadow ray was just written field by field, and reading it back whole would stall).
 bool SceneGeometry::occluded_by_any_object(const Ray& ray, Query& query) const {
+  thread_tree_work.primitives += spheres_.size();  // at most: the loops stop at the first hit
   for (const Sphere& sphere : spheres_)
     if (intersect_sphere_(ray, sphere.center, sphere.radius)) return true;
   for (const MeshPart& mesh : meshes_) {
@@ -123,6 +126,7 @@ bool SceneGeometry::occluded_by_any_object(const Ray& ray, Query& query) const {
       continue;
     }
     const Triangle* const first = triangles_.data() + mesh.first_triangle;
+    thread_tree_work.primitives += mesh.triangle_count;
     for (std::uint32_t i = 0; i < mesh.triangle_count; ++i)
       if (intersect_triangle_(ray, first[i].p0, first[i].p1, first[i].p2)) return true;
   }

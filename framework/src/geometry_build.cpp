@@ -1,6 +1,8 @@
 // SceneGeometry, part 1 of 4: building. The scene's triangles in one array (per mesh, in
-// its BVH's leaf order), the per-mesh and top-level trees from the student's build_bvh, each
-// checked before use, and a probe that finds out at once whether stages 04 and 05 are stubs.
+// its BVH's leaf order), the per-mesh and top-level trees from the student's build_bvh (or
+// build_bvh_sah, or collapsed to 4 wide: StageTree), each checked before use, a probe that finds
+// out at once whether the stages they need are stubs, and for StageTree::Best the choice of the
+// best tree whose answers are those of testing every primitive.
 // (geometry_bvh_adapters.cpp: queries through the trees; geometry_brute_force.cpp: without
 // them; geometry.cpp: the public queries and the hit details.)
 #include "raylab/geometry.h"
@@ -13,6 +15,9 @@
 #include "raylab/stages/05c_wide_bvh.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -28,6 +33,34 @@ namespace {
 void check_tree(const Bvh& bvh, const std::vector<Bounds3>& boxes, const std::optional<std::string>& mesh) {
   if (const std::optional<BvhViolation> broken = find_bvh_violation(bvh, boxes, SceneGeometry::kBvhLeafSize))
     throw BrokenBvh(*broken, boxes.size(), mesh);
+}
+
+// A student's collapse_bvh4 may return a tree that would send intersect_bvh4 out of its arrays:
+// what is wrong with it, in words, or nullopt.
+std::optional<std::string> wide_tree_problem(const Bvh4& wide, std::size_t primitive_count) {
+  if (wide.primitive_order.size() != primitive_count)
+    return "its primitive_order holds " + std::to_string(wide.primitive_order.size()) + " entries, not " +
+           std::to_string(primitive_count);
+  std::vector<bool> seen(primitive_count, false);
+  for (const std::uint32_t primitive : wide.primitive_order) {
+    if (primitive >= primitive_count || seen[primitive]) return "its primitive_order is not each primitive once";
+    seen[primitive] = true;
+  }
+  if (wide.nodes.empty()) return primitive_count == 0 ? std::nullopt : std::optional<std::string>("it has no nodes");
+  for (std::size_t n = 0; n < wide.nodes.size(); ++n) {
+    const Bvh4Node& node = wide.nodes[n];
+    if (node.child_count < 1 || node.child_count > kBvh4Width)
+      return "node " + std::to_string(n) + " has " + std::to_string(node.child_count) + " children";
+    for (int slot = 0; slot < node.child_count; ++slot) {
+      const bool leaf = node.is_leaf(slot);
+      if (leaf && std::uint64_t(node.child[slot]) + node.primitive_count[slot] > primitive_count)
+        return "a leaf of node " + std::to_string(n) + " reaches past primitive_order";
+      if (!leaf && (node.child[slot] <= n || node.child[slot] >= wide.nodes.size()))
+        return "node " + std::to_string(n) + " names child node " + std::to_string(node.child[slot]) +
+               " (a child must come after its parent, within the nodes)";
+    }
+  }
+  return std::nullopt;
 }
 
 Bounds3 triangle_bounds(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
@@ -71,7 +104,14 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
   }
   if (acceleration == Acceleration::BvhAlways) brute_force_limit_ = 0;
   if (tracing.replaces_primitive_tests() && !tracing.keep_trees) acceleration = Acceleration::BruteForce;
-  if (acceleration != Acceleration::BruteForce) build_bvhs();
+  tree_choice_.reference = reference_trees_;
+  const StageTree tree = reference_trees_ ? StageTree::Sah : tracing.tree;
+  if (acceleration != Acceleration::BruteForce && tree != StageTree::None) {
+    if (tree == StageTree::Best)
+      build_best_trees(triangle_test, tracing);
+    else
+      build_bvhs(tree);
+  }
   only_one_tree_ = reference_trees_ && spheres_.empty() && meshes_.size() == 1 && !meshes_.front().bvh.nodes.empty();
   // bvh_count() is 0 when testing every primitive (brute force, or stage 05 a stub).
   hand_triangles_to_traversal_ = reference_trees_ && triangle_test == TriangleTest::MollerTrumbore && bvh_count() > 0;
@@ -95,7 +135,21 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
   }
 }
 
-void SceneGeometry::build_bvhs() {
+void SceneGeometry::build_bvhs(StageTree tree) {
+  tree_choice_.used = tree;
+  // Wide: over the SAH tree where stage 05b is written, else over the median one.
+  bool sah = reference_trees_ || tree == StageTree::Sah || tree == StageTree::Wide;
+  const auto build = [&](const std::vector<Bounds3>& boxes) {
+    if (sah && tree == StageTree::Wide) {
+      try {
+        return build_bvh_sah(boxes, kBvhLeafSize);
+      } catch (const NotImplemented& error) {
+        if (error.function() != "build_bvh_sah") throw;
+        sah = false;
+      }
+    }
+    return sah ? build_bvh_sah(boxes, kBvhLeafSize) : build_bvh(boxes, kBvhLeafSize);
+  };
   try {
     for (MeshPart& mesh : meshes_) {
       if (mesh.triangle_count <= brute_force_limit_) continue;
@@ -104,9 +158,10 @@ void SceneGeometry::build_bvhs() {
       boxes.reserve(mesh.triangle_count);
       for (std::uint32_t i = 0; i < mesh.triangle_count; ++i)
         boxes.push_back(triangle_bounds(first[i].p0, first[i].p1, first[i].p2));
-      mesh.bvh = reference_trees_ ? build_bvh_sah(boxes, kBvhLeafSize) : build_bvh(boxes, kBvhLeafSize);
+      mesh.bvh = build(boxes);
       const bool one_mesh = first->mesh == first[mesh.triangle_count - 1].mesh;
-      check_tree(mesh.bvh, boxes, one_mesh ? scene_.meshes[first->mesh].name : "the scene's triangles");
+      const std::string name = one_mesh ? scene_.meshes[first->mesh].name : "the scene's triangles";
+      check_tree(mesh.bvh, boxes, name);
       // Store the triangles in leaf order, so that a leaf's triangles are adjacent in memory;
       // the BVH's primitive_order then becomes the identity.
       std::vector<Triangle> reordered;
@@ -119,6 +174,11 @@ void SceneGeometry::build_bvhs() {
       if (reference_trees_) {
         if (reference_tree_functions_) mesh.reference_tree = reference_tree_functions_->build(mesh.bvh);
         if (!mesh.reference_tree) mesh.wide = collapse_bvh4(mesh.bvh);
+      } else if (tree == StageTree::Wide) {
+        mesh.wide = collapse_bvh4(mesh.bvh);
+        if (const std::optional<std::string> problem = wide_tree_problem(mesh.wide, mesh.triangle_count))
+          throw std::runtime_error("stage 05c_wide_bvh: collapse_bvh4 over the tree of " + name +
+                                   " returned a broken tree: " + *problem);
       }
     }
     const std::size_t object_count = spheres_.size() + meshes_.size();
@@ -128,34 +188,136 @@ void SceneGeometry::build_bvhs() {
       for (const Sphere& sphere : spheres_)
         boxes.emplace_back(sphere.center - glm::vec3(sphere.radius), sphere.center + glm::vec3(sphere.radius));
       for (const MeshPart& mesh : meshes_) boxes.push_back(mesh.bounds);
-      objects_bvh_ = build_bvh(boxes, kBvhLeafSize);
+      objects_bvh_ = reference_trees_ ? build_bvh(boxes, kBvhLeafSize) : build(boxes);
       check_tree(objects_bvh_, boxes, std::nullopt);
     }
-    // A traversal needs the box test (stage 04_box) and intersect_bvh: find out now, with one
-    // query, whether they are still stubs, rather than in the middle of the render.
-    // The probe's intersector hits nothing, so that only stages 04 and 05 run here.
+    // A traversal needs the box test (stage 04_box) and intersect_bvh (and for the 4-wide trees
+    // intersect_bvh4 and intersect_ray_box4): find out now, with one query, whether they are
+    // still stubs, rather than in the middle of the render. The probe's intersector hits
+    // nothing, so that only stages 04 and 05 (or 05c) run here.
     const Bvh* probe_bvh = !objects_bvh_.nodes.empty() ? &objects_bvh_ : nullptr;
-    for (const MeshPart& mesh : meshes_)
+    const Bvh4* probe_wide = nullptr;
+    for (const MeshPart& mesh : meshes_) {
       if (!probe_bvh && !mesh.bvh.nodes.empty()) probe_bvh = &mesh.bvh;
+      if (!probe_wide && !mesh.wide.nodes.empty() && !reference_trees_) probe_wide = &mesh.wide;
+    }
+    const PrimitiveIntersector hits_nothing{
+        [](void*, const Ray&, std::uint32_t) -> std::optional<float> { return std::nullopt; }, nullptr};
     if (probe_bvh) {
       Ray probe;
       probe.origin = probe_bvh->nodes[0].bounds.centroid();  // inside the root's box
       probe.direction = glm::vec3(0.0f, 0.0f, 1.0f);
       (void)intersect_ray_box(probe, ray_direction_inverse_of(probe), probe_bvh->nodes[0].bounds);
-      const PrimitiveIntersector hits_nothing{
-          [](void*, const Ray&, std::uint32_t) -> std::optional<float> { return std::nullopt; }, nullptr};
       BvhTraversalStats stats;
       (void)intersect_bvh(*probe_bvh, probe, hits_nothing, /*any_hit=*/false, stats);
     }
-  } catch (const NotImplemented& error) {
-    for (MeshPart& mesh : meshes_) {
-      mesh.bvh = Bvh();
-      mesh.wide = Bvh4();
-      mesh.reference_tree.reset();
+    if (probe_wide) {
+      Ray probe;
+      probe.origin = probe_wide->nodes[0].child_bounds(0).centroid();  // inside a child's box
+      probe.direction = glm::vec3(0.0f, 0.0f, 1.0f);
+      BvhTraversalStats stats;
+      (void)intersect_bvh4(*probe_wide, probe, hits_nothing, /*any_hit=*/false, stats);
     }
-    objects_bvh_ = Bvh();
+    if (!probe_bvh) {  // no set of primitives large enough for a tree
+      tree_choice_.used = StageTree::None;
+      tree_choice_.small_sets_only = true;
+    }
+  } catch (const NotImplemented& error) {
+    drop_trees();
     fallback_stage_ = error.stage_id();
+    tree_choice_.stub_stage = error.stage_id();
   }
+}
+
+void SceneGeometry::drop_trees() {
+  for (MeshPart& mesh : meshes_) {
+    mesh.bvh = Bvh();
+    mesh.wide = Bvh4();
+    mesh.reference_tree.reset();
+  }
+  objects_bvh_ = Bvh();
+  tree_choice_.used = StageTree::None;
+}
+
+void SceneGeometry::build_best_trees(TriangleTest triangle_test, const TracingFunctions& tracing) {
+  TracingFunctions without_trees = tracing;
+  without_trees.tree = StageTree::None;
+  std::optional<SceneGeometry> every_primitive;  // the answers to match, made when first needed
+  for (const StageTree candidate : {StageTree::Wide, StageTree::Sah, StageTree::Median}) {
+    const std::string name = stage_tree_name(candidate);
+    const auto pass_over = [&](const std::string& why) {
+      tree_choice_.passed_over.push_back(name + ": " + why);
+      drop_trees();
+    };
+    fallback_stage_.clear();
+    tree_choice_.stub_stage.clear();
+    tree_choice_.small_sets_only = false;
+    try {
+      build_bvhs(candidate);
+      if (tree_choice_.small_sets_only) return;  // no set large enough for a tree: every choice is the same
+      if (tree_choice_.used == StageTree::None) {  // a stage it needs is a stub
+        if (candidate == StageTree::Median) return;  // testing every primitive, and saying why
+        pass_over("stage " + fallback_stage_ + " is not written yet");
+        continue;
+      }
+      if (!every_primitive) every_primitive.emplace(scene_, Acceleration::BruteForce, triangle_test, without_trees);
+      if (const std::optional<std::string> difference = differs_from(*every_primitive)) {
+        pass_over(*difference);
+        continue;
+      }
+      return;
+    } catch (const NotImplemented& error) {
+      pass_over("stage " + error.stage_id() + " is not written yet");
+    } catch (const std::exception& error) {
+      pass_over(error.what());
+    }
+  }
+  fallback_stage_.clear();  // none would do: every primitive, and tree_choice_ says why
+}
+
+std::optional<std::string> SceneGeometry::differs_from(const SceneGeometry& every_primitive) const {
+  Bounds3 bounds;
+  for (const Sphere& sphere : spheres_) {
+    bounds.extend(sphere.center - glm::vec3(std::fabs(sphere.radius)));
+    bounds.extend(sphere.center + glm::vec3(std::fabs(sphere.radius)));
+  }
+  for (const MeshPart& mesh : meshes_) bounds.extend(mesh.bounds);
+  if (!(bounds.min.x <= bounds.max.x)) return std::nullopt;
+  // Rays from the camera and from points around the scene to points in it: as many as keep the
+  // testing of every primitive to about 4 million tests.
+  const std::size_t primitives = std::max<std::size_t>(1, spheres_.size() + triangles_.size());
+  const std::size_t ray_count = std::clamp<std::size_t>(4000000 / primitives, 16, 256);
+  std::uint64_t state = 0x2545F4914F6CDD1Dull;
+  const auto random = [&state] {  // splitmix64, in [0, 1)
+    state += 0x9E3779B97F4A7C15ull;
+    std::uint64_t z = state;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return static_cast<float>((z ^ (z >> 31)) >> 40) * 0x1.0p-24f;
+  };
+  const glm::vec3 size = bounds.max - bounds.min;
+  const auto point_in = [&](float grow) {
+    return bounds.min - grow * size + (1.0f + 2.0f * grow) * glm::vec3(random(), random(), random()) * size;
+  };
+  const auto t_text = [](const std::optional<SurfaceHit>& hit) {
+    return hit ? "a hit at t = " + std::to_string(hit->t_hit) : std::string("no hit");
+  };
+  for (std::size_t i = 0; i < ray_count; ++i) {
+    const glm::vec3 origin = i % 2 == 0 ? scene_.camera.position : point_in(0.1f);
+    const glm::vec3 direction = point_in(0.0f) - origin;
+    if (!(glm::dot(direction, direction) > 0.0f)) continue;
+    const Ray ray = make_ray(origin, direction);
+    const std::optional<SurfaceHit> yours = intersect(ray), expected = every_primitive.intersect(ray);
+    const bool same = yours.has_value() == expected.has_value() &&
+                      (!yours || std::fabs(yours->t_hit - expected->t_hit) <= 1e-6f * std::max(1.0f, expected->t_hit));
+    if (!same)
+      return "its closest hit differs from testing every primitive on ray " + std::to_string(i) + " of " +
+             std::to_string(ray_count) + " through the scene (" + t_text(yours) + ", not " + t_text(expected) + ")";
+    if (occluded(ray) != every_primitive.occluded(ray))
+      return "its any-hit query differs from testing every primitive on ray " + std::to_string(i) + " of " +
+             std::to_string(ray_count) + " through the scene";
+  }
+  return std::nullopt;
 }
 
 std::size_t SceneGeometry::bvh_count() const {
@@ -199,6 +361,23 @@ std::vector<std::vector<Bounds3>> SceneGeometry::tree_boxes_by_level() const {
     });
   }
   return levels;
+}
+
+const char* stage_tree_name(StageTree tree) {
+  switch (tree) {
+    case StageTree::Median: return "median";
+    case StageTree::Sah: return "sah";
+    case StageTree::Wide: return "wide";
+    case StageTree::None: return "none";
+    case StageTree::Best: return "best";
+  }
+  return "?";
+}
+
+std::optional<StageTree> stage_tree_named(const std::string& name) {
+  for (const StageTree tree : {StageTree::Median, StageTree::Sah, StageTree::Wide, StageTree::None, StageTree::Best})
+    if (name == stage_tree_name(tree)) return tree;
+  return std::nullopt;
 }
 
 }  // namespace raylab

@@ -79,6 +79,8 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     };
     if (query.any_hit) {
       const std::optional<BvhHit> hit = traverse(true);
+      thread_tree_work.nodes += stats.nodes_visited;
+      thread_tree_work.primitives += stats.primitives_tested;
       return hit ? std::optional<float>(hit->t_hit) : std::nullopt;
     }
     // This mesh's own closest hit is recorded apart from the query's (which may hold a closer
@@ -87,6 +89,8 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     HitRecord mesh_record;
     query.record = &mesh_record;
     const std::optional<BvhHit> hit = traverse(false);
+    thread_tree_work.nodes += stats.nodes_visited;
+    thread_tree_work.primitives += stats.primitives_tested;
     query.record = query_record;
     if (!hit || hit->primitive >= mesh.triangle_count) return std::nullopt;
     const std::uint32_t returned = mesh.first_triangle + hit->primitive;
@@ -108,6 +112,7 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
   }
   Ray search = ray;
   std::optional<float> closest;
+  thread_tree_work.primitives += mesh.triangle_count;  // at most, for an any-hit query
   for (std::uint32_t i = 0; i < mesh.triangle_count; ++i) {
     if (const std::optional<float> t =
             query.watch ? test_triangle_watched(&query, search, i) : test_triangle(&query, search, i)) {
@@ -126,6 +131,7 @@ std::optional<float> SceneGeometry::intersect_object(std::uint32_t object, const
       if (object == query.watch->sphere) query.watch->tested = true;
     }
     const Sphere& sphere = spheres_[object];
+    ++thread_tree_work.primitives;
     const std::optional<float> t = intersect_sphere_(ray, sphere.center, sphere.radius);
     if (t && *t < query.record->t_hit) query.record->set_sphere(object, *t);
     if (query.watch) query.watch->add(true, object, ray.t_max, t);
@@ -138,6 +144,7 @@ std::optional<float> SceneGeometry::intersect_objects_through_bvh(const Ray& ray
   BvhTraversalStats stats;
   const PrimitiveIntersector intersector{&SceneGeometry::test_object, &query};
   const std::optional<BvhHit> hit = intersect_bvh(objects_bvh_, ray, intersector, query.any_hit, stats);
+  thread_tree_work.nodes += stats.nodes_visited;
   if (!hit || query.any_hit) return hit ? std::optional<float>(hit->t_hit) : std::nullopt;
   if (!record_is_of_object(*query.record, hit->primitive, hit->t_hit)) {
     // Not the object whose hit the tests recorded as the closest: shade the returned one.

@@ -46,6 +46,10 @@ struct SceneGeometry::Query {
   Watch* watch = nullptr;
 };
 
+// The trees' work on this thread (SceneGeometry::take_thread_work), added to after each traversal
+// and each set of primitives tested one by one.
+inline thread_local SceneGeometry::Work thread_tree_work;
+
 // Straight into the one tree when it is all there is (the reference's programs, a scene
 // without spheres), else through the top-level BVH (geometry_bvh_adapters.cpp), or without
 // one, every object in turn (geometry_brute_force.cpp). Inline, so that the public queries

@@ -307,6 +307,7 @@ RenderOutput render_with_variance(const Scene& scene, const SceneGeometry& geome
   std::vector<ProgressCounters> progress_counters(static_cast<std::size_t>(thread_count));  // one per worker
   std::atomic<bool> stop{false};
   ShadingStats total_work;
+  SceneGeometry::Work total_tree_work;
   std::mutex work_mutex;
   std::exception_ptr first_error;
   std::mutex error_mutex;
@@ -333,9 +334,13 @@ RenderOutput render_with_variance(const Scene& scene, const SceneGeometry& geome
           ShadingStats tile_stats;
           Sampler sampler(samples_per_pixel, settings.seed);
           TileProgress tile_progress(progress_counters[static_cast<std::size_t>(index)], tile_stats);
+          (void)SceneGeometry::take_thread_work();  // what this thread traced before the tile
           passes[p](tiles[t], tile_stats, sampler, tile_progress);
+          const SceneGeometry::Work tile_tree_work = SceneGeometry::take_thread_work();
           std::lock_guard<std::mutex> lock(work_mutex);
           total_work += tile_stats;
+          total_tree_work.nodes += tile_tree_work.nodes;
+          total_tree_work.primitives += tile_tree_work.primitives;
         }
       } catch (...) {
         keep_error();
@@ -424,6 +429,8 @@ RenderOutput render_with_variance(const Scene& scene, const SceneGeometry& geome
     stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats->work = total_work;
     stats->threads = thread_count;
+    stats->nodes_visited = total_tree_work.nodes;
+    stats->primitives_tested = total_tree_work.primitives;
   }
   return output;
 }

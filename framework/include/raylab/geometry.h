@@ -3,7 +3,9 @@
 //
 // Acceleration (stages 04_box, 05_bvh): every mesh of more than a few triangles gets its own
 // BVH over its triangles, and a scene of more than a few objects (spheres and meshes) a
-// top-level BVH over the objects' boxes; smaller sets are tested one by one. (The reference's
+// top-level BVH over the objects' boxes; smaller sets are tested one by one. Which stage trees
+// (TracingFunctions::tree): the median build, the SAH build (05b), the mesh trees collapsed to 4
+// wide (05c), or the best of those the student wrote (raylab render --accel). (The reference's
 // own programs, TracingFunctions::reference_stages, put every triangle under one SAH tree
 // collapsed to 8 wide, or 4 wide as in stage 05c, and test the triangles inlined.) If build_bvh,
 // intersect_bvh or intersect_ray_box is still a stub (throws NotImplemented), the geometry
@@ -52,6 +54,22 @@ enum class Acceleration {
   BvhAlways,   // BVHs even for a handful of primitives (to measure what skipping them saves)
   BruteForce,  // test every primitive (an oracle for tests, a baseline for bench/)
 };
+
+// Which of the stage trees a student's program traces (raylab render --accel): each mesh's tree
+// and the tree over the objects. The reference's own programs (TracingFunctions::reference_stages)
+// trace their own fastest tree instead.
+enum class StageTree {
+  Median,  // stage 05: build_bvh, traversed by intersect_bvh
+  Sah,     // stage 05b: build_bvh_sah, traversed by intersect_bvh
+  Wide,    // stage 05c: the SAH tree (the median one while 05b is a stub) collapsed by
+           // collapse_bvh4, each mesh's traversed by intersect_bvh4
+  None,    // no tree: every primitive tested
+  Best,    // Wide, Sah or Median: the first whose stages are written and whose answers are those of
+           // testing every primitive, on a sample of rays (SceneGeometry::tree_choice says which)
+};
+// The --accel word of a tree ("median", "sah", "wide", "none", "best"), and back (nullopt: none).
+const char* stage_tree_name(StageTree tree);
+std::optional<StageTree> stage_tree_named(const std::string& name);
 
 // Which ray-triangle test every triangle query uses.
 enum class TriangleTest {
@@ -106,6 +124,8 @@ struct TracingFunctions {
   // With a sphere or triangle test given above: still trace the scene through the stage-05 trees
   // (build_bvh, intersect_bvh and stage 04's box test) rather than test every primitive.
   bool keep_trees = false;
+  // Which stage trees, without reference_stages.
+  StageTree tree = StageTree::Median;
   bool replaces_primitive_tests() const { return sphere != nullptr || triangle != nullptr; }
 };
 
@@ -124,6 +144,26 @@ class SceneGeometry {
   std::optional<SurfaceHit> intersect(const Ray& ray) const;
   // Whether anything is hit in (ray.t_min, ray.t_max): stops at the first hit found.
   bool occluded(const Ray& ray) const;
+
+  // The tree it traces (never StageTree::Best; None when it tests every primitive, also while
+  // stage 04 or 05 is a stub), and for StageTree::Best, why each better one was passed over (in
+  // words, "stage 05c_wide_bvh: collapse_bvh4 is not written yet"). `reference`: the reference's
+  // own tree (TracingFunctions::reference_stages).
+  struct TreeChoice {
+    StageTree used = StageTree::None;
+    bool reference = false;
+    std::vector<std::string> passed_over;
+    std::string stub_stage;  // the stage whose stub left no tree ("05c_wide_bvh"), or ""
+    bool small_sets_only = false;  // used None as no set of primitives is large enough for a tree
+  };
+  const TreeChoice& tree_choice() const { return tree_choice_; }
+  // The trees' work on this thread since the last call: the nodes whose boxes the traversals
+  // tested and the primitive tests they asked for (stats of intersect_bvh and intersect_bvh4),
+  // and the primitives tested one by one. The reference's straight path counts nothing.
+  struct Work {
+    std::uint64_t nodes = 0, primitives = 0;
+  };
+  static Work take_thread_work();
 
   std::size_t sphere_count() const { return spheres_.size(); }
   std::size_t triangle_count() const { return triangles_.size(); }
@@ -193,7 +233,7 @@ class SceneGeometry {
     std::uint32_t triangle_count = 0;
     Bounds3 bounds;
     Bvh bvh;  // empty: test every triangle
-    Bvh4 wide;  // reference_trees_ only: bvh collapsed to 4 wide (stage 05c), traversed instead
+    Bvh4 wide;  // StageTree::Wide, or reference_trees_: bvh collapsed to 4 wide (stage 05c), traversed instead
     // reference_trees_ with TracingFunctions::reference_tree (and a CPU it runs on): built from
     // bvh, traversed instead of wide.
     std::shared_ptr<const void> reference_tree;
@@ -221,7 +261,14 @@ class SceneGeometry {
   };
   struct Query;
 
-  void build_bvhs();
+  void build_bvhs(StageTree tree);
+  // StageTree::Best: tries Wide, Sah and Median in turn (tree_choice_ says why not the others).
+  void build_best_trees(TriangleTest triangle_test, const TracingFunctions& tracing);
+  // Whether the trees give the answers of testing every primitive (`every_primitive`, a geometry
+  // without trees) on a sample of rays through the scene's bounds; else the first that differs, in
+  // words.
+  std::optional<std::string> differs_from(const SceneGeometry& every_primitive) const;
+  void drop_trees();
   std::string brute_force_estimate(const Ray& sample) const;  // ": ... will take at least N s ..." or ""
   std::optional<float> intersect_objects(const Ray& ray, Query& query) const;  // one of these two:
   std::optional<float> intersect_objects_through_bvh(const Ray& ray, Query& query) const;
@@ -267,6 +314,7 @@ class SceneGeometry {
                                  const Ray& ray) const;
   std::vector<MeshPart> meshes_;
   Bvh objects_bvh_;  // over spheres_ then meshes_; empty: test every object
+  TreeChoice tree_choice_;
   // The stub stage ("05_bvh" or "04_box") that made us fall back to testing every primitive;
   // said on stderr at the first query, so that nothing is said if the render fails before.
   std::string fallback_stage_;

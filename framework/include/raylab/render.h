@@ -64,6 +64,9 @@ struct RenderStats {
   double seconds = 0.0;
   ShadingStats work;  // rays by kind, counted (work.rays() in all)
   int threads = 0;
+  // The trees' work over all rays (SceneGeometry::take_thread_work): node boxes tested and
+  // primitives tested; 0 where the reference's own tree traced them (it counts nothing).
+  std::uint64_t nodes_visited = 0, primitives_tested = 0;
 };
 
 // The largest --spp: 2^20 samples per pixel.

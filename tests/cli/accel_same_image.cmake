@@ -1,0 +1,30 @@
+# cmake -DPROGRAM=path -DSCENE=path -DWORK=dir -P accel_same_image.cmake
+# `PROGRAM render SCENE --accel X` for X in median, sah, wide, none and best: each exits 0, its
+# first line names the tree X asks for (best: the 4-wide one, where every stage is written), and
+# every picture is the one of --accel median, byte for byte.
+set(expected_median "tree: your median BVH \\(stage 05_bvh")
+set(expected_sah "tree: your SAH BVH \\(stage 05b_bvh_sah")
+set(expected_wide "tree: your 4-wide BVH \\(stage 05c_wide_bvh")
+set(expected_none "tree: none, every primitive tested")
+set(expected_best "${expected_wide}")
+file(MAKE_DIRECTORY "${WORK}")
+foreach(tree median sah wide none best)
+  set(image "${WORK}/accel_${tree}.ppm")
+  file(REMOVE "${image}")
+  execute_process(COMMAND "${PROGRAM}" render "${SCENE}" -o "${image}" --accel ${tree} --width 64 --height 48
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "--accel ${tree}: exit status ${status}\n${out}${err}")
+  endif()
+  string(REGEX MATCH "^[^\n]*" first_line "${err}")
+  if(NOT first_line MATCHES "${expected_${tree}}")
+    message(FATAL_ERROR "--accel ${tree}: the first line does not match '${expected_${tree}}':\n${err}")
+  endif()
+  if(NOT err MATCHES "primitives per ray")
+    message(FATAL_ERROR "--accel ${tree}: no work per ray in what it said:\n${err}")
+  endif()
+  file(SHA256 "${image}" hash_${tree})
+  if(NOT hash_${tree} STREQUAL hash_median)
+    message(FATAL_ERROR "--accel ${tree} renders another picture than --accel median (${image})")
+  endif()
+endforeach()
