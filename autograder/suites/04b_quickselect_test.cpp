@@ -13,6 +13,10 @@
 // (quickselect_median_of_medians), so it passes whatever its random pivots did. Any call on
 // random keys stops at kMostPerItem per item. On sorted, reversed and all-equal keys a call stops
 // at kMostPerItem per item: a quadratic one needs n / 4 or more (512 at n = 2,048).
+// Not told apart here (the handout's contract asks for them all the same): a selection by a heap
+// of the k + 1 smallest, O(n log n) with a small constant (about 4 per item at 512 and 6 at
+// 16,384, under both bounds; the random pivots' noise hides its growth at these sizes), and a
+// fixed middle pivot, quadratic only on inputs built against it.
 #include "grading.h"
 #include "support.h"
 
@@ -78,6 +82,13 @@ std::mt19937_64& random_numbers() {
   return numbers;
 }
 
+// The item numbers the stage sees, from a generator of their own: hundreds of them in a row must
+// tell nothing of the keys' generator.
+std::mt19937_64& item_numbers() {
+  static std::mt19937_64 numbers(std::random_device{}());
+  return numbers;
+}
+
 std::string call_text(const Case& c) {
   return "select_kth(" + std::to_string(c.keys.size()) + " items, k = " + std::to_string(c.k) + ")";
 }
@@ -106,7 +117,7 @@ Outcome run(const Case& c, std::uint64_t most_comparisons, bool hints = true) {
     // Distinct numbers, not positions: the stage sees only them.
     std::unordered_set<std::uint32_t> used;
     for (std::uint32_t& item : items) {
-      do item = static_cast<std::uint32_t>(random_numbers()());
+      do item = static_cast<std::uint32_t>(item_numbers()());
       while (!used.insert(item).second);
     }
   }
@@ -224,7 +235,7 @@ GRADED_TEST(kStage, Stage04bQuickselect, SelectsTheKthOfDistinctKeys, 3) {
   std::vector<Case> cases;
   for (std::size_t count = 1; count <= 12; ++count)
     for (std::size_t k = 0; k < count; ++k) cases.push_back({shuffled_keys(count), k});
-  for (const std::size_t count : {33, 100, 1000})
+  for (const std::size_t count : {33, 100, 400})
     for (int i = 0; i < 3; ++i) cases.push_back({shuffled_keys(count), random_position(count)});
   expect_right(cases);
 }
@@ -273,7 +284,7 @@ GRADED_TEST(kStage, Stage04bQuickselect, RejectsKBeyondTheEnd, 1) {
   for (const Case& c : {Case{shuffled_keys(8), 8}, Case{{}, 0}, Case{shuffled_keys(3), 100}}) {
     bool threw = false;
     try {
-      run(c, correctness_limit(c.keys.size()));
+      run(c, correctness_limit(c.keys.size()), /*hints=*/false);
     } catch (const std::invalid_argument&) {
       threw = true;
     }

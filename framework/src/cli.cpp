@@ -96,7 +96,11 @@ std::string tree_choice_text(const SceneGeometry::TreeChoice& choice) {
       case StageTree::Median: text = "raylab: tree: your median BVH (stage 05_bvh; --accel median)"; break;
       case StageTree::Sah: text = "raylab: tree: your SAH BVH (stage 05b_bvh_sah; --accel sah)"; break;
       case StageTree::Wide: text = "raylab: tree: your 4-wide BVH (stage 05c_wide_bvh; --accel wide)"; break;
-      default: text = "raylab: tree: none, every primitive tested (--accel none)"; break;
+      default:
+        text = choice.stub_stage.empty()
+                   ? "raylab: tree: none, every primitive tested (--accel none)"
+                   : "raylab: tree: none, every primitive tested: stage " + choice.stub_stage + " is not written yet";
+        break;
     }
   }
   for (const std::string& why : choice.passed_over) text += "\n  not used: " + why;
@@ -370,7 +374,7 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
   render_command
       ->add_option("--accel", options.accel,
                    "The trees that find the hits: median (stage 05), sah (05b), wide (05c), none (every primitive), or "
-                   "best (default: the last of wide, sah, median whose stages are written and that agree with "
+                   "best (default: the first of wide, sah, median whose stages are written and that agree with "
                    "testing every primitive on a sample of rays; the first line says which)")
       ->check(CLI::IsMember({"best", "median", "sah", "wide", "none"}));
   render_command->add_flag("--watertight", options.watertight,

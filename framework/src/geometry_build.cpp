@@ -47,17 +47,28 @@ std::optional<std::string> wide_tree_problem(const Bvh4& wide, std::size_t primi
     seen[primitive] = true;
   }
   if (wide.nodes.empty()) return primitive_count == 0 ? std::nullopt : std::optional<std::string>("it has no nodes");
-  for (std::size_t n = 0; n < wide.nodes.size(); ++n) {
+  // Every node reached once from the root (as stage 05c's contract asks), each slot in range.
+  std::vector<bool> reached(wide.nodes.size(), false);
+  std::vector<std::uint32_t> stack{0};
+  reached[0] = true;
+  while (!stack.empty()) {
+    const std::uint32_t n = stack.back();
+    stack.pop_back();
     const Bvh4Node& node = wide.nodes[n];
     if (node.child_count < 1 || node.child_count > kBvh4Width)
       return "node " + std::to_string(n) + " has " + std::to_string(node.child_count) + " children";
     for (int slot = 0; slot < node.child_count; ++slot) {
-      const bool leaf = node.is_leaf(slot);
-      if (leaf && std::uint64_t(node.child[slot]) + node.primitive_count[slot] > primitive_count)
-        return "a leaf of node " + std::to_string(n) + " reaches past primitive_order";
-      if (!leaf && (node.child[slot] <= n || node.child[slot] >= wide.nodes.size()))
-        return "node " + std::to_string(n) + " names child node " + std::to_string(node.child[slot]) +
-               " (a child must come after its parent, within the nodes)";
+      if (node.is_leaf(slot)) {
+        if (std::uint64_t(node.child[slot]) + node.primitive_count[slot] > primitive_count)
+          return "a leaf of node " + std::to_string(n) + " reaches past primitive_order";
+        continue;
+      }
+      const std::uint32_t child = node.child[slot];
+      if (child == 0 || child >= wide.nodes.size() || reached[child])
+        return "node " + std::to_string(n) + " names child node " + std::to_string(child) +
+               " (each node but the root must be one node's child, once, within the nodes)";
+      reached[child] = true;
+      stack.push_back(child);
     }
   }
   return std::nullopt;
@@ -150,6 +161,13 @@ void SceneGeometry::build_bvhs(StageTree tree) {
     }
     return sah ? build_bvh_sah(boxes, kBvhLeafSize) : build_bvh(boxes, kBvhLeafSize);
   };
+  // A broken tree named by the stage whose build made it (BrokenBvh names stage 05's).
+  const auto check = [&](const Bvh& bvh, const std::vector<Bounds3>& boxes, const std::optional<std::string>& name) {
+    if (!sah || reference_trees_) return check_tree(bvh, boxes, name);
+    if (const std::optional<BvhViolation> broken = find_bvh_violation(bvh, boxes, kBvhLeafSize))
+      throw std::runtime_error("stage 05b_bvh_sah: build_bvh_sah over " + std::to_string(boxes.size()) + " boxes (" +
+                               name.value_or("the scene's objects") + ") returned a broken tree: " + describe(*broken));
+  };
   try {
     for (MeshPart& mesh : meshes_) {
       if (mesh.triangle_count <= brute_force_limit_) continue;
@@ -161,7 +179,7 @@ void SceneGeometry::build_bvhs(StageTree tree) {
       mesh.bvh = build(boxes);
       const bool one_mesh = first->mesh == first[mesh.triangle_count - 1].mesh;
       const std::string name = one_mesh ? scene_.meshes[first->mesh].name : "the scene's triangles";
-      check_tree(mesh.bvh, boxes, name);
+      check(mesh.bvh, boxes, name);
       // Store the triangles in leaf order, so that a leaf's triangles are adjacent in memory;
       // the BVH's primitive_order then becomes the identity.
       std::vector<Triangle> reordered;
@@ -189,7 +207,10 @@ void SceneGeometry::build_bvhs(StageTree tree) {
         boxes.emplace_back(sphere.center - glm::vec3(sphere.radius), sphere.center + glm::vec3(sphere.radius));
       for (const MeshPart& mesh : meshes_) boxes.push_back(mesh.bounds);
       objects_bvh_ = reference_trees_ ? build_bvh(boxes, kBvhLeafSize) : build(boxes);
-      check_tree(objects_bvh_, boxes, std::nullopt);
+      if (reference_trees_)
+        check_tree(objects_bvh_, boxes, std::nullopt);
+      else
+        check(objects_bvh_, boxes, std::nullopt);
     }
     // A traversal needs the box test (stage 04_box) and intersect_bvh (and for the 4-wide trees
     // intersect_bvh4 and intersect_ray_box4): find out now, with one query, whether they are
@@ -221,6 +242,10 @@ void SceneGeometry::build_bvhs(StageTree tree) {
     if (!probe_bvh) {  // no set of primitives large enough for a tree
       tree_choice_.used = StageTree::None;
       tree_choice_.small_sets_only = true;
+    } else if (tree == StageTree::Wide && !probe_wide && !reference_trees_) {
+      tree_choice_.used = sah ? StageTree::Sah : StageTree::Median;
+      tree_choice_.passed_over.push_back("wide: no mesh has more than " + std::to_string(brute_force_limit_) +
+                                         " triangles, so none has a 4-wide tree");
     }
   } catch (const NotImplemented& error) {
     drop_trees();
@@ -243,11 +268,20 @@ void SceneGeometry::build_best_trees(TriangleTest triangle_test, const TracingFu
   TracingFunctions without_trees = tracing;
   without_trees.tree = StageTree::None;
   std::optional<SceneGeometry> every_primitive;  // the answers to match, made when first needed
+  // Each candidate starts from the triangles in the scene's order (a build stores them in its
+  // leaf order), so that the one chosen is the tree --accel would build.
+  const std::vector<Triangle> scene_order = triangles_;
+  // A stub of another stage (02, 03) is no reason to pass a tree over: the render needs it anyway.
+  const auto tree_stage = [](const std::string& stage) {
+    return stage == "04_box" || stage == "04b_quickselect" || stage == "05_bvh" || stage == "05b_bvh_sah" ||
+           stage == "05c_wide_bvh";
+  };
   for (const StageTree candidate : {StageTree::Wide, StageTree::Sah, StageTree::Median}) {
     const std::string name = stage_tree_name(candidate);
     const auto pass_over = [&](const std::string& why) {
       tree_choice_.passed_over.push_back(name + ": " + why);
       drop_trees();
+      triangles_ = scene_order;
     };
     fallback_stage_.clear();
     tree_choice_.stub_stage.clear();
@@ -267,6 +301,7 @@ void SceneGeometry::build_best_trees(TriangleTest triangle_test, const TracingFu
       }
       return;
     } catch (const NotImplemented& error) {
+      if (!tree_stage(error.stage_id())) throw;
       pass_over("stage " + error.stage_id() + " is not written yet");
     } catch (const std::exception& error) {
       pass_over(error.what());

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -47,7 +48,9 @@ nlohmann::json row_json(const TreeBenchRow& row) {
           {"closest_nodes", row.closest_nodes},
           {"closest_primitives", row.closest_primitives},
           {"any_nodes", row.any_nodes},
-          {"any_primitives", row.any_primitives}};
+          {"any_primitives", row.any_primitives},
+          {"wrong", row.wrong},
+          {"checked", row.checked}};
 }
 
 TreeBenchRow row_of(const nlohmann::json& json) {
@@ -62,6 +65,8 @@ TreeBenchRow row_of(const nlohmann::json& json) {
   row.closest_primitives = json.value("closest_primitives", 0.0);
   row.any_nodes = json.value("any_nodes", 0.0);
   row.any_primitives = json.value("any_primitives", 0.0);
+  row.wrong = json.value("wrong", std::uint64_t{0});
+  row.checked = json.value("checked", std::uint64_t{0});
   return row;
 }
 
@@ -78,9 +83,10 @@ void print_row(const std::string& who, const TreeBenchRow& row) {
       std::snprintf(text, sizeof text, "-");
     return std::string(text);
   };
-  std::printf("%-10s %-10s %9.1f %9.2f %7s %7s %9.2f %7s %7s\n", who.c_str(), row.tree.c_str(), row.build_ms,
+  const std::string wrong = std::to_string(row.wrong) + " of " + std::to_string(row.checked);
+  std::printf("%-10s %-10s %9.1f %9.2f %7s %7s %9.2f %7s %7s  %s\n", who.c_str(), row.tree.c_str(), row.build_ms,
               row.closest_mrays, per_ray(row.closest_nodes).c_str(), per_ray(row.closest_primitives).c_str(),
-              row.any_mrays, per_ray(row.any_nodes).c_str(), per_ray(row.any_primitives).c_str());
+              row.any_mrays, per_ray(row.any_nodes).c_str(), per_ray(row.any_primitives).c_str(), wrong.c_str());
 }
 
 }  // namespace
@@ -95,6 +101,22 @@ std::vector<TreeBenchRow> bench_trees(const Scene& scene, const TreeBenchOptions
   for (int y = 0; y < camera.height; ++y)
     for (int x = 0; x < camera.width; ++x) rays.push_back(generate_camera_ray(camera, x, y, glm::vec2(0.5f)));
 
+  // The answers to check each tree's against: testing every primitive, on every `check_step`th
+  // ray (about 50 million tests in all), closest hit and any hit.
+  TracingFunctions without_trees;
+  without_trees.tree = StageTree::None;
+  const SceneGeometry every_primitive(scene, Acceleration::BruteForce, TriangleTest::MollerTrumbore, without_trees);
+  const double all_tests = static_cast<double>(rays.size()) *
+                           static_cast<double>(std::max<std::size_t>(1, every_primitive.triangle_count() + every_primitive.sphere_count()));
+  const auto check_step = static_cast<std::size_t>(std::max(1.0, all_tests / 5e7));
+  std::vector<std::optional<float>> expected_t;
+  std::vector<bool> expected_blocked;
+  for (std::size_t i = 0; i < rays.size(); i += check_step) {
+    const std::optional<SurfaceHit> hit = every_primitive.intersect(rays[i]);
+    expected_t.push_back(hit ? std::optional<float>(hit->t_hit) : std::nullopt);
+    expected_blocked.push_back(every_primitive.occluded(rays[i]));
+  }
+
   std::vector<TreeBenchRow> rows;
   const auto measure = [&](TreeBenchRow row, const TracingFunctions& tracing, std::optional<StageTree> wanted) {
     try {
@@ -102,19 +124,15 @@ std::vector<TreeBenchRow> bench_trees(const Scene& scene, const TreeBenchOptions
       const SceneGeometry geometry(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, tracing);
       row.build_ms = seconds_since(start) * 1e3;
       if (wanted && geometry.tree_choice().used != *wanted) {
-        row.not_used = geometry.tree_choice().small_sets_only
-                           ? "no tree: every set of primitives in the scene is small (4 or fewer)"
-                           : "stage " + geometry.tree_choice().stub_stage + " is not written yet";
+        const SceneGeometry::TreeChoice& choice = geometry.tree_choice();
+        row.not_used = choice.small_sets_only       ? "no tree: every set of primitives in the scene is small (4 or fewer)"
+                       : !choice.stub_stage.empty() ? "stage " + choice.stub_stage + " is not written yet"
+                                                    : "no mesh large enough for a 4-wide tree (more than 4 triangles)";
         rows.push_back(row);
         return;
       }
       // Every primitive for every ray is slow: a share of the rays, about 50 million tests.
-      std::size_t step = 1;
-      if (wanted == StageTree::None) {
-        const double tests = static_cast<double>(rays.size()) *
-                             static_cast<double>(std::max<std::size_t>(1, geometry.triangle_count() + geometry.sphere_count()));
-        step = static_cast<std::size_t>(std::max(1.0, tests / 5e7));
-      }
+      const std::size_t step = wanted == StageTree::None ? check_step : 1;
       std::size_t hits = 0, count = 0;
       (void)SceneGeometry::take_thread_work();
       Clock::time_point begin = Clock::now();
@@ -134,6 +152,15 @@ std::vector<TreeBenchRow> bench_trees(const Scene& scene, const TreeBenchOptions
       row.closest_primitives = static_cast<double>(closest.primitives) / n;
       row.any_nodes = static_cast<double>(any.nodes) / n;
       row.any_primitives = static_cast<double>(any.primitives) / n;
+      // Its answers against testing every primitive (not timed).
+      for (std::size_t i = 0, k = 0; i < rays.size(); i += check_step, ++k) {
+        const std::optional<SurfaceHit> hit = geometry.intersect(rays[i]);
+        const bool same_closest = hit.has_value() == expected_t[k].has_value() &&
+                                  (!hit || std::fabs(hit->t_hit - *expected_t[k]) <= 1e-6f * std::max(1.0f, *expected_t[k]));
+        if (!same_closest || geometry.occluded(rays[i]) != expected_blocked[k]) ++row.wrong;
+        ++row.checked;
+      }
+      (void)SceneGeometry::take_thread_work();
     } catch (const NotImplemented&) {
       throw;
     } catch (const std::exception& error) {
@@ -164,9 +191,10 @@ int run_tree_bench(const TreeBenchOptions& options) {
   const std::vector<TreeBenchRow> rows = bench_trees(scene, options);
   std::printf("%s: %dx%d camera rays, one thread; per ray: nodes whose boxes were tested, primitives tested\n",
               options.scene_path.c_str(), options.width, options.height);
-  std::printf("%-10s %-10s %9s %9s %7s %7s %9s %7s %7s\n", "", "tree", "build ms", "closest", "nodes", "prims",
-              "any hit", "nodes", "prims");
-  std::printf("%-10s %-10s %9s %9s %7s %7s %9s %7s %7s\n", "", "", "", "Mrays/s", "", "", "Mrays/s", "", "");
+  std::printf("%-10s %-10s %9s %9s %7s %7s %9s %7s %7s  %s\n", "", "tree", "build ms", "closest", "nodes", "prims",
+              "any hit", "nodes", "prims", "wrong answers");
+  std::printf("%-10s %-10s %9s %9s %7s %7s %9s %7s %7s  %s\n", "", "", "", "Mrays/s", "", "", "Mrays/s", "", "",
+              "(against every primitive)");
   const char* who = options.reference_program ? "reference" : "yours";
   for (const TreeBenchRow& row : rows) print_row(who, row);
 

@@ -1,7 +1,8 @@
 // `raylab bench SCENE`: the student's own trees side by side on one scene. For each of --accel
 // median, sah, wide and none: the time to build it, and closest-hit and any-hit queries of the
 // scene's camera rays on one thread, with the work per ray (nodes whose boxes were tested,
-// primitives tested). Beside them, the reference's figures for the same scene, from
+// primitives tested), and how many of its answers differ from testing every primitive. Beside
+// them, the reference's figures for the same scene, from
 // scenes/reference_bench.json (written by `raylab-reference bench SCENE --save-reference`: the
 // reference's code of each tree, traced as a student's program traces the student's, and the
 // reference's own fastest tree).
@@ -32,6 +33,9 @@ struct TreeBenchRow {
   double closest_mrays = 0.0, any_mrays = 0.0;  // millions of queries per second
   double closest_nodes = 0.0, closest_primitives = 0.0;  // per ray (0 where not counted)
   double any_nodes = 0.0, any_primitives = 0.0;
+  // Of `checked` rays (every ray, or a share where testing every primitive would be slow), those
+  // whose closest or any hit differs from testing every primitive.
+  std::uint64_t wrong = 0, checked = 0;
 };
 
 std::vector<TreeBenchRow> bench_trees(const Scene& scene, const TreeBenchOptions& options);
