@@ -290,7 +290,10 @@ void SceneGeometry::build_best_trees(TriangleTest triangle_test, const TracingFu
       build_bvhs(candidate);
       if (tree_choice_.small_sets_only) return;  // no set large enough for a tree: every choice is the same
       if (tree_choice_.used == StageTree::None) {  // a stage it needs is a stub
-        if (candidate == StageTree::Median) return;  // testing every primitive, and saying why
+        if (candidate == StageTree::Median) {  // testing every primitive, and saying why
+          tree_choice_.passed_over.clear();  // the better trees need this one's stages too
+          return;
+        }
         pass_over("stage " + fallback_stage_ + " is not written yet");
         continue;
       }
