@@ -32,7 +32,7 @@
 #include "raylab/stages/05_bvh.h"
 #include "raylab/stages/05c_wide_bvh.h"
 
-#include "../solutions/05c_wide_bvh/wide8.h"  // "sah-wide8", and the renderer's tree
+#include "../solutions/05c_wide_bvh/fast_tree.h"  // "sah-wide8", and the renderer's tree
 #include "raylab/testkit/random_values.h"
 #include "raylab/testkit/triangles.h"
 
@@ -145,21 +145,28 @@ std::vector<Bounds3> triangle_boxes(const TestMesh& mesh) {
   return boxes;
 }
 
+#if RAYLAB_AVX2_COMPILES
+using EightWide = reference::Bvh8;
+#else
+struct EightWide {};  // (never built)
+#endif
+
 struct ReferenceBvh {
   std::string name;  // "median" or "sah"; "median-calls", "sah-calls": the same tree, tested by calls
   Bvh bvh;
   std::vector<glm::vec3> corners;  // in leaf order; bvh.primitive_order is the identity
-  // The same triangles for the reference traversal's inlined test (PrimitiveIntersector::
-  // triangles), as the renderer hands them over; empty: a call of test_triangle per triangle,
-  // as a student's traversal and every grader run it.
-  std::vector<TriangleEdges> edges;
+  // The same triangles for the reference traversal's inlined test (reference::LeafTriangles),
+  // as the reference's fastest tree holds them; empty: a call of test_triangle per triangle, as
+  // a student's traversal and every grader run it.
+  std::vector<reference::TriangleEdges> edges;
   // "sah-wide": bvh collapsed into a 4-wide tree (stage 05c), traversed by intersect_bvh4.
   std::optional<Bvh4> wide;
   // "sah-wide8": bvh as the reference's 8-wide tree (solutions/05c_wide_bvh/wide8.h), its
   // triangles as columns tested four at a time; what raylab-reference traces.
-  std::shared_ptr<const void> wide8;
-  // "sah-wide": the triangles also as columns (PrimitiveIntersector::columns), tested four at
-  // a time, as the renderer hands them over; "sah-wide-serial": without, one after another.
+  std::shared_ptr<const EightWide> wide8;
+  // "sah-wide": the triangles also as columns (reference::LeafTriangles::columns), tested four
+  // at a time, as the reference's fastest tree holds them; "sah-wide-serial": without, one
+  // after another.
   std::vector<float> columns;
   bool tested_by_calls() const { return edges.empty(); }
 };
@@ -174,7 +181,7 @@ ReferenceBvh build_reference(const TestMesh& mesh, bool sah) {
     primitive = static_cast<std::uint32_t>(&primitive - result.bvh.primitive_order.data());
   }
   for (std::size_t i = 0; i < result.corners.size(); i += 3)
-    result.edges.push_back(TriangleEdges::of(result.corners[i], result.corners[i + 1], result.corners[i + 2]));
+    result.edges.push_back(reference::TriangleEdges::of(result.corners[i], result.corners[i + 1], result.corners[i + 2]));
   return result;
 }
 
@@ -192,20 +199,23 @@ ReferenceBvh collapsed(const ReferenceBvh& tree, bool four_at_a_time) {
   ReferenceBvh copy = tree;
   copy.name += four_at_a_time ? "-wide" : "-wide-serial";
   copy.wide = collapse_bvh4(tree.bvh);
-  if (four_at_a_time) copy.columns = triangle_columns(copy.edges.data(), copy.wide->primitive_order);
+  if (four_at_a_time) copy.columns = reference::triangle_columns(copy.edges.data(), copy.wide->primitive_order);
   return copy;
 }
 
 // The same tree as the reference's 8-wide one (the "-wide8" rows); nullopt on a CPU without AVX2.
 std::optional<ReferenceBvh> collapsed8(const ReferenceBvh& tree) {
-  const ReferenceTreeFunctions* functions = reference::reference_tree_functions();
-  if (!functions) return std::nullopt;
+#if RAYLAB_AVX2_COMPILES
+  if (!reference::eight_wide_tree_runs_here() || tree.bvh.nodes.empty()) return std::nullopt;
   ReferenceBvh copy = tree;
   copy.name += "-wide8";
-  copy.wide8 = functions->build(tree.bvh);
-  if (!copy.wide8) return std::nullopt;
-  copy.columns = triangle_columns(copy.edges.data(), tree.bvh.primitive_order);
+  copy.wide8 = std::make_shared<const EightWide>(reference::collapse_bvh8(tree.bvh));
+  copy.columns = reference::triangle_columns(copy.edges.data(), tree.bvh.primitive_order);
   return copy;
+#else
+  (void)tree;
+  return std::nullopt;
+#endif
 }
 
 // Traces rays[begin, end) (every `stride`-th); writes t (infinity for a miss) when t_out.
@@ -213,14 +223,25 @@ void trace_reference(const ReferenceBvh& tree, const std::vector<Ray>& rays, std
                      std::size_t end, bool any_hit, float* t_out, BvhTraversalStats& stats) {
   TriangleContext context{tree.corners.data(), {}};
   PrimitiveIntersector intersector{&test_triangle, &context};
-  if (!tree.tested_by_calls()) intersector.triangles = tree.edges.data();
-  if (!tree.columns.empty()) intersector.columns = TriangleColumns::of(tree.columns);
+  reference::LeafTriangles leaves;
+  leaves.triangles = tree.edges.data();
+  if (!tree.columns.empty()) leaves.columns = reference::TriangleColumns::of(tree.columns);
+  const bool calls = tree.tested_by_calls();
   for (std::size_t i = begin; i < end; ++i) {
     // Not const: DoNotOptimize(const T&) is deprecated since Google Benchmark 1.8.
-    std::optional<BvhHit> hit =
-        tree.wide8  ? reference::reference_tree_functions()->intersect(tree.wide8.get(), rays[i], intersector, any_hit, stats)
-        : tree.wide ? intersect_bvh4(*tree.wide, rays[i], intersector, any_hit, stats)
-                    : intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats);
+    std::optional<BvhHit> hit;
+#if RAYLAB_AVX2_COMPILES
+    if (tree.wide8)
+      hit = calls ? reference::intersect_bvh8(*tree.wide8, rays[i], intersector, any_hit, stats)
+                  : reference::intersect_bvh8_inlined(*tree.wide8, rays[i], leaves, any_hit, stats);
+    else
+#endif
+    if (tree.wide)
+      hit = calls ? intersect_bvh4(*tree.wide, rays[i], intersector, any_hit, stats)
+                  : reference::intersect_bvh4_inlined(*tree.wide, rays[i], leaves, any_hit, stats);
+    else
+      hit = calls ? intersect_bvh(tree.bvh, rays[i], intersector, any_hit, stats)
+                  : reference::intersect_bvh_inlined(tree.bvh, rays[i], leaves, any_hit, stats);
     if (t_out) t_out[i] = hit ? hit->t_hit : kInfinity;
     benchmark::DoNotOptimize(hit);
   }
@@ -773,8 +794,7 @@ void print_render_summary() {
       settings.integrator = integrator_from_name(scene.integrator).value_or(IntegratorKind::Whitted);  // cornell: path, 1 spp
       settings.max_depth = scene.max_depth;
       settings.threads = threads;
-      settings.tracing.reference_stages = inlined;  // this program links the reference's stages
-      if (inlined) settings.tracing.reference_tree = reference::reference_tree_functions();
+      if (inlined) settings.tracing.own_tree = &reference::build_fast_tree;  // as raylab-reference renders
       RenderStats best;
       for (int run = 0; run < 3; ++run) {
         RenderStats stats;

@@ -69,7 +69,7 @@
 #include "raylab/stages/07_sampling.h"
 #include "raylab/stages/09b_mis.h"
 
-#include "../solutions/05c_wide_bvh/wide8.h"  // the reference's fastest tree, as raylab-reference traces it
+#include "../solutions/05c_wide_bvh/fast_tree.h"  // the reference's fastest tree, as raylab-reference traces it
 
 #include <CLI/CLI.hpp>
 
@@ -290,8 +290,7 @@ int main(int argc, char** argv) {
 
     RenderSettings settings;
     settings.integrator = IntegratorKind::Path;
-    settings.tracing.reference_stages = true;  // this program links solutions/, as raylab-reference
-    settings.tracing.reference_tree = reference::reference_tree_functions();
+    settings.tracing.own_tree = &reference::build_fast_tree;  // as raylab-reference
     settings.samples_per_pixel = reference_spp;
     settings.max_depth = kMaxDepth;
     settings.roulette = RussianRoulette{kRoulette, false};
@@ -316,8 +315,7 @@ int main(int argc, char** argv) {
                 std::sqrt(reference_variance));
 
     TracingFunctions reference_tracing;
-    reference_tracing.reference_stages = true;  // as raylab-reference
-    reference_tracing.reference_tree = reference::reference_tree_functions();
+    reference_tracing.own_tree = &reference::build_fast_tree;  // as raylab-reference
     const SceneGeometry geometry(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, reference_tracing);
     const RenderContext context(scene, geometry, kMaxDepth, Skips{}, RussianRoulette{kRoulette, false});
     std::filesystem::create_directories(output);

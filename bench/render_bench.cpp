@@ -13,7 +13,7 @@
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
 
-#include "../solutions/05c_wide_bvh/wide8.h"  // the reference's fastest tree, as raylab-reference traces it
+#include "../solutions/05c_wide_bvh/fast_tree.h"  // the reference's fastest tree, as raylab-reference traces it
 
 #include <CLI/CLI.hpp>
 
@@ -37,10 +37,9 @@ struct Timed {
   double seconds = 0.0;
 };
 
-// As raylab-reference renders: this program links solutions/ (TracingFunctions::reference_stages).
+// As raylab-reference renders: the reference's fastest tree (TracingFunctions::own_tree).
 Timed render_best_of(const Scene& scene, RenderSettings settings, int repetitions) {
-  settings.tracing.reference_stages = true;
-  settings.tracing.reference_tree = reference::reference_tree_functions();
+  settings.tracing.own_tree = &reference::build_fast_tree;
   Timed best;
   best.seconds = 1e30;
   for (int i = 0; i < repetitions; ++i) {

@@ -357,7 +357,4 @@ endfunction()
 function(raylab_add_program name variant)
   add_executable(${name} ${ARGN})
   target_link_libraries(${name} PRIVATE raylab_stages_${variant} raylab_framework raylab_testkit raylab_options)
-  if(variant STREQUAL "reference")
-    target_compile_definitions(${name} PRIVATE RAYLAB_REFERENCE_STAGES)  # framework/app/main.cpp
-  endif()
 endfunction()

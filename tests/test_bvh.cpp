@@ -10,7 +10,7 @@
 #include "raylab/stages/05c_wide_bvh.h"
 #include "raylab/testkit/triangles.h"
 
-#include "../solutions/05c_wide_bvh/wide8.h"  // the reference's 8-wide tree
+#include "../solutions/05c_wide_bvh/wide8.h"  // the reference's 8-wide tree and its inlined tests
 
 #include <gtest/gtest.h>
 
@@ -125,18 +125,19 @@ std::string text_of(const std::optional<BvhHit>& hit) {
 }
 
 TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
-  // The renderer hands the reference traversal its triangles (TriangleEdges) so that it tests
-  // them inlined, and their columns in leaf order so that it tests four (the 8-wide tree:
-  // eight) at a time; every answer, t and the barycentrics handed back to the bit, and every
-  // count must be those of calling stage 03, for the binary traversal, the 4-wide one (stage
-  // 05c) and the reference's 8-wide one, whose leaves are whole subtrees of up to 8 triangles.
+  // The reference's own tree over a scene's triangles (solutions/05c_wide_bvh/fast_tree.h)
+  // holds the triangles (reference::TriangleEdges) and tests them inlined, and their columns in
+  // leaf order, tested four (the 8-wide tree: eight) at a time; every answer, t and the
+  // barycentrics handed back to the bit, and every count must be those of calling stage 03, for
+  // the binary traversal, the 4-wide one (stage 05c) and the reference's 8-wide one, whose
+  // leaves are whole subtrees of up to 8 triangles.
   const Mesh& mesh = large_mesh();
   const testkit::IndexedTriangles triangles{&mesh.triangles.positions, &mesh.triangles.indices, &intersect_ray_triangle};
   const PrimitiveIntersector by_calls = testkit::intersector_over(triangles);
-  std::vector<TriangleEdges> edges;
+  std::vector<reference::TriangleEdges> edges;
   for (std::uint32_t t = 0; t < mesh.boxes.size(); ++t)
-    edges.push_back(TriangleEdges::of(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)));
-  PrimitiveIntersector inlined = by_calls;
+    edges.push_back(reference::TriangleEdges::of(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)));
+  reference::LeafTriangles inlined;
   inlined.triangles = edges.data();
 
   std::vector<Ray> rays = adversarial_rays(mesh);
@@ -154,16 +155,16 @@ TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
        {build_bvh(mesh.boxes, kLeafSize), build_bvh_sah(mesh.boxes, kLeafSize), build_bvh(mesh.boxes, 9)}) {
     const Bvh4 wide = collapse_bvh4(bvh);
     // The reference's 8-wide tree (solutions/05c_wide_bvh/wide8.h), where the CPU has AVX2.
-    const ReferenceTreeFunctions* eight = reference::reference_tree_functions();
-    const std::shared_ptr<const void> wide8 = eight ? eight->build(bvh) : nullptr;
-    // Where it runs, the 8-wide tree must be there to be compared (not skipped).
-    if (reference::eight_wide_tree_runs_here()) {
-      ASSERT_TRUE(wide8) << "the 8-wide tree was not built";
-    }
+#if RAYLAB_AVX2_COMPILES
+    std::optional<reference::Bvh8> wide8;
+    if (reference::eight_wide_tree_runs_here()) wide8 = reference::collapse_bvh8(bvh);
+#else
+    const bool wide8 = false;
+#endif
     // In the tree's leaf order (here not the triangles' own order): positions, not primitives.
-    const std::vector<float> columns = triangle_columns(edges.data(), bvh.primitive_order);
-    PrimitiveIntersector four_at_a_time = inlined;
-    four_at_a_time.columns = TriangleColumns::of(columns);
+    const std::vector<float> columns = reference::triangle_columns(edges.data(), bvh.primitive_order);
+    reference::LeafTriangles four_at_a_time = inlined;
+    four_at_a_time.columns = reference::TriangleColumns::of(columns);
     for (std::size_t r = 0; r < rays.size() && failures < 5; ++r) {
       Ray ray = rays[r];
       if (r < 400 && r % 8 == 5) {  // stop exactly at the first hit: it must be excluded by all
@@ -175,9 +176,18 @@ TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
         for (int width : {2, 4, 8}) {
           if (width == 8 && !wide8) continue;
           const auto trace = [&](const PrimitiveIntersector& intersector, BvhTraversalStats& stats) {
-            if (width == 8) return eight->intersect(wide8.get(), ray, intersector, any_hit, stats);
+#if RAYLAB_AVX2_COMPILES
+            if (width == 8) return reference::intersect_bvh8(*wide8, ray, intersector, any_hit, stats);
+#endif
             return width == 4 ? intersect_bvh4(wide, ray, intersector, any_hit, stats)
                               : intersect_bvh(bvh, ray, intersector, any_hit, stats);
+          };
+          const auto trace_inlined = [&](const reference::LeafTriangles& leaves, BvhTraversalStats& stats) {
+#if RAYLAB_AVX2_COMPILES
+            if (width == 8) return reference::intersect_bvh8_inlined(*wide8, ray, leaves, any_hit, stats);
+#endif
+            return width == 4 ? reference::intersect_bvh4_inlined(wide, ray, leaves, any_hit, stats)
+                              : reference::intersect_bvh_inlined(bvh, ray, leaves, any_hit, stats);
           };
           BvhTraversalStats calls_stats;
           const std::optional<BvhHit> expected = trace(by_calls, calls_stats);
@@ -195,14 +205,14 @@ TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
                           << width << "-wide tree gives " << text_of(expected) << ", the binary tree "
                           << text_of(binary_answer);
           }
-          for (const PrimitiveIntersector* intersector : {&inlined, &four_at_a_time}) {
+          for (const reference::LeafTriangles* leaves : {&inlined, &four_at_a_time}) {
             BvhTraversalStats stats;
             // The inlined tests also hand over the hit's details: those of stage 03's function
             // on the triangle returned, to the bit.
             TriangleHit details{std::nanf(""), std::nanf(""), std::nanf("")};
-            PrimitiveIntersector with_details = *intersector;
+            reference::LeafTriangles with_details = *leaves;
             with_details.closest_triangle_hit = &details;
-            const std::optional<BvhHit> got = trace(with_details, stats);
+            const std::optional<BvhHit> got = trace_inlined(with_details, stats);
             std::optional<TriangleHit> stage_details;
             if (got)
               stage_details = intersect_ray_triangle(ray, mesh.corner(got->primitive, 0), mesh.corner(got->primitive, 1),
@@ -217,7 +227,7 @@ TEST(ReferenceBvh, InlinedTriangleTestGivesTheStageCallsAnswersBitForBit) {
               ++failures;
               ADD_FAILURE() << "ray " << r << " (" << ray << "), " << (any_hit ? "any" : "closest") << " hit, "
                             << width << "-wide tree: "
-                            << (intersector == &inlined ? "inlined " : "four at a time ") << text_of(got) << " after "
+                            << (leaves == &inlined ? "inlined " : "four at a time ") << text_of(got) << " after "
                             << stats.nodes_visited << " nodes and " << stats.primitives_tested
                             << " triangles; by calls " << text_of(expected) << " after " << calls_stats.nodes_visited
                             << " nodes and " << calls_stats.primitives_tested << " triangles";

@@ -12,7 +12,7 @@
 
 #include "test_helpers.h"
 
-#include "../solutions/05c_wide_bvh/wide8.h"  // the reference's 8-wide tree
+#include "../solutions/05c_wide_bvh/fast_tree.h"  // the reference's own trees
 
 #include <gtest/gtest.h>
 
@@ -70,24 +70,24 @@ TEST(Render, OneAndTwoThreadsGiveIdenticalPixels) {
          "cover about a tenth of the picture)";
 }
 
-// The scene's geometry with and without TracingFunctions::reference_stages (one SAH tree over
-// every triangle, tested inlined, against a median tree per mesh and a call per triangle) must
+// The scene's geometry with and without the reference's own tree (TracingFunctions::own_tree:
+// one SAH tree over every triangle, tested inlined, against a median tree per mesh and a call
+// per triangle) must
 // find the same closest t for every ray, bit for bit, and the same occlusion: camera rays at
 // 64 x 48, and rays from points spread over the scene's box in every direction. The triangle
 // found may differ only on a tie (two triangles at the same t: a shared edge, a box's face on
-// the floor), and then the same t is what this checks. reference_tree: the reference's 8-wide
-// tree (as raylab-reference traces), or nullptr for stage 05c's 4-wide one.
-void expect_same_hits_with_reference_stages(const std::string& scene_file, const ReferenceTreeFunctions* reference_tree) {
-  SCOPED_TRACE(reference_tree && reference::eight_wide_tree_runs_here() ? "the 8-wide tree" : "the 4-wide tree");
+// the floor), and then the same t is what this checks. own_tree: the reference's 8-wide tree
+// (as raylab-reference traces, where the CPU runs it) or 4-wide one.
+void expect_same_hits_with_own_tree(const std::string& scene_file, TriangleTreeBuilder own_tree) {
   Scene scene = load_scene(source_path(scene_file));
   scene.camera.width = 64;
   scene.camera.height = 48;
-  TracingFunctions reference_stages;
-  reference_stages.reference_stages = true;
-  reference_stages.reference_tree = reference_tree;
+  TracingFunctions with_own_tree;
+  with_own_tree.own_tree = own_tree;
   const SceneGeometry by_calls(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore);
-  const SceneGeometry inlined(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, reference_stages);
-  ASSERT_GT(inlined.bvh_count(), 0u) << scene_file << ": one tree over every triangle";
+  const SceneGeometry inlined(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, with_own_tree);
+  SCOPED_TRACE(inlined.tree_choice().own_tree);
+  ASSERT_FALSE(inlined.tree_choice().own_tree.empty()) << scene_file << ": one tree over every triangle";
   Bounds3 scene_box;
   for (const TriangleMesh& mesh : scene.meshes)
     for (const glm::vec3& position : mesh.positions) scene_box.extend(position);
@@ -162,27 +162,26 @@ TEST(Render, TellsTheCallerOnceWhenItsWorkersHaveStarted) {
   }
 }
 
-TEST(Render, ReferenceStagesFindTheSameHits) {
-  for (const ReferenceTreeFunctions* tree : {static_cast<const ReferenceTreeFunctions*>(nullptr),
-                                             reference::reference_tree_functions()}) {
-    expect_same_hits_with_reference_stages("scenes/bunny.json", tree);    // one mesh
-    expect_same_hits_with_reference_stages("scenes/cornell.json", tree);  // 8 meshes, no spheres
+TEST(Render, ReferenceOwnTreeFindsTheSameHits) {
+  for (const TriangleTreeBuilder tree : {&reference::build_four_wide_tree, &reference::build_fast_tree}) {
+    expect_same_hits_with_own_tree("scenes/bunny.json", tree);    // one mesh
+    expect_same_hits_with_own_tree("scenes/cornell.json", tree);  // 8 meshes, no spheres
     // Spheres beside the merged triangles: tested one by one (2), under a tree over the objects (4).
-    expect_same_hits_with_reference_stages("scenes/cornell_specular.json", tree);
-    expect_same_hits_with_reference_stages("scenes/mis_plates.json", tree);
+    expect_same_hits_with_own_tree("scenes/cornell_specular.json", tree);
+    expect_same_hits_with_own_tree("scenes/mis_plates.json", tree);
   }
 }
 
-TEST(Render, ReferenceStagesGiveTheSameImage) {
+TEST(Render, ReferenceOwnTreeGivesTheSameImage) {
   // raylab-reference's geometry (one tree, inlined triangle tests) renders the picture of a
   // call per triangle: bit for bit for the bunny (camera rays, shadow rays and reflections,
   // no ties on its mesh); for the Cornell box's paths up to a path that met a tie somewhere
   // (a different triangle at the same t gives a point an ulp away, and the path goes on from
   // there): at most 1% of the pixels, each within 1% of its value.
   for (const std::string scene_file : {"scenes/bunny.json", "scenes/cornell.json"})
-  for (const ReferenceTreeFunctions* tree : {static_cast<const ReferenceTreeFunctions*>(nullptr),
-                                             reference::reference_tree_functions()}) {
-    SCOPED_TRACE(tree && reference::eight_wide_tree_runs_here() ? "the 8-wide tree" : "the 4-wide tree");
+  for (const TriangleTreeBuilder tree : {&reference::build_four_wide_tree, &reference::build_fast_tree}) {
+    SCOPED_TRACE(tree == &reference::build_fast_tree && reference::eight_wide_tree_runs_here() ? "the 8-wide tree"
+                                                                                               : "the 4-wide tree");
     Scene scene = load_scene(source_path(scene_file));
     scene.camera.width = 64;
     scene.camera.height = 48;
@@ -191,8 +190,7 @@ TEST(Render, ReferenceStagesGiveTheSameImage) {
     by_calls.max_depth = scene.max_depth;
     by_calls.samples_per_pixel = scene_file == "scenes/bunny.json" ? 1 : 4;
     RenderSettings inlined = by_calls;
-    inlined.tracing.reference_stages = true;
-    inlined.tracing.reference_tree = tree;
+    inlined.tracing.own_tree = tree;
     const Image expected = render(scene, by_calls);
     const Image got = render(scene, inlined);
     const int allowed = scene_file == "scenes/bunny.json" ? 0 : 64 * 48 / 100;

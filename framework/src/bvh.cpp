@@ -26,20 +26,6 @@ std::ostream& operator<<(std::ostream& out, const BvhNode& node) {
              << "xyz"[node.split_axis % 3];
 }
 
-std::vector<float> triangle_columns(const TriangleEdges* triangles, const std::vector<std::uint32_t>& primitive_order) {
-  const std::size_t stride = primitive_order.size() + 7;
-  std::vector<float> values(9 * stride, 0.0f);
-  for (std::size_t i = 0; i < primitive_order.size(); ++i) {
-    const TriangleEdges& triangle = triangles[primitive_order[i]];
-    for (int axis = 0; axis < 3; ++axis) {
-      values[(0 + axis) * stride + i] = triangle.p0[axis];
-      values[(3 + axis) * stride + i] = triangle.edge_01[axis];
-      values[(6 + axis) * stride + i] = triangle.edge_02[axis];
-    }
-  }
-  return values;
-}
-
 Bvh4Node empty_bvh4_node() {
   Bvh4Node node;
   for (int i = 0; i < kBvh4Width; ++i) {

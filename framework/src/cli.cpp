@@ -75,10 +75,10 @@ struct RenderOptions {
   std::string sample_rate_path;  // empty: no sample-rate image
   bool quiet = false;
   bool watertight = false;
-  bool reference_stages = false;  // the program links solutions/ (LinkedStages::Reference)
-  const ReferenceTreeFunctions* reference_tree = nullptr;  // with reference_stages: run_cli's
-  // --accel: which stage trees (StageTree's words); given, it also makes raylab-reference trace
-  // the reference's code of that tree as a student's program traces the student's.
+  TriangleTreeBuilder own_tree = nullptr;  // run_cli's: the program's own tree, or nullptr
+  // --accel: which stage trees (StageTree's words); given, the program's own tree is not used
+  // (raylab-reference traces the reference's code of that tree as a student's program traces
+  // the student's).
   std::string accel = "best";
   bool accel_given = false;
 };
@@ -89,8 +89,8 @@ std::string tree_choice_text(const SceneGeometry::TreeChoice& choice) {
   std::string text;
   if (choice.small_sets_only) {
     text = "raylab: tree: none needed, every set of primitives is small (4 or fewer): each is tested";
-  } else if (choice.reference) {
-    text = "raylab: tree: the reference's own (SAH, 8 or 4 wide)";
+  } else if (!choice.own_tree.empty()) {
+    text = "raylab: tree: " + choice.own_tree;
   } else {
     switch (choice.used) {
       case StageTree::Median: text = "raylab: tree: your median BVH (stage 05_bvh; --accel median)"; break;
@@ -161,8 +161,7 @@ RenderSetup render_setup(const RenderOptions& options) {
   const std::optional<StageTree> tree = stage_tree_named(options.accel);
   if (!tree) throw UsageError("--accel: unknown tree '" + options.accel + "' (known: best, median, sah, wide, none)");
   settings.tracing.tree = *tree;
-  settings.tracing.reference_stages = options.reference_stages && !options.accel_given;
-  if (settings.tracing.reference_stages) settings.tracing.reference_tree = options.reference_tree;
+  if (!options.accel_given) settings.tracing.own_tree = options.own_tree;
   return {std::move(scene), settings};
 }
 
@@ -213,7 +212,7 @@ int run_render(const RenderOptions& options) {
     samples = text;
   }
   if (options.samples_by_noise) samples += " on average, by noise";
-  // The trees' work per ray, where it was counted (not by the reference's own tree).
+  // The trees' work per ray, where it was counted (not by a program's own tree).
   std::string work;
   const std::uint64_t rays = stats.work.rays();
   if (rays > 0 && stats.nodes_visited + stats.primitives_tested > 0) {
@@ -290,6 +289,8 @@ int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
 // `raylab view-worker` (not listed in --help): the view server's renderer (view_worker.h).
 int run_view_worker_command(const RenderOptions& options, int first_sample, int frames_fd, bool send_tree) {
   RenderSetup setup = render_setup(options);
+  // The view draws the levels of the trees it traces: the stage trees, not a program's own.
+  setup.settings.tracing.own_tree = nullptr;
   setup.settings.first_sample = first_sample;
   if (first_sample >= setup.settings.samples_per_pixel)
     throw UsageError("--first-sample " + std::to_string(first_sample) + ": the render has " +
@@ -326,13 +327,12 @@ int run_view(const char* program, const std::vector<std::string>& arguments) {
 
 }  // namespace
 
-int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunctions* reference_tree,
+int run_cli(int argc, char** argv, LinkedStages stages, TriangleTreeBuilder own_tree,
             const TracingFunctions* contract) {
   CLI::App app{"raylab: a step-by-step ray tracer (course kit)"};
   app.require_subcommand(1);
   RenderOptions options;
-  options.reference_stages = stages == LinkedStages::Reference;
-  options.reference_tree = reference_tree;
+  options.own_tree = own_tree;
   CLI::App* render_command = app.add_subcommand("render", "Render a scene file to an image");
   render_command->add_option("scene", options.scene_path, "Scene file (JSON), e.g. scenes/whitted.json")->required();
   render_command->add_option("-o,--output", options.output_path, "Output image: .png, .exr or .ppm")->required();
@@ -465,8 +465,8 @@ int run_cli(int argc, char** argv, LinkedStages stages, const ReferenceTreeFunct
   }
 
   options.accel_given = render_command->count("--accel") > 0;
-  bench_options.reference_program = options.reference_stages;
-  bench_options.reference_tree = reference_tree;
+  bench_options.reference_program = stages == LinkedStages::Reference;
+  bench_options.own_tree = own_tree;
   try {
     if (*render_command) return run_render(options);
     if (*bench_command) return run_tree_bench(bench_options);

@@ -8,7 +8,6 @@
 #include "raylab/trace_recorder.h"
 
 #include <cmath>
-#include <limits>
 
 namespace raylab {
 
@@ -25,20 +24,6 @@ SceneGeometry::Work SceneGeometry::take_thread_work() {
   const Work work = thread_tree_work;
   thread_tree_work = Work();
   return work;
-}
-
-std::optional<BvhHit> SceneGeometry::traverse_the_4_wide_tree(const Ray& ray, bool any_hit,
-                                                              TriangleHit* closest_hit) const {
-  // The traversal tests the triangles itself (their columns) where it can; the calls below are
-  // there for a leaf test that would not.
-  HitRecord record;
-  Query query{this, &record, any_hit, triangles_.data(), 0};
-  PrimitiveIntersector intersector{&SceneGeometry::test_triangle, &query};
-  intersector.triangles = triangle_edges_.data();
-  intersector.columns = the_one_tree_columns_;
-  intersector.closest_triangle_hit = closest_hit;
-  BvhTraversalStats stats;
-  return intersect_bvh4(meshes_.front().wide, ray, intersector, any_hit, stats);
 }
 
 RAYLAB_RECORDED_VERSION std::optional<SurfaceHit> SceneGeometry::intersect_recorded(const Ray& ray) const {
@@ -61,28 +46,12 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     result = intersect_recorded(ray);
     return result;
   }
-  if (straight_into_the_one_tree_) {
-    TriangleHit details{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
-    if (the_one_reference_tree_) {
-      std::uint32_t triangle = 0;
-      if (!reference_tree_functions_->closest_triangle(the_one_reference_tree_, ray, the_one_tree_columns_, triangle,
-                                                       details) ||
-          triangle >= triangles_.size())
-        return result;
-      if (!std::isnan(details.t_hit)) {  // written, as it must be (else the general query below)
-        fill_triangle_surface_hit(result.emplace(), triangle, details, ray);
-        return result;
-      }
-    } else {
-      const std::optional<BvhHit> hit = traverse_the_4_wide_tree(ray, /*any_hit=*/false, &details);
-      if (!hit || hit->primitive >= triangles_.size()) return result;
-      // The details are of the hit returned (unless a 4-wide leaf test without them ran: then
-      // the general query below).
-      if (details.t_hit == hit->t_hit) {
-        fill_triangle_surface_hit(result.emplace(), hit->primitive, details, ray);
-        return result;
-      }
-    }
+  if (only_tree_) {
+    std::uint32_t triangle = 0;
+    TriangleHit details;
+    if (only_tree_->closest_hit(ray, triangle, details) && triangle < triangles_.size())
+      fill_triangle_surface_hit(result.emplace(), triangle, details, ray);
+    return result;
   }
   // Find the closest t first (shrinking t_max after every hit), then fill the record once.
   HitRecord record;
@@ -130,10 +99,7 @@ void SceneGeometry::fill_triangle_surface_hit(SurfaceHit& hit, std::uint32_t tri
 
 bool SceneGeometry::occluded(const Ray& ray) const {
   if (RAYLAB_UNLIKELY(active_trace_recorder)) return occluded_recorded(ray);
-  if (straight_into_the_one_tree_)
-    return the_one_reference_tree_
-               ? reference_tree_functions_->any_triangle(the_one_reference_tree_, ray, the_one_tree_columns_)
-               : traverse_the_4_wide_tree(ray, /*any_hit=*/true, nullptr).has_value();
+  if (only_tree_) return only_tree_->any_hit(ray).has_value();
   HitRecord record;
   Query query{this, &record, /*any_hit=*/true};
   return intersect_objects(ray, query).has_value();

@@ -7,8 +7,11 @@
 // them; geometry.cpp: the public queries and the hit details.)
 #include "raylab/geometry.h"
 
+#include "tree_answers.h"
+
 #include "raylab/bvh_tools.h"
 #include "raylab/error.h"
+#include "raylab/random.h"
 #include "raylab/stages/02_sphere.h"
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
@@ -74,6 +77,11 @@ std::optional<std::string> wide_tree_problem(const Bvh4& wide, std::size_t primi
   return std::nullopt;
 }
 
+Bounds3 sphere_bounds(const Sphere& sphere) {
+  const glm::vec3 reach(std::fabs(sphere.radius));
+  return {sphere.center - reach, sphere.center + reach};
+}
+
 Bounds3 triangle_bounds(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
   Bounds3 box;
   box.extend(p0);
@@ -91,16 +99,15 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
                           : triangle_test == TriangleTest::Watertight ? intersect_ray_triangle_watertight
                                                                       : intersect_ray_triangle),
       intersect_sphere_(tracing.sphere ? tracing.sphere : intersect_ray_sphere) {
-  // The reference's own stages (raylab-reference, bench/) trace every triangle of the scene
-  // through one SAH tree (stage 05b), 8 wide (TracingFunctions::reference_tree) or else 4 wide
-  // (stage 05c): no tree per mesh under a tree over the objects, and no calls for the small
-  // meshes (a wall of two triangles) that a per-mesh tree would not pay for. The same closest
-  // hits; a student's program keeps a median tree per mesh, as the header says.
-  reference_trees_ = tracing.reference_stages && !tracing.replaces_primitive_tests();
-  if (reference_trees_) reference_tree_functions_ = tracing.reference_tree;
+  // A program's own tree (TracingFunctions::own_tree) takes every triangle of the scene at once:
+  // no tree per mesh under a tree over the objects, and no tests one by one for the small meshes
+  // (a wall of two triangles) that a tree per mesh would not pay for. Only with stage 03's
+  // Moller-Trumbore test, which the own tree tests itself.
+  const bool own_tree = tracing.own_tree && !tracing.replaces_primitive_tests() &&
+                        triangle_test == TriangleTest::MollerTrumbore && acceleration != Acceleration::BruteForce;
   for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
     const TriangleMesh& mesh = scene.meshes[m];
-    if (meshes_.empty() || !reference_trees_) {
+    if (meshes_.empty() || !own_tree) {
       meshes_.emplace_back();
       meshes_.back().first_triangle = static_cast<std::uint32_t>(triangles_.size());
     }
@@ -113,43 +120,32 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
     }
     part.triangle_count = static_cast<std::uint32_t>(triangles_.size()) - part.first_triangle;
   }
+  if (own_tree && !triangles_.empty()) {
+    std::vector<glm::vec3> corners;
+    corners.reserve(3 * triangles_.size());
+    for (const Triangle& triangle : triangles_) corners.insert(corners.end(), {triangle.p0, triangle.p1, triangle.p2});
+    const std::shared_ptr<const TriangleTree> tree = tracing.own_tree(corners);
+    meshes_.front().own_tree = tree;
+    tree_choice_.own_tree = tree->name();
+    if (spheres_.empty()) only_tree_ = tree.get();
+  }
   if (acceleration == Acceleration::BvhAlways) brute_force_limit_ = 0;
   if (tracing.replaces_primitive_tests() && !tracing.keep_trees) acceleration = Acceleration::BruteForce;
-  tree_choice_.reference = reference_trees_;
-  const StageTree tree = reference_trees_ ? StageTree::Sah : tracing.tree;
+  // With an own tree, the stage trees are only the tree over the objects (spheres and the own
+  // tree's triangles): the median one, tried on nothing else.
+  const StageTree tree = own_tree && tracing.tree != StageTree::None ? StageTree::Median : tracing.tree;
   if (acceleration != Acceleration::BruteForce && tree != StageTree::None) {
     if (tree == StageTree::Best)
       build_best_trees(triangle_test, tracing);
     else
       build_bvhs(tree);
   }
-  only_one_tree_ = reference_trees_ && spheres_.empty() && meshes_.size() == 1 && !meshes_.front().bvh.nodes.empty();
-  // bvh_count() is 0 when testing every primitive (brute force, or stage 05 a stub).
-  hand_triangles_to_traversal_ = reference_trees_ && triangle_test == TriangleTest::MollerTrumbore && bvh_count() > 0;
-  if (hand_triangles_to_traversal_) {
-    triangle_edges_.reserve(triangles_.size());
-    for (const Triangle& triangle : triangles_)
-      triangle_edges_.push_back(TriangleEdges::of(triangle.p0, triangle.p1, triangle.p2));
-    // The reference's trees also get the triangles as columns, for its four-at-a-time leaf test.
-    // (Both trees keep the binary tree's primitive_order: the identity, in leaf order.)
-    for (MeshPart& mesh : meshes_)
-      if (!mesh.wide.nodes.empty() || mesh.reference_tree)
-        mesh.columns = triangle_columns(triangle_edges_.data() + mesh.first_triangle, mesh.bvh.primitive_order);
-  }
-  straight_into_the_one_tree_ =
-      only_one_tree_ && hand_triangles_to_traversal_ && !meshes_.front().columns.empty() &&
-      (!meshes_.front().reference_tree ||
-       (reference_tree_functions_->closest_triangle && reference_tree_functions_->any_triangle));
-  if (straight_into_the_one_tree_) {
-    the_one_reference_tree_ = meshes_.front().reference_tree.get();
-    the_one_tree_columns_ = TriangleColumns::of(meshes_.front().columns);
-  }
 }
 
 void SceneGeometry::build_bvhs(StageTree tree) {
   tree_choice_.used = tree;
   // Wide: over the SAH tree where stage 05b is written, else over the median one.
-  bool sah = reference_trees_ || tree == StageTree::Sah || tree == StageTree::Wide;
+  bool sah = tree == StageTree::Sah || tree == StageTree::Wide;
   const auto build = [&](const std::vector<Bounds3>& boxes) {
     if (sah && tree == StageTree::Wide) {
       try {
@@ -163,14 +159,14 @@ void SceneGeometry::build_bvhs(StageTree tree) {
   };
   // A broken tree named by the stage whose build made it (BrokenBvh names stage 05's).
   const auto check = [&](const Bvh& bvh, const std::vector<Bounds3>& boxes, const std::optional<std::string>& name) {
-    if (!sah || reference_trees_) return check_tree(bvh, boxes, name);
+    if (!sah) return check_tree(bvh, boxes, name);
     if (const std::optional<BvhViolation> broken = find_bvh_violation(bvh, boxes, kBvhLeafSize))
       throw std::runtime_error("stage 05b_bvh_sah: build_bvh_sah over " + std::to_string(boxes.size()) + " boxes (" +
                                name.value_or("the scene's objects") + ") returned a broken tree: " + describe(*broken));
   };
   try {
     for (MeshPart& mesh : meshes_) {
-      if (mesh.triangle_count <= brute_force_limit_) continue;
+      if (mesh.triangle_count <= brute_force_limit_ || mesh.own_tree) continue;
       Triangle* first = triangles_.data() + mesh.first_triangle;
       std::vector<Bounds3> boxes;
       boxes.reserve(mesh.triangle_count);
@@ -189,10 +185,7 @@ void SceneGeometry::build_bvhs(StageTree tree) {
         mesh.bvh.primitive_order[i] = i;
       }
       std::copy(reordered.begin(), reordered.end(), first);
-      if (reference_trees_) {
-        if (reference_tree_functions_) mesh.reference_tree = reference_tree_functions_->build(mesh.bvh);
-        if (!mesh.reference_tree) mesh.wide = collapse_bvh4(mesh.bvh);
-      } else if (tree == StageTree::Wide) {
+      if (tree == StageTree::Wide) {
         mesh.wide = collapse_bvh4(mesh.bvh);
         if (const std::optional<std::string> problem = wide_tree_problem(mesh.wide, mesh.triangle_count))
           throw std::runtime_error("stage 05c_wide_bvh: collapse_bvh4 over the tree of " + name +
@@ -203,14 +196,10 @@ void SceneGeometry::build_bvhs(StageTree tree) {
     if (object_count > brute_force_limit_) {
       std::vector<Bounds3> boxes;
       boxes.reserve(object_count);
-      for (const Sphere& sphere : spheres_)
-        boxes.emplace_back(sphere.center - glm::vec3(sphere.radius), sphere.center + glm::vec3(sphere.radius));
+      for (const Sphere& sphere : spheres_) boxes.push_back(sphere_bounds(sphere));
       for (const MeshPart& mesh : meshes_) boxes.push_back(mesh.bounds);
-      objects_bvh_ = reference_trees_ ? build_bvh(boxes, kBvhLeafSize) : build(boxes);
-      if (reference_trees_)
-        check_tree(objects_bvh_, boxes, std::nullopt);
-      else
-        check(objects_bvh_, boxes, std::nullopt);
+      objects_bvh_ = build(boxes);
+      check(objects_bvh_, boxes, std::nullopt);
     }
     // A traversal needs the box test (stage 04_box) and intersect_bvh (and for the 4-wide trees
     // intersect_bvh4 and intersect_ray_box4): find out now, with one query, whether they are
@@ -220,7 +209,7 @@ void SceneGeometry::build_bvhs(StageTree tree) {
     const Bvh4* probe_wide = nullptr;
     for (const MeshPart& mesh : meshes_) {
       if (!probe_bvh && !mesh.bvh.nodes.empty()) probe_bvh = &mesh.bvh;
-      if (!probe_wide && !mesh.wide.nodes.empty() && !reference_trees_) probe_wide = &mesh.wide;
+      if (!probe_wide && !mesh.wide.nodes.empty()) probe_wide = &mesh.wide;
     }
     const PrimitiveIntersector hits_nothing{
         [](void*, const Ray&, std::uint32_t) -> std::optional<float> { return std::nullopt; }, nullptr};
@@ -239,10 +228,12 @@ void SceneGeometry::build_bvhs(StageTree tree) {
       BvhTraversalStats stats;
       (void)intersect_bvh4(*probe_wide, probe, hits_nothing, /*any_hit=*/false, stats);
     }
-    if (!probe_bvh) {  // no set of primitives large enough for a tree
+    if (!probe_bvh && !meshes_.empty() && meshes_.front().own_tree) {  // only the own tree: no stage tree needed
+      tree_choice_.used = StageTree::None;
+    } else if (!probe_bvh) {  // no set of primitives large enough for a tree
       tree_choice_.used = StageTree::None;
       tree_choice_.small_sets_only = true;
-    } else if (tree == StageTree::Wide && !probe_wide && !reference_trees_) {
+    } else if (tree == StageTree::Wide && !probe_wide) {
       tree_choice_.used = sah ? StageTree::Sah : StageTree::Median;
       tree_choice_.passed_over.push_back("wide: no mesh has more than " + std::to_string(brute_force_limit_) +
                                          " triangles, so none has a 4-wide tree");
@@ -258,7 +249,6 @@ void SceneGeometry::drop_trees() {
   for (MeshPart& mesh : meshes_) {
     mesh.bvh = Bvh();
     mesh.wide = Bvh4();
-    mesh.reference_tree.reset();
   }
   objects_bvh_ = Bvh();
   tree_choice_.used = StageTree::None;
@@ -315,27 +305,18 @@ void SceneGeometry::build_best_trees(TriangleTest triangle_test, const TracingFu
 
 std::optional<std::string> SceneGeometry::differs_from(const SceneGeometry& every_primitive) const {
   Bounds3 bounds;
-  for (const Sphere& sphere : spheres_) {
-    bounds.extend(sphere.center - glm::vec3(std::fabs(sphere.radius)));
-    bounds.extend(sphere.center + glm::vec3(std::fabs(sphere.radius)));
-  }
+  for (const Sphere& sphere : spheres_) bounds.extend(sphere_bounds(sphere));
   for (const MeshPart& mesh : meshes_) bounds.extend(mesh.bounds);
   if (!(bounds.min.x <= bounds.max.x)) return std::nullopt;
   // Rays from the camera and from points around the scene to points in it: as many as keep the
   // testing of every primitive to about 4 million tests.
   const std::size_t primitives = std::max<std::size_t>(1, spheres_.size() + triangles_.size());
   const std::size_t ray_count = std::clamp<std::size_t>(4000000 / primitives, 16, 256);
-  std::uint64_t state = 0x2545F4914F6CDD1Dull;
-  const auto random = [&state] {  // splitmix64, in [0, 1)
-    state += 0x9E3779B97F4A7C15ull;
-    std::uint64_t z = state;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return static_cast<float>((z ^ (z >> 31)) >> 40) * 0x1.0p-24f;
-  };
+  Pcg32 random(mix_bits(primitives));  // the same rays for the same scene
   const glm::vec3 size = bounds.max - bounds.min;
   const auto point_in = [&](float grow) {
-    return bounds.min - grow * size + (1.0f + 2.0f * grow) * glm::vec3(random(), random(), random()) * size;
+    const float x = random.next_float(), y = random.next_float(), z = random.next_float();
+    return bounds.min - grow * size + (1.0f + 2.0f * grow) * glm::vec3(x, y, z) * size;
   };
   const auto t_text = [](const std::optional<SurfaceHit>& hit) {
     return hit ? "a hit at t = " + std::to_string(hit->t_hit) : std::string("no hit");
@@ -346,9 +327,8 @@ std::optional<std::string> SceneGeometry::differs_from(const SceneGeometry& ever
     if (!(glm::dot(direction, direction) > 0.0f)) continue;
     const Ray ray = make_ray(origin, direction);
     const std::optional<SurfaceHit> yours = intersect(ray), expected = every_primitive.intersect(ray);
-    const bool same = yours.has_value() == expected.has_value() &&
-                      (!yours || std::fabs(yours->t_hit - expected->t_hit) <= 1e-6f * std::max(1.0f, expected->t_hit));
-    if (!same)
+    if (!same_closest_t(yours ? std::optional<float>(yours->t_hit) : std::nullopt,
+                        expected ? std::optional<float>(expected->t_hit) : std::nullopt))
       return "its closest hit differs from testing every primitive on ray " + std::to_string(i) + " of " +
              std::to_string(ray_count) + " through the scene (" + t_text(yours) + ", not " + t_text(expected) + ")";
     if (occluded(ray) != every_primitive.occluded(ray))
@@ -360,7 +340,7 @@ std::optional<std::string> SceneGeometry::differs_from(const SceneGeometry& ever
 
 std::size_t SceneGeometry::bvh_count() const {
   std::size_t count = objects_bvh_.nodes.empty() ? 0 : 1;
-  for (const MeshPart& mesh : meshes_) count += mesh.bvh.nodes.empty() ? 0 : 1;
+  for (const MeshPart& mesh : meshes_) count += mesh.bvh.nodes.empty() && !mesh.own_tree ? 0 : 1;
   return count;
 }
 

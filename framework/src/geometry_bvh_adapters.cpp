@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <unordered_set>
 #include <vector>
 
@@ -58,22 +57,19 @@ std::optional<float> SceneGeometry::test_object(void* context, const Ray& ray, s
 std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const Ray& ray, Query& query) const {
   query.mesh_triangles = triangles_.data() + mesh.first_triangle;
   query.mesh_first_triangle = mesh.first_triangle;
+  if (mesh.own_tree && !query.watch) {  // (walk_to's watched query tests each triangle below)
+    if (query.any_hit) return mesh.own_tree->any_hit(ray);
+    std::uint32_t triangle = 0;
+    TriangleHit details;
+    if (!mesh.own_tree->closest_hit(ray, triangle, details) || triangle >= mesh.triangle_count) return std::nullopt;
+    if (details.t_hit < query.record->t_hit) query.record->set_triangle(mesh.first_triangle + triangle, details);
+    return details.t_hit;
+  }
   if (!mesh.bvh.nodes.empty()) {
     BvhTraversalStats stats;
     PrimitiveIntersector intersector{query.watch ? &SceneGeometry::test_triangle_watched : &SceneGeometry::test_triangle,
                                      &query};
-    // hand_triangles_to_traversal_: the closest hit's details, from the traversal's own test
-    // (t NaN until it writes them). Not while walk_to watches the tests.
-    TriangleHit inlined_hit{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
-    if (hand_triangles_to_traversal_ && !query.watch) {
-      intersector.triangles = triangle_edges_.data() + mesh.first_triangle;
-      if (!mesh.columns.empty()) intersector.columns = TriangleColumns::of(mesh.columns);
-      if (!query.any_hit) intersector.closest_triangle_hit = &inlined_hit;
-    }
-    // The reference's own programs traverse its 8-wide tree, or the 4-wide one (same hits).
     const auto traverse = [&](bool any_hit) {
-      if (mesh.reference_tree)
-        return reference_tree_functions_->intersect(mesh.reference_tree.get(), ray, intersector, any_hit, stats);
       return mesh.wide.nodes.empty() ? intersect_bvh(mesh.bvh, ray, intersector, any_hit, stats)
                                      : intersect_bvh4(mesh.wide, ray, intersector, any_hit, stats);
     };
@@ -94,11 +90,7 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     query.record = query_record;
     if (!hit || hit->primitive >= mesh.triangle_count) return std::nullopt;
     const std::uint32_t returned = mesh.first_triangle + hit->primitive;
-    if (hand_triangles_to_traversal_ && inlined_hit.t_hit == hit->t_hit) {
-      // The reference traversal tested the triangles itself, inlined, and wrote the details of
-      // the closest hit it returns (the same bits as stage 03's reference function gives).
-      mesh_record.set_triangle(returned, inlined_hit);
-    } else if (mesh_record.kind != Kind::Triangle || mesh_record.index != returned || mesh_record.t_hit != hit->t_hit) {
+    if (mesh_record.kind != Kind::Triangle || mesh_record.index != returned || mesh_record.t_hit != hit->t_hit) {
       // The traversal returned another triangle than the closest one reported to the test
       // (a tie, or a traversal that is wrong): shade the one it returned.
       const Triangle& tri = triangles_[returned];
@@ -243,7 +235,7 @@ SceneGeometry::TreeWalk SceneGeometry::walk_to(const Ray& ray, std::optional<std
       if (tree.primitive_order[i] < by_primitive.size()) by_primitive[tree.primitive_order[i]] = leaf[i];
     return by_primitive;
   };
-  const bool object_tree = !only_one_tree_ && !objects_bvh_.nodes.empty();
+  const bool object_tree = !objects_bvh_.nodes.empty();
   const std::vector<std::uint32_t> object_leaf = object_tree ? leaf_of(objects_bvh_) : std::vector<std::uint32_t>{};
   std::vector<std::vector<std::uint32_t>> part_leaf(meshes_.size());
   std::unordered_set<std::uint64_t> seen;  // the tree (0 over the objects, else 1 + the part) and leaf

@@ -50,12 +50,9 @@ struct SceneGeometry::Query {
 // and each set of primitives tested one by one.
 inline thread_local SceneGeometry::Work thread_tree_work;
 
-// Straight into the one tree when it is all there is (the reference's programs, a scene
-// without spheres), else through the top-level BVH (geometry_bvh_adapters.cpp), or without
-// one, every object in turn (geometry_brute_force.cpp). Inline, so that the public queries
-// call either directly.
+// Through the top-level BVH (geometry_bvh_adapters.cpp), or without one, every object in turn
+// (geometry_brute_force.cpp). Inline, so that the public queries call either directly.
 inline std::optional<float> SceneGeometry::intersect_objects(const Ray& ray, Query& query) const {
-  if (only_one_tree_) return intersect_mesh(meshes_.front(), ray, query);
   if (!objects_bvh_.nodes.empty()) return intersect_objects_through_bvh(ray, query);
   return intersect_every_object(ray, query);
 }

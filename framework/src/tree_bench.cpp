@@ -1,6 +1,8 @@
 // raylab bench: the student's trees side by side on one scene (raylab/tree_bench.h).
 #include "raylab/tree_bench.h"
 
+#include "tree_answers.h"
+
 #include "raylab/error.h"
 #include "raylab/render.h"
 #include "raylab/scene_loader.h"
@@ -155,8 +157,8 @@ std::vector<TreeBenchRow> bench_trees(const Scene& scene, const TreeBenchOptions
       // Its answers against testing every primitive (not timed).
       for (std::size_t i = 0, k = 0; i < rays.size(); i += check_step, ++k) {
         const std::optional<SurfaceHit> hit = geometry.intersect(rays[i]);
-        const bool same_closest = hit.has_value() == expected_t[k].has_value() &&
-                                  (!hit || std::fabs(hit->t_hit - *expected_t[k]) <= 1e-6f * std::max(1.0f, *expected_t[k]));
+        const bool same_closest =
+            same_closest_t(hit ? std::optional<float>(hit->t_hit) : std::nullopt, expected_t[k]);
         if (!same_closest || geometry.occluded(rays[i]) != expected_blocked[k]) ++row.wrong;
         ++row.checked;
       }
@@ -175,10 +177,9 @@ std::vector<TreeBenchRow> bench_trees(const Scene& scene, const TreeBenchOptions
     row.tree = stage_tree_name(tree);
     measure(row, tracing, tree);
   }
-  if (options.reference_program) {
+  if (options.own_tree) {
     TracingFunctions tracing;
-    tracing.reference_stages = true;
-    tracing.reference_tree = options.reference_tree;
+    tracing.own_tree = options.own_tree;
     TreeBenchRow row;
     row.tree = "reference";
     measure(row, tracing, std::nullopt);

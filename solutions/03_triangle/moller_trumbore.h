@@ -1,10 +1,10 @@
 // The reference's Moller-Trumbore test (stage 03_triangle) as an inline function over a
 // triangle given by its first vertex and its two edges from it. solutions/03_triangle/
-// triangle.cpp wraps it as the stage function; the reference traversals
-// (solutions/05_bvh/leaf_test.h) run it on the framework's triangles in leaf order
-// (TriangleEdges, raylab/stages/05_bvh.h) instead of a call per triangle. Both run the same
+// triangle.cpp wraps it as the stage function; the reference's own trees over a scene's
+// triangles (solutions/05_bvh/leaf_test.h) run it on the triangles in leaf order
+// (TriangleEdges) instead of a call per triangle. Both run the same
 // source on the same edges (p1 - p0 and p2 - p0 round the same whether computed here or
-// once by the framework), so both give the same bits. Not part of any student contract.
+// once by the tree), so both give the same bits. Not part of any student contract.
 #pragma once
 
 #include "raylab/stages/03_triangle.h"

@@ -8,9 +8,9 @@
 // splits at once (one per SSE lane) or, in nodes of few primitives, only the splits after used
 // bins, trees of 64k primitives and more build their top subtrees on several threads (all of it
 // the same tree bit for bit), and the traversal inlines the reference's own box test
-// (solutions/04_box/box_slabs.h) and tests both children at their parent, and tests the
-// renderer's triangles with the reference's own stage-03 test inlined
-// (solutions/03_triangle/moller_trumbore.h; PrimitiveIntersector::triangles).
+// (solutions/04_box/box_slabs.h) and tests both children at their parent; and for the
+// reference's own tree over a scene's triangles, reference::intersect_bvh_inlined tests them
+// with the reference's own stage-03 test inlined (solutions/03_triangle/moller_trumbore.h).
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
 
@@ -553,15 +553,22 @@ std::optional<BvhHit> traverse(const Bvh& bvh, const Ray& ray, bool any_hit, Bvh
 
 }  // namespace
 
-// The renderer's meshes come with their triangles (PrimitiveIntersector::triangles): then
-// the reference's own Moller-Trumbore runs inlined in the leaf loop, instead of two indirect
-// calls per triangle (intersector.test into the framework, the framework into stage 03)
-// (leaf_test.h).
 std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray,
                                     const PrimitiveIntersector& intersector, bool any_hit,
                                     BvhTraversalStats& stats) {
   if (bvh.nodes.empty()) return std::nullopt;
   return reference::with_leaf_test(intersector, bvh.primitive_order.data(), [&](const auto& test_leaf) {
+    return traverse(bvh, ray, any_hit, stats, test_leaf);
+  });
+}
+
+// The same, the reference's own Moller-Trumbore inlined in the leaf loop instead of two
+// indirect calls per triangle (intersector.test into the framework, the framework into
+// stage 03) (leaf_test.h).
+std::optional<BvhHit> reference::intersect_bvh_inlined(const Bvh& bvh, const Ray& ray, const LeafTriangles& triangles,
+                                                       bool any_hit, BvhTraversalStats& stats) {
+  if (bvh.nodes.empty()) return std::nullopt;
+  return with_leaf_test(triangles, bvh.primitive_order.data(), [&](const auto& test_leaf) {
     return traverse(bvh, ray, any_hit, stats, test_leaf);
   });
 }

@@ -1,21 +1,24 @@
 // How the reference traversals (solutions/05_bvh/bvh.cpp, solutions/05c_wide_bvh/wide_bvh.cpp)
-// test a leaf's primitives. By a call of intersector.test each, as the contract says; when the
-// renderer hands over the triangles (PrimitiveIntersector::triangles), with the reference's
-// own Moller-Trumbore (moller_trumbore.h, the same source as its stage 03) inlined; and when it
-// also hands over their columns in leaf order (PrimitiveIntersector::columns), four triangles
-// at a time with SSE, the same operations in the same order in each lane. Every way gives the
-// same hit, the same bits of t (and of the barycentrics, where the inlined tests hand them to
-// PrimitiveIntersector::closest_triangle_hit) and the same count of triangles tested. Not part
-// of any student contract.
+// test a leaf's primitives. As the stage contract says, by a call of intersector.test each. And
+// for the reference's own trees over a scene's triangles (solutions/05c_wide_bvh/fast_tree.h)
+// and bench/, which hold the triangles themselves (LeafTriangles below): with the reference's
+// own Moller-Trumbore (moller_trumbore.h, the same source as its stage 03) inlined, and with
+// their columns in leaf order, four triangles at a time with SSE, the same operations in the
+// same order in each lane. Every way gives the same hit, the same bits of t (and of the
+// barycentrics, where the inlined tests hand them to LeafTriangles::closest_triangle_hit) and
+// the same count of triangles tested. Not part of any student contract.
 #pragma once
 
 #include "../03_triangle/moller_trumbore.h"
 
 #include "raylab/stages/05_bvh.h"
+#include "raylab/stages/05c_wide_bvh.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <vector>
 
 #if defined(__SSE2__) || defined(_M_X64)
 #include <xmmintrin.h>
@@ -23,6 +26,57 @@
 #endif
 
 namespace raylab::reference {
+
+// One triangle as the inlined test takes it: its first vertex and its two edges from there,
+// p1 - p0 and p2 - p0.
+struct TriangleEdges {
+  glm::vec3 p0{0.0f}, edge_01{0.0f}, edge_02{0.0f};
+
+  static TriangleEdges of(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+    return {p0, p1 - p0, p2 - p0};
+  }
+};
+
+// The same triangles as nine columns of floats (p0.x, p0.y, p0.z, edge_01.x, ... edge_02.z),
+// in the order of a tree's primitive_order: column c of the triangle at position i is
+// values[c * stride + i], and each column ends with 7 values of padding, so that a leaf test
+// loads four or eight neighbours' coordinates at once (triangle_columns() makes them).
+struct TriangleColumns {
+  const float* values = nullptr;
+  std::size_t stride = 0;
+
+  // The columns that triangle_columns() made (nine of `stride` values each).
+  // It points into `made`, which must outlive it (hence no temporaries).
+  static TriangleColumns of(const std::vector<float>& made) { return {made.data(), made.size() / 9}; }
+  static TriangleColumns of(std::vector<float>&&) = delete;
+};
+
+// The columns of triangles[primitive_order[i]] for every position i, padded: their stride is
+// primitive_order.size() + 7 (TriangleColumns::of takes it from them).
+inline std::vector<float> triangle_columns(const TriangleEdges* triangles,
+                                           const std::vector<std::uint32_t>& primitive_order) {
+  const std::size_t stride = primitive_order.size() + 7;
+  std::vector<float> values(9 * stride, 0.0f);
+  for (std::size_t i = 0; i < primitive_order.size(); ++i) {
+    const TriangleEdges& triangle = triangles[primitive_order[i]];
+    for (int axis = 0; axis < 3; ++axis) {
+      values[(0 + axis) * stride + i] = triangle.p0[axis];
+      values[(3 + axis) * stride + i] = triangle.edge_01[axis];
+      values[(6 + axis) * stride + i] = triangle.edge_02[axis];
+    }
+  }
+  return values;
+}
+
+// The triangles a tree's leaves hold, for the inlined tests: triangles[primitive] is the
+// triangle of the caller's index `primitive` (a value of primitive_order); optionally their
+// columns in the tree's leaf order (tested four at a time), and where the t and barycentrics
+// of each closer hit found go.
+struct LeafTriangles {
+  const TriangleEdges* triangles = nullptr;
+  TriangleColumns columns = {};
+  TriangleHit* closest_triangle_hit = nullptr;
+};
 
 // A leaf's test, as the traversals call it: the primitives at positions [begin, end) of
 // primitive_order, in that order; each hit in (search.t_min, search.t_max) lowers
@@ -99,7 +153,7 @@ inline unsigned moller_trumbore4(const Ray& ray, const TriangleColumns& columns,
 struct FourAtATime {
   const std::uint32_t* primitive_order;
   TriangleColumns columns;
-  TriangleHit* closest_triangle_hit;  // PrimitiveIntersector::closest_triangle_hit: nullptr or where each closer hit goes
+  TriangleHit* closest_triangle_hit;  // LeafTriangles::closest_triangle_hit: nullptr or where each closer hit goes
 
   void operator()(Ray& search, std::uint32_t begin, std::uint32_t end, bool any_hit,
                   std::optional<BvhHit>& closest, std::uint64_t& tested) const {
@@ -132,30 +186,42 @@ struct FourAtATime {
   }
 };
 
-// traverse(test_leaf) with the fastest leaf test the intersector allows (see above).
+// traverse(test_leaf) with the fastest leaf test `triangles` allow (see above).
+template <typename Traverse>
+std::optional<BvhHit> with_leaf_test(const LeafTriangles& leaf_triangles, const std::uint32_t* primitive_order,
+                                     const Traverse& traverse) {
+#if RAYLAB_REFERENCE_LEAF_SSE
+  if (leaf_triangles.columns.values)
+    return traverse(FourAtATime{primitive_order, leaf_triangles.columns, leaf_triangles.closest_triangle_hit});
+#endif
+  // (Every hit a leaf test returns lowers search.t_max: each is closer than the one before.)
+  const auto test = [triangles = leaf_triangles.triangles,
+                     closest_triangle_hit = leaf_triangles.closest_triangle_hit](const Ray& search,
+                                                                                std::uint32_t primitive) {
+    const TriangleEdges& triangle = triangles[primitive];
+    TriangleHit hit;
+    if (!moller_trumbore(search, triangle.p0, triangle.edge_01, triangle.edge_02, hit)) return std::optional<float>();
+    if (closest_triangle_hit) *closest_triangle_hit = hit;
+    return std::optional<float>(hit.t_hit);
+  };
+  return traverse(OneAfterAnother<decltype(test)>{primitive_order, test});
+}
+
+// traverse(test_leaf) with a call of intersector.test per primitive, as the contract says.
 template <typename Traverse>
 std::optional<BvhHit> with_leaf_test(const PrimitiveIntersector& intersector, const std::uint32_t* primitive_order,
                                      const Traverse& traverse) {
-  if (const TriangleEdges* triangles = intersector.triangles) {
-#if RAYLAB_REFERENCE_LEAF_SSE
-    if (intersector.columns.values)
-      return traverse(FourAtATime{primitive_order, intersector.columns, intersector.closest_triangle_hit});
-#endif
-    // (Every hit a leaf test returns lowers search.t_max: each is closer than the one before.)
-    const auto test = [triangles, closest_triangle_hit = intersector.closest_triangle_hit](const Ray& search,
-                                                                                          std::uint32_t primitive) {
-      const TriangleEdges& triangle = triangles[primitive];
-      TriangleHit hit;
-      if (!moller_trumbore(search, triangle.p0, triangle.edge_01, triangle.edge_02, hit)) return std::optional<float>();
-      if (closest_triangle_hit) *closest_triangle_hit = hit;
-      return std::optional<float>(hit.t_hit);
-    };
-    return traverse(OneAfterAnother<decltype(test)>{primitive_order, test});
-  }
   const auto test = [&intersector](const Ray& search, std::uint32_t primitive) {
     return intersector.test(intersector.context, search, primitive);
   };
   return traverse(OneAfterAnother<decltype(test)>{primitive_order, test});
 }
+
+// intersect_bvh (solutions/05_bvh/bvh.cpp) and intersect_bvh4 (solutions/05c_wide_bvh/
+// wide_bvh.cpp) with the triangles tested inlined: the same hits and counts.
+std::optional<BvhHit> intersect_bvh_inlined(const Bvh& bvh, const Ray& ray, const LeafTriangles& triangles,
+                                            bool any_hit, BvhTraversalStats& stats);
+std::optional<BvhHit> intersect_bvh4_inlined(const Bvh4& bvh, const Ray& ray, const LeafTriangles& triangles,
+                                             bool any_hit, BvhTraversalStats& stats);
 
 }  // namespace raylab::reference

@@ -1,7 +1,7 @@
 // The reference's fastest tree: stage 05c's 4-wide tree made 8 wide, its eight boxes tested
 // at once with AVX2 where the CPU has it (chosen at run time: the default build assumes no more
 // than SSE2). raylab-reference and bench/ trace it instead of the 4-wide tree
-// (TracingFunctions::reference_tree in raylab/geometry.h). Its leaves are whole subtrees of the
+// (solutions/05c_wide_bvh/fast_tree.h). Its leaves are whole subtrees of the
 // binary tree of up to 8 triangles, tested in one pass of eight lanes (moller_trumbore4 of
 // solutions/05_bvh/leaf_test.h made 8 wide): the tree has fewer nodes and a ray tests fewer
 // leaves, each for about the work of four lanes. The same visit rule as
@@ -15,7 +15,6 @@
 #include "../05_bvh/leaf_test.h"
 
 #include "raylab/avx2.h"
-#include "raylab/geometry.h"
 #include "raylab/math.h"
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
@@ -23,7 +22,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <vector>
 
@@ -337,56 +335,28 @@ __attribute__((target("avx2"))) std::optional<BvhHit> traverse8(const Bvh8& bvh,
   return closest;
 }
 
-// The functions of TracingFunctions::reference_tree.
-inline std::shared_ptr<const void> build_bvh8_if_supported(const Bvh& binary) {
-  if (binary.nodes.empty() || !eight_wide_tree_runs_here()) return nullptr;
-  return std::make_shared<const Bvh8>(collapse_bvh8(binary));
-}
-
-inline std::optional<BvhHit> intersect_bvh8(const void* tree, const Ray& ray, const PrimitiveIntersector& intersector,
-                                           bool any_hit, BvhTraversalStats& stats) {
-  const Bvh8& bvh = *static_cast<const Bvh8*>(tree);
-  if (intersector.triangles && intersector.columns.values) {
-    const EightAtATime test_leaf{bvh.primitive_order.data(), intersector.columns, intersector.closest_triangle_hit};
+// intersect_bvh4's answers and counts on the 8-wide tree, its triangles tested inlined: eight at
+// a time when `triangles` has their columns (in the tree's leaf order), else one after another.
+inline std::optional<BvhHit> intersect_bvh8_inlined(const Bvh8& bvh, const Ray& ray, const LeafTriangles& triangles,
+                                                    bool any_hit, BvhTraversalStats& stats) {
+  if (bvh.nodes.empty()) return std::nullopt;
+  if (triangles.columns.values) {
+    const EightAtATime test_leaf{bvh.primitive_order.data(), triangles.columns, triangles.closest_triangle_hit};
     return any_hit ? traverse8<true>(bvh, ray, stats, test_leaf) : traverse8<false>(bvh, ray, stats, test_leaf);
   }
-  return with_leaf_test(intersector, bvh.primitive_order.data(), [&](const auto& test_leaf) {
+  return with_leaf_test(triangles, bvh.primitive_order.data(), [&](const auto& test_leaf) {
     return any_hit ? traverse8<true>(bvh, ray, stats, test_leaf) : traverse8<false>(bvh, ray, stats, test_leaf);
   });
 }
 
-// The short way of ReferenceTreeFunctions (closest_triangle, any_triangle): a scene's one tree.
-// Flattened: the traversal is inlined, so that its hit is not handed back through memory
-// (docs/performance.md, "Stores read back whole").
-__attribute__((target("avx2"), flatten)) inline bool closest_triangle_bvh8(const void* tree, const Ray& ray,
-                                                                       const TriangleColumns& columns,
-                                                                       std::uint32_t& triangle, TriangleHit& details) {
-  const Bvh8& bvh = *static_cast<const Bvh8*>(tree);
-  BvhTraversalStats uncounted;
-  const std::optional<BvhHit> hit =
-      traverse8<false>(bvh, ray, uncounted, EightAtATime{bvh.primitive_order.data(), columns, &details});
-  if (hit) triangle = hit->primitive;
-  return hit.has_value();
-}
-
-__attribute__((target("avx2"), flatten)) inline bool any_triangle_bvh8(const void* tree, const Ray& ray,
-                                                                       const TriangleColumns& columns) {
-  const Bvh8& bvh = *static_cast<const Bvh8*>(tree);
-  BvhTraversalStats uncounted;
-  return traverse8<true>(bvh, ray, uncounted, EightAtATime{bvh.primitive_order.data(), columns, nullptr}).has_value();
+// The same, a call of intersector.test per triangle (as a stage traversal).
+inline std::optional<BvhHit> intersect_bvh8(const Bvh8& bvh, const Ray& ray, const PrimitiveIntersector& intersector,
+                                           bool any_hit, BvhTraversalStats& stats) {
+  if (bvh.nodes.empty()) return std::nullopt;
+  return with_leaf_test(intersector, bvh.primitive_order.data(), [&](const auto& test_leaf) {
+    return any_hit ? traverse8<true>(bvh, ray, stats, test_leaf) : traverse8<false>(bvh, ray, stats, test_leaf);
+  });
 }
 #endif
-
-// What raylab-reference and bench/ hand the renderer: the 8-wide tree, or nullptr where this
-// compiler or CPU family has none (then the 4-wide tree is traced).
-inline const ReferenceTreeFunctions* reference_tree_functions() {
-#if RAYLAB_AVX2_COMPILES
-  static const ReferenceTreeFunctions functions{&build_bvh8_if_supported, &intersect_bvh8, &closest_triangle_bvh8,
-                                                &any_triangle_bvh8};
-  return &functions;
-#else
-  return nullptr;
-#endif
-}
 
 }  // namespace raylab::reference

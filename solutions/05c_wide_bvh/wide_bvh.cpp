@@ -268,4 +268,14 @@ std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const Prim
   });
 }
 
+// The same, the triangles tested inlined (solutions/05_bvh/leaf_test.h).
+std::optional<BvhHit> reference::intersect_bvh4_inlined(const Bvh4& bvh, const Ray& ray,
+                                                        const LeafTriangles& triangles, bool any_hit,
+                                                        BvhTraversalStats& stats) {
+  if (bvh.nodes.empty()) return std::nullopt;
+  return with_leaf_test(triangles, bvh.primitive_order.data(), [&](const auto& test_leaf) {
+    return traverse4(bvh, ray, any_hit, stats, test_leaf);
+  });
+}
+
 }  // namespace raylab

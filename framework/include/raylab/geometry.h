@@ -5,9 +5,9 @@
 // BVH over its triangles, and a scene of more than a few objects (spheres and meshes) a
 // top-level BVH over the objects' boxes; smaller sets are tested one by one. Which stage trees
 // (TracingFunctions::tree): the median build, the SAH build (05b), the mesh trees collapsed to 4
-// wide (05c), or the best of those the student wrote (raylab render --accel). (The reference's
-// own programs, TracingFunctions::reference_stages, put every triangle under one SAH tree
-// collapsed to 8 wide, or 4 wide as in stage 05c, and test the triangles inlined.) If build_bvh,
+// wide (05c), or the best of those the student wrote (raylab render --accel). A program may
+// instead hand in a tree of its own over every triangle of the scene (TracingFunctions::own_tree,
+// raylab/accelerator.h), as the programs that link solutions/ do. If build_bvh,
 // intersect_bvh or intersect_ray_box is still a stub (throws NotImplemented), the geometry
 // tests every primitive and says so once per process on stderr, at the first query:
 // "raylab: stage 05_bvh not implemented yet: testing every primitive (slow)": a student who has not reached stage 5 can still render.
@@ -20,6 +20,7 @@
 // geometry.cpp (the public queries, and the hit details shading needs).
 #pragma once
 
+#include "raylab/accelerator.h"
 #include "raylab/camera.h"
 #include "raylab/ray.h"
 #include "raylab/scene.h"
@@ -55,9 +56,8 @@ enum class Acceleration {
   BruteForce,  // test every primitive (an oracle for tests, a baseline for bench/)
 };
 
-// Which of the stage trees a student's program traces (raylab render --accel): each mesh's tree
-// and the tree over the objects. The reference's own programs (TracingFunctions::reference_stages)
-// trace their own fastest tree instead.
+// Which of the stage trees a program traces (raylab render --accel): each mesh's tree and the
+// tree over the objects.
 enum class StageTree {
   Median,  // stage 05: build_bvh, traversed by intersect_bvh
   Sah,     // stage 05b: build_bvh_sah, traversed by intersect_bvh
@@ -84,47 +84,22 @@ enum class TriangleTest {
 // that a mistake in stages 01-05 costs points only in its own stage. A geometry given its own
 // sphere or triangle test tests every primitive (the trees of stages 04-05 are stage code too),
 // unless keep_trees says to trace them (the picture of stage 05's image test).
-// A tree that the reference's own programs trace instead of stage 05c's 4-wide one, with the
-// same closest hits (8 wide, its boxes tested with AVX2; written in the reference solutions, not
-// in the student release). Not a stage, and not for students: the framework only holds the
-// functions, which raylab-reference and bench/ hand it (TracingFunctions::reference_tree).
-struct ReferenceTreeFunctions {
-  // The tree of a binary tree (whose primitive_order it keeps); nullptr when it cannot run
-  // here (a CPU without AVX2): then the 4-wide tree is traced.
-  std::shared_ptr<const void> (*build)(const Bvh& binary) = nullptr;
-  // As intersect_bvh4, on a tree that `build` returned.
-  std::optional<BvhHit> (*intersect)(const void* tree, const Ray& ray, const PrimitiveIntersector& intersector,
-                                     bool any_hit, BvhTraversalStats& stats) = nullptr;
-  // The short way, for a tree over all of a scene's triangles (SceneGeometry::intersect and
-  // occluded take it): the triangles tested from `columns` (triangle_columns of the tree's
-  // primitive_order) with stage 03's test, the same bits. closest_triangle returns whether a
-  // triangle was hit and writes the closest one's index to `triangle` and its t and barycentrics
-  // to `details`; any_triangle stops at the first hit. Neither counts its work.
-  bool (*closest_triangle)(const void* tree, const Ray& ray, const TriangleColumns& columns, std::uint32_t& triangle,
-                           TriangleHit& details) = nullptr;
-  bool (*any_triangle)(const void* tree, const Ray& ray, const TriangleColumns& columns) = nullptr;
-};
-
 struct TracingFunctions {
   Ray (*camera_ray)(const Camera& camera, int pixel_x, int pixel_y, glm::vec2 position_in_pixel) = nullptr;
   std::optional<float> (*sphere)(const Ray& ray, const glm::vec3& center, float radius) = nullptr;
   std::optional<TriangleHit> (*triangle)(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1,
                                          const glm::vec3& p2) = nullptr;
-  // Set only by programs whose stages are all the reference's (raylab-reference, bench/):
-  // then every triangle of the scene goes under one tree, built by the SAH (stage 05b) and
-  // collapsed to 4 wide (stage 05c; or 8 wide, reference_tree below), and with stage 03's
-  // Moller-Trumbore test the geometry hands the traversal the triangles
-  // (PrimitiveIntersector::triangles), which the reference traversal tests inlined instead of
-  // a call per triangle: the same closest t, faster (the triangle found may differ on a tie).
-  // Never in a student's program or a grader, whose stages may be others than the reference's.
-  bool reference_stages = false;
-  // With reference_stages, optionally: the reference's 8-wide tree (ReferenceTreeFunctions
-  // above), traced instead of the 4-wide one where the CPU runs it.
-  const ReferenceTreeFunctions* reference_tree = nullptr;
+  // A program's own tree over every triangle of the scene (raylab/accelerator.h), traced
+  // instead of the stage trees over the meshes when the triangles are tested with stage 03's
+  // Moller-Trumbore and no test above is given: the tree tests them itself, with the same
+  // answers (the triangle found may differ on a tie). The spheres, and the tree over the objects,
+  // stay as `tree` says. The programs that link solutions/ give the fastest tree of the
+  // solutions (solutions/05c_wide_bvh/fast_tree.h); a student's program and the graders give none.
+  TriangleTreeBuilder own_tree = nullptr;
   // With a sphere or triangle test given above: still trace the scene through the stage-05 trees
   // (build_bvh, intersect_bvh and stage 04's box test) rather than test every primitive.
   bool keep_trees = false;
-  // Which stage trees, without reference_stages.
+  // Which stage trees.
   StageTree tree = StageTree::Median;
   bool replaces_primitive_tests() const { return sphere != nullptr || triangle != nullptr; }
 };
@@ -147,11 +122,11 @@ class SceneGeometry {
 
   // The tree it traces (never StageTree::Best; None when it tests every primitive, also while
   // stage 04 or 05 is a stub), and for StageTree::Best, why each better one was passed over (in
-  // words, "stage 05c_wide_bvh: collapse_bvh4 is not written yet"). `reference`: the reference's
-  // own tree (TracingFunctions::reference_stages).
+  // words, "stage 05c_wide_bvh: collapse_bvh4 is not written yet"). `own_tree`: the name of the
+  // program's own tree over the triangles (TracingFunctions::own_tree), or "".
   struct TreeChoice {
     StageTree used = StageTree::None;
-    bool reference = false;
+    std::string own_tree;
     std::vector<std::string> passed_over;
     std::string stub_stage;  // the stage whose stub left no tree ("05c_wide_bvh"), or ""
     bool small_sets_only = false;  // used None as no set of primitives is large enough for a tree
@@ -159,7 +134,8 @@ class SceneGeometry {
   const TreeChoice& tree_choice() const { return tree_choice_; }
   // The trees' work on this thread since the last call: the nodes whose boxes the traversals
   // tested and the primitive tests they asked for (stats of intersect_bvh and intersect_bvh4),
-  // and the primitives tested one by one. The reference's straight path counts nothing.
+  // and the primitives tested one by one. A program's own tree (TracingFunctions::own_tree)
+  // counts nothing.
   struct Work {
     std::uint64_t nodes = 0, primitives = 0;
   };
@@ -225,7 +201,7 @@ class SceneGeometry {
     bool has_area;
   };
   enum class Kind : std::uint8_t { None, Sphere, Triangle };
-  // One mesh's triangles (with reference_trees_, every mesh's): triangles_[first_triangle ..
+  // One mesh's triangles (with own_tree, every mesh's): triangles_[first_triangle ..
   // first_triangle + triangle_count), in its BVH's leaf order when it has one (then the BVH's
   // primitive_order is the identity).
   struct MeshPart {
@@ -233,11 +209,10 @@ class SceneGeometry {
     std::uint32_t triangle_count = 0;
     Bounds3 bounds;
     Bvh bvh;  // empty: test every triangle
-    Bvh4 wide;  // StageTree::Wide, or reference_trees_: bvh collapsed to 4 wide (stage 05c), traversed instead
-    // reference_trees_ with TracingFunctions::reference_tree (and a CPU it runs on): built from
-    // bvh, traversed instead of wide.
-    std::shared_ptr<const void> reference_tree;
-    std::vector<float> columns;  // with triangle_edges_: its triangles as TriangleColumns, for wide's leaves
+    Bvh4 wide;  // StageTree::Wide: bvh collapsed to 4 wide (stage 05c), traversed instead
+    // The program's own tree over these triangles (TracingFunctions::own_tree), traced instead of
+    // bvh (which it leaves empty); its triangle indices count from first_triangle.
+    std::shared_ptr<const TriangleTree> own_tree;
   };
   // The closest hit a query's primitive tests have reported so far (by the framework's own
   // comparison of t, whatever order a traversal calls the tests in), and its details.
@@ -285,26 +260,10 @@ class SceneGeometry {
   const Scene& scene_;
   std::vector<Sphere> spheres_;
   std::vector<Triangle> triangles_;
-  // triangles_ as TriangleEdges (same order), for the reference traversal; empty unless
-  // TracingFunctions::reference_stages and the Moller-Trumbore test.
-  std::vector<TriangleEdges> triangle_edges_;
-  bool hand_triangles_to_traversal_ = false;
-  // TracingFunctions::reference_stages (and no tests of its own): one part for every mesh's
-  // triangles, under a tree of the reference's SAH build (stage 05b) collapsed to 8 wide
-  // (reference_tree_functions_) or 4 wide (stage 05c).
-  bool reference_trees_ = false;
-  const ReferenceTreeFunctions* reference_tree_functions_ = nullptr;  // with reference_trees_
-  // reference_trees_, no spheres, and a tree: a query goes straight into it.
-  bool only_one_tree_ = false;
-  // only_one_tree_ and hand_triangles_to_traversal_: intersect() and occluded() go straight into
-  // the one tree, whose traversal tests the triangles inlined (from the_one_tree_columns_) and
-  // hands back the closest hit's details, and skip the records of the general queries: the
-  // reference tree's ReferenceTreeFunctions::closest_triangle and any_triangle, or where there is
-  // none (a CPU without AVX2, a compiler without the 8-wide tree) the 4-wide tree of stage 05c.
-  bool straight_into_the_one_tree_ = false;
-  const void* the_one_reference_tree_ = nullptr;  // meshes_.front().reference_tree, or nullptr
-  TriangleColumns the_one_tree_columns_;           // of meshes_.front().columns
-  std::optional<BvhHit> traverse_the_4_wide_tree(const Ray& ray, bool any_hit, TriangleHit* closest_hit) const;
+  // The program's own tree over every triangle (TracingFunctions::own_tree) when the scene has
+  // nothing else: intersect() and occluded() go straight into it, without the records of the
+  // general queries. Else nullptr.
+  const TriangleTree* only_tree_ = nullptr;
   // intersect() and occluded() while a trace records (raylab/trace_recorder.h).
   std::optional<SurfaceHit> intersect_recorded(const Ray& ray) const;
   bool occluded_recorded(const Ray& ray) const;

@@ -65,7 +65,7 @@ struct RenderStats {
   ShadingStats work;  // rays by kind, counted (work.rays() in all)
   int threads = 0;
   // The trees' work over all rays (SceneGeometry::take_thread_work): node boxes tested and
-  // primitives tested; 0 where the reference's own tree traced them (it counts nothing).
+  // primitives tested; 0 where a program's own tree traced them (TracingFunctions::own_tree: it counts nothing).
   std::uint64_t nodes_visited = 0, primitives_tested = 0;
 };
 

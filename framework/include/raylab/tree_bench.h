@@ -19,8 +19,8 @@ namespace raylab {
 struct TreeBenchOptions {
   std::string scene_path;
   int width = 320, height = 240;  // the camera rays: one through each pixel's centre
-  bool reference_program = false;  // raylab-reference: also its own fastest tree
-  const ReferenceTreeFunctions* reference_tree = nullptr;
+  bool reference_program = false;  // raylab-reference
+  TriangleTreeBuilder own_tree = nullptr;  // the program's own tree (TracingFunctions::own_tree): a row "reference"
   bool save_reference = false;  // write the rows into scenes/reference_bench.json (reference only)
 };
 

@@ -18,8 +18,6 @@
 
 namespace raylab {
 
-struct TriangleHit;  // raylab/stages/03_triangle.h
-
 // One node, 32 bytes, so that two share a 64-byte cache line. All nodes of a tree live in
 // one array (Bvh::nodes); nodes[0] is the root.
 //   inner node: primitive_count == 0; its two children are nodes[first_index] and
@@ -63,31 +61,6 @@ Bvh build_bvh_sah(const std::vector<Bounds3>& primitive_bounds, int max_leaf_siz
 
 // ---- Traversal --------------------------------------------------------------------------
 
-// One triangle as the reference's traversal tests it: its first vertex and its two edges from
-// there, p1 - p0 and p2 - p0.
-struct TriangleEdges {
-  glm::vec3 p0{0.0f}, edge_01{0.0f}, edge_02{0.0f};
-
-  static TriangleEdges of(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
-    return {p0, p1 - p0, p2 - p0};
-  }
-};
-
-// The same triangles as nine columns of floats (p0.x, p0.y, p0.z, edge_01.x, ... edge_02.z),
-// in the order of a tree's primitive_order: column c of the triangle at position i is
-// values[c * stride + i], and each column ends with 7 values of padding, so that the
-// reference's leaf tests load four or eight neighbours' coordinates at once (triangle_columns()
-// makes them). Not part of your contract.
-struct TriangleColumns {
-  const float* values = nullptr;
-  std::size_t stride = 0;
-
-  // The columns that triangle_columns() made (nine of `stride` values each).
-  // It points into `made`, which must outlive it (hence no temporaries).
-  static TriangleColumns of(const std::vector<float>& made) { return {made.data(), made.size() / 9}; }
-  static TriangleColumns of(std::vector<float>&&) = delete;
-};
-
 // How the traversal tests one primitive: a plain function pointer and the caller's context.
 //
 // Why this shape: the traversal is a stage function, compiled in a separate library from the
@@ -108,25 +81,7 @@ struct PrimitiveIntersector {
   using TestFunction = std::optional<float> (*)(void* context, const Ray& ray, std::uint32_t primitive);
   TestFunction test = nullptr;
   void* context = nullptr;
-  // Not for your traversal: ignore it and call `test` (stage 05's tests never set it). The
-  // renderer sets it when the primitives are a mesh's triangles tested with stage 03's
-  // Moller-Trumbore: then triangles[primitive] is the triangle `test` would test, so that the
-  // reference's traversal can run its own inlined test on a whole leaf instead of a call per
-  // triangle (docs/performance.md, "How the reference traces a scene"). A traversal that does
-  // so counts each triangle it tests in stats.primitives_tested, as a call of `test`.
-  const TriangleEdges* triangles = nullptr;
-  // With `triangles`, optionally: the same triangles in the traversed tree's leaf order, for
-  // the reference's test of a leaf's triangles four at a time (same answers, same counts).
-  TriangleColumns columns = {};
-  // Not for your traversal either: with `triangles`, optionally, where that inlined test writes
-  // the t and barycentrics of each closer hit it finds, so that the renderer need not test the
-  // returned triangle again.
-  TriangleHit* closest_triangle_hit = nullptr;
 };
-
-// The columns (TriangleColumns::values) of triangles[primitive_order[i]] for every position i,
-// padded: their stride is primitive_order.size() + 7 (TriangleColumns::of takes it from them).
-std::vector<float> triangle_columns(const TriangleEdges* triangles, const std::vector<std::uint32_t>& primitive_order);
 
 // The work one query did, counted the same way by every correct traversal (bench/, grader).
 struct BvhTraversalStats {
