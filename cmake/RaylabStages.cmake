@@ -283,6 +283,8 @@ message(STATUS "raylab: ${raylab_stage_count} stages from stages.json (${RAYLAB_
 
 set(RAYLAB_GENERATED_INCLUDE ${CMAKE_BINARY_DIR}/generated/include)
 set(raylab_stage_messages "")
+# A catalogue added to autograder/suites/ configures again (the folder changes).
+set_property(DIRECTORY ${CMAKE_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/autograder/suites)
 foreach(id IN LISTS RAYLAB_STAGE_IDS)
   if(EXISTS ${CMAKE_SOURCE_DIR}/autograder/suites/${id}_messages.def)
     string(APPEND raylab_stage_messages "#include \"${CMAKE_SOURCE_DIR}/autograder/suites/${id}_messages.def\"\n")

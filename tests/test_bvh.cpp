@@ -1,7 +1,7 @@
 // The reference BVH (solutions/05_bvh) beyond what the autograder's small meshes reach: trees
 // of 64k primitives and more, whose top subtrees the reference builds on several threads, the
 // node array's cache-line layout that raylab/stages/05_bvh.h promises, and the reference
-// traversal's inlined triangle test (PrimitiveIntersector::triangles), which must give the
+// traversal's inlined triangle test (reference::LeafTriangles), which must give the
 // stage-03 calls' answers bit for bit, on adversarial rays too.
 #include "raylab/mesh_generator.h"
 #include "raylab/stages/03_triangle.h"

@@ -1,4 +1,5 @@
-// The autograder's catalogue (autograder/runner/messages.def): every message in English and
+// The autograder's catalogue (autograder/runner/messages.def and the stages' own,
+// autograder/suites/<id>_messages.def): every message in English and
 // Simplified Chinese with the same placeholders and the twin handout's sections, every stage
 // title in both languages, and no hint that bypasses the catalogue. The ctest messages_are_paired.
 #include "messages.h"
@@ -37,7 +38,7 @@ void unset_variable(const char* name) {
 #endif
 }
 
-const char* const kWhere = "autograder/runner/messages.def";
+const char* const kWhere = "autograder/runner/messages.def or autograder/suites/<id>_messages.def";
 
 // Whether a UTF-8 text holds a CJK ideograph (U+4E00..U+9FFF: E4 B8 80 .. E9 BF BF).
 bool has_chinese(std::string_view text) {

@@ -121,6 +121,16 @@ void expect_same_hits_with_own_tree(const std::string& scene_file, TriangleTreeB
   }
   EXPECT_EQ(differing, 0) << scene_file << " over " << rays.size() << " rays";
   EXPECT_GT(hits, static_cast<int>(rays.size()) / 4) << scene_file << ": rays that hit something";
+  // Every triangle goes through the own tree (which counts nothing): what is tested one by one,
+  // or through a tree over the objects, is the spheres at most.
+  (void)SceneGeometry::take_thread_work();
+  for (const Ray& ray : rays) {
+    (void)inlined.intersect(ray);
+    (void)inlined.occluded(ray);
+  }
+  const SceneGeometry::Work work = SceneGeometry::take_thread_work();
+  EXPECT_LE(work.primitives, 2 * rays.size() * scene.spheres.size())
+      << scene_file << ": primitives tested beside the own tree, over " << rays.size() << " rays";
 }
 
 // Counts camera rays, from whichever thread asks (TellsTheCallerOnceWhenItsWorkersHaveStarted).

@@ -5,8 +5,9 @@
 //   add_hint({MessageId::sphere_hit_behind, {{"t", std::to_string(t)}}});
 //
 // shows "returns a hit behind the ray (t = -1.000000): ..." or its Chinese text: the texts of
-// sphere_hit_behind in messages.def both hold the placeholder {t}. A new hint is a new entry in
-// messages.def with both texts (the test messages_are_paired fails on an entry without its
+// sphere_hit_behind in its stage's catalogue both hold the placeholder {t}. A new hint is a new
+// entry in the stage's catalogue, autograder/suites/<id>_messages.def (messages.def includes it),
+// with both texts (the test messages_are_paired fails on an entry without its
 // Chinese text); docs/zh/glossary.md lists the Chinese terms the texts use.
 #pragma once
 
@@ -123,14 +124,14 @@ std::string markdown_text(std::string_view line);
 template <typename Text, typename = std::enable_if_t<std::is_convertible_v<Text, std::string_view>>>
 void add_hint(const Text&) {
   static_assert(!std::is_convertible_v<Text, std::string_view>,
-                "add_hint takes a Message, not a text: add the hint to autograder/runner/messages.def as "
+                "add_hint takes a Message, not a text: add the hint to autograder/suites/<stage>_messages.def as "
                 "RAYLAB_MESSAGE(your_id, \"English text with {placeholders}\", \"Chinese text with the same "
                 "{placeholders}\") and call add_hint({MessageId::your_id, {{\"placeholder\", value}}})");
 }
 template <typename Text, typename = std::enable_if_t<std::is_convertible_v<Text, std::string_view>>>
 void add_note(const Text&) {
   static_assert(!std::is_convertible_v<Text, std::string_view>,
-                "add_note takes a Message, not a text: add the note to autograder/runner/messages.def as "
+                "add_note takes a Message, not a text: add the note to autograder/suites/<stage>_messages.def as "
                 "RAYLAB_MESSAGE(your_id, \"English text with {placeholders}\", \"Chinese text with the same "
                 "{placeholders}\") and call add_note({MessageId::your_id, {{\"placeholder\", value}}})");
 }

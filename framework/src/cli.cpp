@@ -243,6 +243,7 @@ struct TraceOptions {
   std::string integrator;  // empty: the scene's
   std::string language = "en";
   bool json = false;
+  std::string accel = "best";  // as raylab render's: the tree whose walk the trace shows
 };
 
 int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
@@ -263,6 +264,9 @@ int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.roulette = roulette;
   settings.chinese = options.language == "zh";
+  const std::optional<StageTree> tree = stage_tree_named(options.accel);
+  if (!tree) throw UsageError("--accel: unknown tree '" + options.accel + "' (known: best, median, sah, wide, none)");
+  settings.yours.tree = *tree;
   if (!options.json) {
     print_trace(std::cout, options.scene_path, trace_pixel(scene, options.pixel[0], options.pixel[1], settings, contract));
     return kExitOk;
@@ -418,6 +422,8 @@ int run_cli(int argc, char** argv, LinkedStages stages, TriangleTreeBuilder own_
         ->check(CLI::Range(0, 64));
     trace_command->add_option("--roulette", trace_options.roulette, "As raylab render's (default 1: no roulette)");
     trace_command->add_option("--seed", trace_options.seed, "As raylab render's (default 0)");
+    trace_command->add_option("--accel", trace_options.accel,
+                              "As raylab render's: the tree whose walk is traced (default best: the one render uses)");
     trace_command->add_flag("--json", trace_options.json,
                             "Print the trace as JSON (the steps, and the rays as segments on the picture)");
     trace_command

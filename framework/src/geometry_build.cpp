@@ -125,6 +125,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
     corners.reserve(3 * triangles_.size());
     for (const Triangle& triangle : triangles_) corners.insert(corners.end(), {triangle.p0, triangle.p1, triangle.p2});
     const std::shared_ptr<const TriangleTree> tree = tracing.own_tree(corners);
+    if (!tree) throw std::logic_error("TracingFunctions::own_tree built no tree (raylab/accelerator.h: never nullptr)");
     meshes_.front().own_tree = tree;
     tree_choice_.own_tree = tree->name();
     if (spheres_.empty()) only_tree_ = tree.get();

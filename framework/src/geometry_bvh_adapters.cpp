@@ -57,7 +57,7 @@ std::optional<float> SceneGeometry::test_object(void* context, const Ray& ray, s
 std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const Ray& ray, Query& query) const {
   query.mesh_triangles = triangles_.data() + mesh.first_triangle;
   query.mesh_first_triangle = mesh.first_triangle;
-  if (mesh.own_tree && !query.watch) {  // (walk_to's watched query tests each triangle below)
+  if (mesh.own_tree && !query.watch) {  // (walk_to's watched query tests each triangle, below)
     if (query.any_hit) return mesh.own_tree->any_hit(ray);
     std::uint32_t triangle = 0;
     TriangleHit details;

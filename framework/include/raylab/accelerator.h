@@ -22,7 +22,7 @@ namespace raylab {
 class TriangleTree {
  public:
   virtual ~TriangleTree() = default;
-  // What the render's first line calls it ("the reference's own: SAH, 8 wide").
+  // What the render's first line calls it ("the reference's own (SAH, 8 wide)").
   virtual std::string name() const = 0;
   // The closest hit in (ray.t_min, ray.t_max): whether there is one; if so, the index of the
   // triangle hit (as the builder was given them) in `triangle`, and its t and barycentrics in

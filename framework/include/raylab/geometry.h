@@ -92,8 +92,9 @@ struct TracingFunctions {
   // A program's own tree over every triangle of the scene (raylab/accelerator.h), traced
   // instead of the stage trees over the meshes when the triangles are tested with stage 03's
   // Moller-Trumbore and no test above is given: the tree tests them itself, with the same
-  // answers (the triangle found may differ on a tie). The spheres, and the tree over the objects,
-  // stay as `tree` says. The programs that link solutions/ give the fastest tree of the
+  // answers (the triangle found may differ on a tie). The spheres stay as they are, under a
+  // median tree over the objects (the own tree's triangles one of them) where there are more than
+  // a few; `tree` says only whether there is one (StageTree::None: no tree). The programs that link solutions/ give the fastest tree of the
   // solutions (solutions/05c_wide_bvh/fast_tree.h); a student's program and the graders give none.
   TriangleTreeBuilder own_tree = nullptr;
   // With a sphere or triangle test given above: still trace the scene through the stage-05 trees
@@ -121,7 +122,8 @@ class SceneGeometry {
   bool occluded(const Ray& ray) const;
 
   // The tree it traces (never StageTree::Best; None when it tests every primitive, also while
-  // stage 04 or 05 is a stub), and for StageTree::Best, why each better one was passed over (in
+  // stage 04 or 05 is a stub, or when a program's own tree takes every triangle and no tree over
+  // the objects is needed), and for StageTree::Best, why each better one was passed over (in
   // words, "stage 05c_wide_bvh: collapse_bvh4 is not written yet"). `own_tree`: the name of the
   // program's own tree over the triangles (TracingFunctions::own_tree), or "".
   struct TreeChoice {
