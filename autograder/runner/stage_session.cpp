@@ -75,7 +75,11 @@ Message StageSession::during(const StageCall& stage_call) {
 
 void StageSession::reject_reply(const StageCall& stage_call, const Message& what) {
   if (process_.running()) process_.stop(true, output_);
-  lose({MessageId::lost_malformed_answer, {{"during", during(stage_call)}, {"what", what}}}, false);
+  // A reply too large for its call: a result that grew without end (a tree of far too many nodes),
+  // or stray bytes read as a frame's length. Said as either.
+  const MessageId reason = what.id == MessageId::protocol_frame_too_large ? MessageId::lost_answer_too_large
+                                                                          : MessageId::lost_malformed_answer;
+  lose({reason, {{"during", during(stage_call)}, {"what", what}}}, false);
 }
 
 std::string StageSession::call(const StageCall& stage_call, const Writer& arguments, std::uint32_t max_reply_bytes,

@@ -446,20 +446,6 @@ GRADED_TEST(kStage, Stage05cWideBvh, ClosestHitsMatchBruteForce, 4) {
   expect_brute_force_answers(false, true, MessageId::bvh_what_closest_hit_axis_aligned);
 }
 
-// The triangle tests a traversal asks for after one of them hit (any_hit must stop there).
-struct TestsAfterAHit {
-  PrimitiveIntersector inner;
-  bool hit = false;
-  std::uint64_t calls = 0;
-  static std::optional<float> test(void* context, const Ray& ray, std::uint32_t primitive) {
-    TestsAfterAHit& self = *static_cast<TestsAfterAHit*>(context);
-    if (self.hit) ++self.calls;
-    const std::optional<float> t = self.inner.test(self.inner.context, ray, primitive);
-    self.hit = self.hit || t.has_value();
-    return t;
-  }
-};
-
 GRADED_TEST(kStage, Stage05cWideBvh, AnyHitAgreesWithBruteForce, 1) {
   expect_brute_force_answers(true, false, MessageId::bvh_what_any_hit);
   // And it returns at once: after the first hit the intersector reports, no more tests (20 rays

@@ -26,15 +26,6 @@ std::optional<float> test_triangle(const TestMesh& mesh, const Ray& ray, std::ui
   return grader_triangle_test(const_cast<std::vector<std::array<glm::vec3, 3>>*>(&mesh.triangles), ray, primitive);
 }
 
-TestMesh make_mesh(Message name, std::vector<std::array<glm::vec3, 3>> triangles) {
-  TestMesh mesh{std::move(name), std::move(triangles), {}};
-  for (const auto& t : mesh.triangles) {
-    Bounds3 box;
-    for (const glm::vec3& corner : t) box.extend(corner);
-    mesh.bounds.push_back(box);
-  }
-  return mesh;
-}
 
 std::vector<TestMesh> make_meshes() {
   std::vector<TestMesh> meshes;
@@ -43,7 +34,7 @@ std::vector<TestMesh> make_meshes() {
   for (std::size_t i = 0; i + 2 < bunny.indices.size(); i += 3)
     triangles.push_back({bunny.positions[bunny.indices[i]], bunny.positions[bunny.indices[i + 1]],
                          bunny.positions[bunny.indices[i + 2]]});
-  meshes.push_back(make_mesh(MessageId::bvh_mesh_bunny, triangles));
+  meshes.push_back(make_test_mesh(MessageId::bvh_mesh_bunny, triangles));
 
   Pcg32 random(505, testkit::stream_of("bvh triangle soup"));
   triangles.clear();
@@ -51,7 +42,7 @@ std::vector<TestMesh> make_meshes() {
     const glm::vec3 center = testkit::random_vec3(random, -10, 10);
     triangles.push_back({center + testkit::random_vec3(random, -1, 1), center + testkit::random_vec3(random, -1, 1), center + testkit::random_vec3(random, -1, 1)});
   }
-  meshes.push_back(make_mesh(MessageId::bvh_mesh_soup, triangles));
+  meshes.push_back(make_test_mesh(MessageId::bvh_mesh_soup, triangles));
 
   triangles.clear();
   for (int z = 0; z < 20; ++z)
@@ -60,10 +51,10 @@ std::vector<TestMesh> make_meshes() {
       triangles.push_back({a, b, c});
       triangles.push_back({a, c, d});
     }
-  meshes.push_back(make_mesh(MessageId::bvh_mesh_flat_grid, triangles));
+  meshes.push_back(make_test_mesh(MessageId::bvh_mesh_flat_grid, triangles));
 
   triangles.assign(64, {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)});
-  meshes.push_back(make_mesh(MessageId::bvh_mesh_copies, triangles));
+  meshes.push_back(make_test_mesh(MessageId::bvh_mesh_copies, triangles));
 
   // Large triangles that all overlap, each moved a little: every split leaves both children
   // about as large as the node, so the SAH prefers one leaf of all 100 -- which must still be
@@ -73,11 +64,21 @@ std::vector<TestMesh> make_meshes() {
     const glm::vec3 shift = 0.01f * testkit::random_vec3(random, -1, 1);
     triangles.push_back({glm::vec3(-5, -5, 0) + shift, glm::vec3(5, -5, 1) + shift, glm::vec3(0, 5, -1) + shift});
   }
-  meshes.push_back(make_mesh(MessageId::bvh_mesh_overlapping, triangles));
+  meshes.push_back(make_test_mesh(MessageId::bvh_mesh_overlapping, triangles));
   return meshes;
 }
 
 }  // namespace
+
+TestMesh make_test_mesh(Message name, std::vector<std::array<glm::vec3, 3>> triangles) {
+  TestMesh mesh{std::move(name), std::move(triangles), {}};
+  for (const auto& t : mesh.triangles) {
+    Bounds3 box;
+    for (const glm::vec3& corner : t) box.extend(corner);
+    mesh.bounds.push_back(box);
+  }
+  return mesh;
+}
 
 const std::vector<TestMesh>& bvh_test_meshes() {
   static const std::vector<TestMesh> meshes = make_meshes();
@@ -100,7 +101,7 @@ const TestMesh& work_test_mesh() {
     std::vector<std::array<glm::vec3, 3>> triangles = bvh_test_meshes().front().triangles;
     for (auto& triangle : triangles)
       for (glm::vec3& corner : triangle) corner = scale * (turn * corner) + shift;
-    return make_mesh(MessageId::bvh_mesh_bunny_moved, std::move(triangles));
+    return make_test_mesh(MessageId::bvh_mesh_bunny_moved, std::move(triangles));
   }();
   return mesh;
 }

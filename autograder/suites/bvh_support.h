@@ -23,6 +23,8 @@ struct TestMesh {
 // (every centroid equal: the median split must still terminate), and 100 overlapping
 // triangles (the SAH prefers one leaf of them all, larger than max_leaf_size).
 const std::vector<TestMesh>& bvh_test_meshes();
+// A mesh of these triangles, with their boxes.
+TestMesh make_test_mesh(Message name, std::vector<std::array<glm::vec3, 3>> triangles);
 
 // The grader's own triangle test (double precision), so that BVH grades do not depend on
 // your stage 3. A PrimitiveIntersector over a TestMesh.
@@ -83,6 +85,20 @@ TraversalWork student_traversal_work(const Bvh& bvh, const TestMesh& mesh, const
 // t_max lowered to the closest hit so far) with the stage server's box test (the one your
 // intersect_bvh calls: the grader's own at stage 05) on the same tree and rays.
 TraversalWork reference_traversal_work(const Bvh& bvh, const TestMesh& mesh, const std::vector<Ray>& rays);
+
+// The triangle tests a traversal asks for after one of them hit (any_hit must stop there).
+struct TestsAfterAHit {
+  PrimitiveIntersector inner;
+  bool hit = false;
+  std::uint64_t calls = 0;
+  static std::optional<float> test(void* context, const Ray& ray, std::uint32_t primitive) {
+    TestsAfterAHit& self = *static_cast<TestsAfterAHit*>(context);
+    if (self.hit) ++self.calls;
+    const std::optional<float> t = self.inner.test(self.inner.context, ray, primitive);
+    self.hit = self.hit || t.has_value();
+    return t;
+  }
+};
 
 // Index arithmetic on a student's tree without wrap-around: whether nodes[first_index] and
 // nodes[first_index + 1] both exist.

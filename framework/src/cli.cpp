@@ -96,6 +96,7 @@ std::string tree_choice_text(const SceneGeometry::TreeChoice& choice) {
       case StageTree::Median: text = "raylab: tree: your median BVH (stage 05_bvh; --accel median)"; break;
       case StageTree::Sah: text = "raylab: tree: your SAH BVH (stage 05b_bvh_sah; --accel sah)"; break;
       case StageTree::Wide: text = "raylab: tree: your 4-wide BVH (stage 05c_wide_bvh; --accel wide)"; break;
+      case StageTree::KdTree: text = "raylab: tree: your KD-tree (stage 05d_kdtree; --accel kdtree)"; break;
       default:
         text = choice.stub_stage.empty()
                    ? "raylab: tree: none, every primitive tested (--accel none)"
@@ -159,7 +160,7 @@ RenderSetup render_setup(const RenderOptions& options) {
   settings.threads = options.threads;
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
   const std::optional<StageTree> tree = stage_tree_named(options.accel);
-  if (!tree) throw UsageError("--accel: unknown tree '" + options.accel + "' (known: best, median, sah, wide, none)");
+  if (!tree) throw UsageError("--accel: unknown tree '" + options.accel + "' (known: " + stage_tree_words() + ")");
   settings.tracing.tree = *tree;
   if (!options.accel_given) settings.tracing.own_tree = options.own_tree;
   return {std::move(scene), settings};
@@ -265,7 +266,7 @@ int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
   settings.roulette = roulette;
   settings.chinese = options.language == "zh";
   const std::optional<StageTree> tree = stage_tree_named(options.accel);
-  if (!tree) throw UsageError("--accel: unknown tree '" + options.accel + "' (known: best, median, sah, wide, none)");
+  if (!tree) throw UsageError("--accel: unknown tree '" + options.accel + "' (known: " + stage_tree_words() + ")");
   settings.yours.tree = *tree;
   if (!options.json) {
     print_trace(std::cout, options.scene_path, trace_pixel(scene, options.pixel[0], options.pixel[1], settings, contract));
@@ -377,10 +378,10 @@ int run_cli(int argc, char** argv, LinkedStages stages, TriangleTreeBuilder own_
                              "(white: --spp of them)");
   render_command
       ->add_option("--accel", options.accel,
-                   "The trees that find the hits: median (stage 05), sah (05b), wide (05c), none (every primitive), or "
-                   "best (default: the first of wide, sah, median whose stages are written and that agree with "
-                   "testing every primitive on a sample of rays; the first line says which)")
-      ->check(CLI::IsMember({"best", "median", "sah", "wide", "none"}));
+                   "The trees that find the hits: median (stage 05), sah (05b), wide (05c), kdtree (05d), none (every "
+                   "primitive), or best (default: the first of wide, sah, kdtree, median whose stages are written and "
+                   "that agree with testing every primitive on a sample of rays; the first line says which)")
+      ->check(CLI::IsMember({"best", "median", "sah", "wide", "kdtree", "none"}));
   render_command->add_flag("--watertight", options.watertight,
                            "Use the watertight triangle test (bonus stage 06_robustness) instead of stage 03's");
   render_command->add_flag("-q,--quiet", options.quiet,

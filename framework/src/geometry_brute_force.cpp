@@ -91,7 +91,7 @@ std::optional<float> SceneGeometry::intersect_every_object(const Ray& ray, Query
   }
   for (std::size_t m = 0; m < mesh_count; ++m) {
     const MeshPart& mesh = meshes[m];
-    if (!mesh.bvh.nodes.empty() || mesh.own_tree) {
+    if (mesh.has_tree()) {
       *query.record = HitRecord();
       if (const std::optional<float> t = intersect_mesh(mesh, search, query)) {
         search.t_max = *t;
@@ -121,7 +121,7 @@ bool SceneGeometry::occluded_by_any_object(const Ray& ray, Query& query) const {
   for (const Sphere& sphere : spheres_)
     if (intersect_sphere_(ray, sphere.center, sphere.radius)) return true;
   for (const MeshPart& mesh : meshes_) {
-    if (!mesh.bvh.nodes.empty() || mesh.own_tree) {
+    if (mesh.has_tree()) {
       if (intersect_mesh(mesh, ray, query)) return true;
       continue;
     }

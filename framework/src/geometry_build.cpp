@@ -16,6 +16,7 @@
 #include "raylab/stages/04_box.h"
 #include "raylab/stages/05_bvh.h"
 #include "raylab/stages/05c_wide_bvh.h"
+#include "raylab/stages/05d_kdtree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,6 +74,40 @@ std::optional<std::string> wide_tree_problem(const Bvh4& wide, std::size_t primi
       reached[child] = true;
       stack.push_back(child);
     }
+  }
+  return std::nullopt;
+}
+
+// A student's build_kdtree may return a tree that would send intersect_kdtree out of its arrays
+// (or past the stack of kKdMaxDepth cells its contract promises): what is wrong with it, in words,
+// or nullopt.
+std::optional<std::string> kd_tree_problem(const KdTree& tree, std::size_t primitive_count) {
+  if (tree.nodes.empty()) return primitive_count == 0 ? std::nullopt : std::optional<std::string>("it has no nodes");
+  std::vector<bool> reached(tree.nodes.size(), false);
+  std::vector<std::pair<std::uint32_t, int>> stack{{0u, 0}};
+  reached[0] = true;
+  while (!stack.empty()) {
+    const auto [n, depth] = stack.back();
+    stack.pop_back();
+    const KdNode& node = tree.nodes[n];
+    if (depth > kKdMaxDepth) return "node " + std::to_string(n) + " lies deeper than kKdMaxDepth";
+    if (node.is_leaf()) {
+      if (std::uint64_t(node.first_index) + node.primitive_count > tree.primitive_indices.size())
+        return "leaf " + std::to_string(n) + " reaches past primitive_indices";
+      for (std::uint32_t i = node.first_index; i < node.first_index + node.primitive_count; ++i)
+        if (tree.primitive_indices[i] >= primitive_count)
+          return "leaf " + std::to_string(n) + " lists primitive " + std::to_string(tree.primitive_indices[i]) +
+                 " of " + std::to_string(primitive_count);
+      continue;
+    }
+    if (node.split_axis > 2) return "node " + std::to_string(n) + " has split_axis " + std::to_string(node.split_axis);
+    const std::uint64_t first = node.first_index;
+    if (first == 0 || first + 1 >= tree.nodes.size() || reached[first] || reached[first + 1])
+      return "node " + std::to_string(n) + " names children " + std::to_string(first) + " and " +
+             std::to_string(first + 1) + " (each node but the root must be one node's child, once, within the nodes)";
+    reached[first] = reached[first + 1] = true;
+    stack.push_back({static_cast<std::uint32_t>(first), depth + 1});
+    stack.push_back({static_cast<std::uint32_t>(first + 1), depth + 1});
   }
   return std::nullopt;
 }
@@ -145,7 +180,8 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
 
 void SceneGeometry::build_bvhs(StageTree tree) {
   tree_choice_.used = tree;
-  // Wide: over the SAH tree where stage 05b is written, else over the median one.
+  // Wide: over the SAH tree where stage 05b is written, else over the median one. KdTree: a KD-tree
+  // per mesh, the median tree over the objects.
   bool sah = tree == StageTree::Sah || tree == StageTree::Wide;
   const auto build = [&](const std::vector<Bounds3>& boxes) {
     if (sah && tree == StageTree::Wide) {
@@ -173,9 +209,16 @@ void SceneGeometry::build_bvhs(StageTree tree) {
       boxes.reserve(mesh.triangle_count);
       for (std::uint32_t i = 0; i < mesh.triangle_count; ++i)
         boxes.push_back(triangle_bounds(first[i].p0, first[i].p1, first[i].p2));
-      mesh.bvh = build(boxes);
       const bool one_mesh = first->mesh == first[mesh.triangle_count - 1].mesh;
       const std::string name = one_mesh ? scene_.meshes[first->mesh].name : "the scene's triangles";
+      if (tree == StageTree::KdTree) {  // (its leaves list the triangles in the scene's order)
+        mesh.kdtree = build_kdtree(boxes);
+        if (const std::optional<std::string> problem = kd_tree_problem(mesh.kdtree, mesh.triangle_count))
+          throw std::runtime_error("stage 05d_kdtree: build_kdtree over the triangles of " + name +
+                                   " returned a broken tree: " + *problem);
+        continue;
+      }
+      mesh.bvh = build(boxes);
       check(mesh.bvh, boxes, name);
       // Store the triangles in leaf order, so that a leaf's triangles are adjacent in memory;
       // the BVH's primitive_order then becomes the identity.
@@ -208,9 +251,11 @@ void SceneGeometry::build_bvhs(StageTree tree) {
     // nothing, so that only stages 04 and 05 (or 05c) run here.
     const Bvh* probe_bvh = !objects_bvh_.nodes.empty() ? &objects_bvh_ : nullptr;
     const Bvh4* probe_wide = nullptr;
+    const KdTree* probe_kdtree = nullptr;
     for (const MeshPart& mesh : meshes_) {
       if (!probe_bvh && !mesh.bvh.nodes.empty()) probe_bvh = &mesh.bvh;
       if (!probe_wide && !mesh.wide.nodes.empty()) probe_wide = &mesh.wide;
+      if (!probe_kdtree && !mesh.kdtree.nodes.empty()) probe_kdtree = &mesh.kdtree;
     }
     const PrimitiveIntersector hits_nothing{
         [](void*, const Ray&, std::uint32_t) -> std::optional<float> { return std::nullopt; }, nullptr};
@@ -229,9 +274,22 @@ void SceneGeometry::build_bvhs(StageTree tree) {
       BvhTraversalStats stats;
       (void)intersect_bvh4(*probe_wide, probe, hits_nothing, /*any_hit=*/false, stats);
     }
+    if (probe_kdtree) {
+      Ray probe;
+      probe.origin = probe_kdtree->bounds.centroid();  // inside the root's cell
+      probe.direction = glm::vec3(0.0f, 0.0f, 1.0f);
+      BvhTraversalStats stats;
+      (void)intersect_kdtree(*probe_kdtree, probe, hits_nothing, /*any_hit=*/false, stats);
+    }
     if (!probe_bvh && !meshes_.empty() && meshes_.front().own_tree) {  // only the own tree: no stage tree needed
       tree_choice_.used = StageTree::None;
-    } else if (!probe_bvh) {  // no set of primitives large enough for a tree
+    } else if (tree == StageTree::KdTree && !probe_kdtree) {
+      tree_choice_.used = probe_bvh ? StageTree::Median : StageTree::None;
+      tree_choice_.small_sets_only = !probe_bvh;
+      if (probe_bvh)
+        tree_choice_.passed_over.push_back("kdtree: no mesh has more than " + std::to_string(brute_force_limit_) +
+                                           " triangles, so none has a KD-tree");
+    } else if (!probe_bvh && !probe_kdtree) {  // no set of primitives large enough for a tree
       tree_choice_.used = StageTree::None;
       tree_choice_.small_sets_only = true;
     } else if (tree == StageTree::Wide && !probe_wide) {
@@ -250,6 +308,7 @@ void SceneGeometry::drop_trees() {
   for (MeshPart& mesh : meshes_) {
     mesh.bvh = Bvh();
     mesh.wide = Bvh4();
+    mesh.kdtree = KdTree();
   }
   objects_bvh_ = Bvh();
   tree_choice_.used = StageTree::None;
@@ -265,9 +324,9 @@ void SceneGeometry::build_best_trees(TriangleTest triangle_test, const TracingFu
   // A stub of another stage (02, 03) is no reason to pass a tree over: the render needs it anyway.
   const auto tree_stage = [](const std::string& stage) {
     return stage == "04_box" || stage == "04b_quickselect" || stage == "05_bvh" || stage == "05b_bvh_sah" ||
-           stage == "05c_wide_bvh";
+           stage == "05c_wide_bvh" || stage == "05d_kdtree";
   };
-  for (const StageTree candidate : {StageTree::Wide, StageTree::Sah, StageTree::Median}) {
+  for (const StageTree candidate : {StageTree::Wide, StageTree::Sah, StageTree::KdTree, StageTree::Median}) {
     const std::string name = stage_tree_name(candidate);
     const auto pass_over = [&](const std::string& why) {
       tree_choice_.passed_over.push_back(name + ": " + why);
@@ -341,8 +400,17 @@ std::optional<std::string> SceneGeometry::differs_from(const SceneGeometry& ever
 
 std::size_t SceneGeometry::bvh_count() const {
   std::size_t count = objects_bvh_.nodes.empty() ? 0 : 1;
-  for (const MeshPart& mesh : meshes_) count += mesh.bvh.nodes.empty() && !mesh.own_tree ? 0 : 1;
+  for (const MeshPart& mesh : meshes_) count += mesh.has_tree() ? 1 : 0;
   return count;
+}
+
+std::size_t SceneGeometry::tree_bytes() const {
+  std::size_t bytes = objects_bvh_.nodes.size() * sizeof(BvhNode) + objects_bvh_.primitive_order.size() * 4;
+  for (const MeshPart& mesh : meshes_)
+    bytes += mesh.bvh.nodes.size() * sizeof(BvhNode) + mesh.bvh.primitive_order.size() * 4 +
+             mesh.wide.nodes.size() * sizeof(Bvh4Node) + mesh.wide.primitive_order.size() * 4 +
+             mesh.kdtree.nodes.size() * sizeof(KdNode) + mesh.kdtree.primitive_indices.size() * 4;
+  return bytes;
 }
 
 std::vector<std::vector<Bounds3>> SceneGeometry::tree_boxes_by_level() const {
@@ -387,16 +455,28 @@ const char* stage_tree_name(StageTree tree) {
     case StageTree::Median: return "median";
     case StageTree::Sah: return "sah";
     case StageTree::Wide: return "wide";
+    case StageTree::KdTree: return "kdtree";
     case StageTree::None: return "none";
     case StageTree::Best: return "best";
   }
   return "?";
 }
 
+namespace {
+constexpr StageTree kEveryStageTree[] = {StageTree::Best, StageTree::Median, StageTree::Sah, StageTree::Wide,
+                                         StageTree::KdTree, StageTree::None};
+}
+
 std::optional<StageTree> stage_tree_named(const std::string& name) {
-  for (const StageTree tree : {StageTree::Median, StageTree::Sah, StageTree::Wide, StageTree::None, StageTree::Best})
+  for (const StageTree tree : kEveryStageTree)
     if (name == stage_tree_name(tree)) return tree;
   return std::nullopt;
+}
+
+std::string stage_tree_words() {
+  std::string words;
+  for (const StageTree tree : kEveryStageTree) words += (words.empty() ? "" : ", ") + std::string(stage_tree_name(tree));
+  return words;
 }
 
 }  // namespace raylab

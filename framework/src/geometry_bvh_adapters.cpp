@@ -6,6 +6,7 @@
 
 #include "raylab/stages/05_bvh.h"
 #include "raylab/stages/05c_wide_bvh.h"
+#include "raylab/stages/05d_kdtree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,11 +66,12 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     if (details.t_hit < query.record->t_hit) query.record->set_triangle(mesh.first_triangle + triangle, details);
     return details.t_hit;
   }
-  if (!mesh.bvh.nodes.empty()) {
+  if (!mesh.bvh.nodes.empty() || !mesh.kdtree.nodes.empty()) {
     BvhTraversalStats stats;
     PrimitiveIntersector intersector{query.watch ? &SceneGeometry::test_triangle_watched : &SceneGeometry::test_triangle,
                                      &query};
     const auto traverse = [&](bool any_hit) {
+      if (!mesh.kdtree.nodes.empty()) return intersect_kdtree(mesh.kdtree, ray, intersector, any_hit, stats);
       return mesh.wide.nodes.empty() ? intersect_bvh(mesh.bvh, ray, intersector, any_hit, stats)
                                      : intersect_bvh4(mesh.wide, ray, intersector, any_hit, stats);
     };

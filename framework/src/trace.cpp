@@ -339,16 +339,23 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       // The tree the renderer traces (TracingFunctions::tree; raylab trace --accel): its build,
       // its traversal, and where to look when it loses the hit.
       const StageTree tree = geometry.tree_choice().used;
-      const std::string build = tree == StageTree::Sah ? "build_bvh_sah" : tree == StageTree::Wide ? "collapse_bvh4" : "build_bvh";
-      const std::string traversal = tree == StageTree::Wide ? "intersect_bvh4" : "intersect_bvh";
+      const std::string build = tree == StageTree::Sah      ? "build_bvh_sah"
+                                : tree == StageTree::Wide   ? "collapse_bvh4"
+                                : tree == StageTree::KdTree ? "build_kdtree"
+                                                            : "build_bvh";
+      const std::string traversal = tree == StageTree::Wide     ? "intersect_bvh4"
+                                    : tree == StageTree::KdTree ? "intersect_kdtree"
+                                                                : "intersect_bvh";
       const std::string look_at =
-          tree == StageTree::Wide ? "05c_wide_bvh (collapse_bvh4, intersect_bvh4, intersect_ray_box4)"
-          : tree == StageTree::Sah ? "05b_bvh_sah (build_bvh_sah), 05 (intersect_bvh) and 04 (intersect_ray_box)"
-                                   : "05 (build_bvh, intersect_bvh) and stage 04 (intersect_ray_box)";
+          tree == StageTree::Wide     ? "05c_wide_bvh (collapse_bvh4, intersect_bvh4, intersect_ray_box4)"
+          : tree == StageTree::KdTree ? "05d_kdtree (build_kdtree, intersect_kdtree)"
+          : tree == StageTree::Sah    ? "05b_bvh_sah (build_bvh_sah), 05 (intersect_bvh) and 04 (intersect_ray_box)"
+                                      : "05 (build_bvh, intersect_bvh) and stage 04 (intersect_ray_box)";
       const std::string look_at_zh =
-          tree == StageTree::Wide ? "05c_wide_bvh（collapse_bvh4、intersect_bvh4、intersect_ray_box4）"
-          : tree == StageTree::Sah ? "05b_bvh_sah（build_bvh_sah）、05（intersect_bvh）和 04（intersect_ray_box）"
-                                   : "05（build_bvh、intersect_bvh）和阶段 04（intersect_ray_box）";
+          tree == StageTree::Wide     ? "05c_wide_bvh（collapse_bvh4、intersect_bvh4、intersect_ray_box4）"
+          : tree == StageTree::KdTree ? "05d_kdtree（build_kdtree、intersect_kdtree）"
+          : tree == StageTree::Sah    ? "05b_bvh_sah（build_bvh_sah）、05（intersect_bvh）和 04（intersect_ray_box）"
+                                      : "05（build_bvh、intersect_bvh）和阶段 04（intersect_ray_box）";
       TraceStep step{"", "",
                      words("the closest hit through your trees (" + traversal + " on your " + build + "'s tree)",
                            "经过你的树的最近交点（在你的 " + build +
@@ -360,8 +367,9 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
                           "上面的测试找到了契约的交点，树却找到了另一个：请检查阶段 " + look_at_zh);
       // The nodes on the way to the contract's hit first: a box test or a traversal that loses it
       // is then the first disagreement, rather than the hit it lost. (The binary trees' nodes
-      // only: the 4-wide traversal's steps are not followed.)
-      if (contract_hits && tree != StageTree::Wide) trace_tree_path(geometry, ray, closest_contract, step.agrees);
+      // only: the 4-wide traversal's and the KD-tree's steps are not followed.)
+      if (contract_hits && tree != StageTree::Wide && tree != StageTree::KdTree)
+        trace_tree_path(geometry, ray, closest_contract, step.agrees);
       trace.steps.push_back(step);
     }
   } catch (const NotImplemented&) {

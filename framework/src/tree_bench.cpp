@@ -44,6 +44,7 @@ nlohmann::json row_json(const TreeBenchRow& row) {
   return {{"tree", row.tree},
           {"not_used", row.not_used},
           {"build_ms", row.build_ms},
+          {"tree_kb", row.tree_kb},
           {"rays", row.rays},
           {"closest_mrays", row.closest_mrays},
           {"any_mrays", row.any_mrays},
@@ -60,6 +61,7 @@ TreeBenchRow row_of(const nlohmann::json& json) {
   row.tree = json.at("tree").get<std::string>();
   row.not_used = json.value("not_used", "");
   row.build_ms = json.value("build_ms", 0.0);
+  row.tree_kb = json.value("tree_kb", 0.0);
   row.rays = json.value("rays", std::uint64_t{0});
   row.closest_mrays = json.value("closest_mrays", 0.0);
   row.any_mrays = json.value("any_mrays", 0.0);
@@ -86,8 +88,8 @@ void print_row(const std::string& who, const TreeBenchRow& row) {
     return std::string(text);
   };
   const std::string wrong = std::to_string(row.wrong) + " of " + std::to_string(row.checked);
-  std::printf("%-10s %-10s %9.1f %9.2f %7s %7s %9.2f %7s %7s  %s\n", who.c_str(), row.tree.c_str(), row.build_ms,
-              row.closest_mrays, per_ray(row.closest_nodes).c_str(), per_ray(row.closest_primitives).c_str(),
+  std::printf("%-10s %-10s %9.1f %8.1f %9.2f %7s %7s %9.2f %7s %7s  %s\n", who.c_str(), row.tree.c_str(), row.build_ms,
+              row.tree_kb, row.closest_mrays, per_ray(row.closest_nodes).c_str(), per_ray(row.closest_primitives).c_str(),
               row.any_mrays, per_ray(row.any_nodes).c_str(), per_ray(row.any_primitives).c_str(), wrong.c_str());
 }
 
@@ -125,11 +127,12 @@ std::vector<TreeBenchRow> bench_trees(const Scene& scene, const TreeBenchOptions
       const Clock::time_point start = Clock::now();
       const SceneGeometry geometry(scene, Acceleration::Bvh, TriangleTest::MollerTrumbore, tracing);
       row.build_ms = seconds_since(start) * 1e3;
+      row.tree_kb = static_cast<double>(geometry.tree_bytes()) / 1024.0;
       if (wanted && geometry.tree_choice().used != *wanted) {
         const SceneGeometry::TreeChoice& choice = geometry.tree_choice();
         row.not_used = choice.small_sets_only       ? "no tree: every set of primitives in the scene is small (4 or fewer)"
                        : !choice.stub_stage.empty() ? "stage " + choice.stub_stage + " is not written yet"
-                                                    : "no mesh large enough for a 4-wide tree (more than 4 triangles)";
+                                                    : "no mesh large enough for a tree of its own (more than 4 triangles)";
         rows.push_back(row);
         return;
       }
@@ -170,7 +173,7 @@ std::vector<TreeBenchRow> bench_trees(const Scene& scene, const TreeBenchOptions
     }
     rows.push_back(row);
   };
-  for (const StageTree tree : {StageTree::Median, StageTree::Sah, StageTree::Wide, StageTree::None}) {
+  for (const StageTree tree : {StageTree::Median, StageTree::Sah, StageTree::Wide, StageTree::KdTree, StageTree::None}) {
     TracingFunctions tracing;
     tracing.tree = tree;
     TreeBenchRow row;
@@ -192,9 +195,9 @@ int run_tree_bench(const TreeBenchOptions& options) {
   const std::vector<TreeBenchRow> rows = bench_trees(scene, options);
   std::printf("%s: %dx%d camera rays, one thread; per ray: nodes whose boxes were tested, primitives tested\n",
               options.scene_path.c_str(), options.width, options.height);
-  std::printf("%-10s %-10s %9s %9s %7s %7s %9s %7s %7s  %s\n", "", "tree", "build ms", "closest", "nodes", "prims",
-              "any hit", "nodes", "prims", "wrong answers");
-  std::printf("%-10s %-10s %9s %9s %7s %7s %9s %7s %7s  %s\n", "", "", "", "Mrays/s", "", "", "Mrays/s", "", "",
+  std::printf("%-10s %-10s %9s %8s %9s %7s %7s %9s %7s %7s  %s\n", "", "tree", "build ms", "memory", "closest", "nodes",
+              "prims", "any hit", "nodes", "prims", "wrong answers");
+  std::printf("%-10s %-10s %9s %8s %9s %7s %7s %9s %7s %7s  %s\n", "", "", "", "KiB", "Mrays/s", "", "", "Mrays/s", "", "",
               "(against every primitive)");
   const char* who = options.reference_program ? "reference" : "yours";
   for (const TreeBenchRow& row : rows) print_row(who, row);

@@ -1,14 +1,15 @@
 # cmake -DPROGRAM=path -DSCENE=path -DWORK=dir -P accel_same_image.cmake
-# `PROGRAM render SCENE --accel X` for X in median, sah, wide, none and best: each exits 0, its
+# `PROGRAM render SCENE --accel X` for X in median, sah, wide, kdtree, none and best: each exits 0, its
 # first line names the tree X asks for (best: the 4-wide one, where every stage is written), and
 # every picture is the one of --accel median, byte for byte.
 set(expected_median "tree: your median BVH \\(stage 05_bvh")
 set(expected_sah "tree: your SAH BVH \\(stage 05b_bvh_sah")
 set(expected_wide "tree: your 4-wide BVH \\(stage 05c_wide_bvh")
+set(expected_kdtree "tree: your KD-tree \\(stage 05d_kdtree")
 set(expected_none "tree: none, every primitive tested")
 set(expected_best "${expected_wide}")
 file(MAKE_DIRECTORY "${WORK}")
-foreach(tree median sah wide none best)
+foreach(tree median sah wide kdtree none best)
   set(image "${WORK}/accel_${tree}.ppm")
   file(REMOVE "${image}")
   execute_process(COMMAND "${PROGRAM}" render "${SCENE}" -o "${image}" --accel ${tree} --width 64 --height 48

@@ -5,7 +5,8 @@
 // BVH over its triangles, and a scene of more than a few objects (spheres and meshes) a
 // top-level BVH over the objects' boxes; smaller sets are tested one by one. Which stage trees
 // (TracingFunctions::tree): the median build, the SAH build (05b), the mesh trees collapsed to 4
-// wide (05c), or the best of those the student wrote (raylab render --accel). A program may
+// wide (05c), a KD-tree per mesh (05d), or the best of those the student wrote (raylab render
+// --accel). A program may
 // instead hand in a tree of its own over every triangle of the scene (TracingFunctions::own_tree,
 // raylab/accelerator.h), as the programs that link solutions/ do. If build_bvh,
 // intersect_bvh or intersect_ray_box is still a stub (throws NotImplemented), the geometry
@@ -28,6 +29,7 @@
 #include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/05_bvh.h"
 #include "raylab/stages/05c_wide_bvh.h"
+#include "raylab/stages/05d_kdtree.h"
 
 #include <cstdint>
 #include <memory>
@@ -63,13 +65,17 @@ enum class StageTree {
   Sah,     // stage 05b: build_bvh_sah, traversed by intersect_bvh
   Wide,    // stage 05c: the SAH tree (the median one while 05b is a stub) collapsed by
            // collapse_bvh4, each mesh's traversed by intersect_bvh4
+  KdTree,  // stage 05d: build_kdtree over each mesh's triangles, traversed by intersect_kdtree (the
+           // tree over the objects is the median one)
   None,    // no tree: every primitive tested
-  Best,    // Wide, Sah or Median: the first whose stages are written and whose answers are those of
-           // testing every primitive, on a sample of rays (SceneGeometry::tree_choice says which)
+  Best,    // Wide, Sah, KdTree or Median: the first whose stages are written and whose answers are
+           // those of testing every primitive, on a sample of rays (SceneGeometry::tree_choice says which)
 };
-// The --accel word of a tree ("median", "sah", "wide", "none", "best"), and back (nullopt: none).
+// The --accel word of a tree ("median", "sah", "wide", "kdtree", "none", "best"), and back (nullopt:
+// none); all the words, for a usage message ("best, median, sah, wide, kdtree, none").
 const char* stage_tree_name(StageTree tree);
 std::optional<StageTree> stage_tree_named(const std::string& name);
+std::string stage_tree_words();
 
 // Which ray-triangle test every triangle query uses.
 enum class TriangleTest {
@@ -147,6 +153,9 @@ class SceneGeometry {
   std::size_t triangle_count() const { return triangles_.size(); }
   // The number of BVHs in use (per mesh and top level); 0 when every primitive is tested.
   std::size_t bvh_count() const;
+  // The memory the stage trees in use take: nodes, primitive orders and leaf lists, in bytes (0 for
+  // a program's own tree, which keeps its own).
+  std::size_t tree_bytes() const;
   // The boxes of those trees' nodes by depth (`raylab view` draws one level at a time): the tree
   // over the objects from depth 0, each mesh's tree from the depth below the leaf that holds its
   // mesh (from 0 when there is no tree over the objects). Empty when no tree is in use.
@@ -212,9 +221,12 @@ class SceneGeometry {
     Bounds3 bounds;
     Bvh bvh;  // empty: test every triangle
     Bvh4 wide;  // StageTree::Wide: bvh collapsed to 4 wide (stage 05c), traversed instead
+    KdTree kdtree;  // StageTree::KdTree: the mesh's KD-tree (stage 05d), traversed instead of bvh (left empty)
     // The program's own tree over these triangles (TracingFunctions::own_tree), traced instead of
     // bvh (which it leaves empty); its triangle indices count from first_triangle.
     std::shared_ptr<const TriangleTree> own_tree;
+    // Whether a tree finds its hits (intersect_mesh), rather than a test of each triangle.
+    bool has_tree() const { return !bvh.nodes.empty() || !kdtree.nodes.empty() || own_tree; }
   };
   // The closest hit a query's primitive tests have reported so far (by the framework's own
   // comparison of t, whatever order a traversal calls the tests in), and its details.

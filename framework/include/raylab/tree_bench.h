@@ -1,5 +1,5 @@
 // `raylab bench SCENE`: the student's own trees side by side on one scene. For each of --accel
-// median, sah, wide and none: the time to build it, and closest-hit and any-hit queries of the
+// median, sah, wide, kdtree and none: the time to build it and its memory, and closest-hit and any-hit queries of the
 // scene's camera rays on one thread, with the work per ray (nodes whose boxes were tested,
 // primitives tested), and how many of its answers differ from testing every primitive. Beside
 // them, the reference's figures for the same scene, from
@@ -26,9 +26,10 @@ struct TreeBenchOptions {
 
 // One tree's row.
 struct TreeBenchRow {
-  std::string tree;          // "median", "sah", "wide", "none", or "reference"
+  std::string tree;          // "median", "sah", "wide", "kdtree", "none", or "reference"
   std::string not_used;      // why it could not be measured ("stage 05c_wide_bvh is not written yet"), or ""
   double build_ms = 0.0;
+  double tree_kb = 0.0;      // the trees' memory: nodes, primitive orders, leaf lists (SceneGeometry::tree_bytes)
   std::uint64_t rays = 0;    // of each kind of query
   double closest_mrays = 0.0, any_mrays = 0.0;  // millions of queries per second
   double closest_nodes = 0.0, closest_primitives = 0.0;  // per ray (0 where not counted)
