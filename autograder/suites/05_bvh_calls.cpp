@@ -40,14 +40,6 @@ Bvh remote_build(const grading::StageCall& call, const std::vector<Bounds3>& pri
   });
 }
 
-// What the server says of one traversal: the hit, the traversal's own stats (nodes_visited and
-// reported_tests, what it says it did) and the primitive tests counted in the server
-// (counted_tests, for the grader's own triangle test, which runs there).
-struct TraversalReply {
-  std::optional<BvhHit> hit;
-  std::uint64_t nodes_visited = 0, reported_tests = 0, counted_tests = 0;
-};
-
 // What the current stage server holds, for intersect_bvh and intersect_bvh_each alike.
 grading::SentList<BvhNode, BvhNodeAllocator<BvhNode>> sent_nodes;
 grading::SentList<std::uint32_t> sent_order;
@@ -75,25 +67,28 @@ std::optional<BvhHit> intersect_bvh(const Bvh& bvh, const Ray& ray, const Primit
   arguments.put(ray);
   arguments.put<std::uint8_t>(any_hit);
 
-  const TraversalReply reply = grading::remote(
-      kIntersectBvh, arguments,
-      [](Reader& in) {
-        TraversalReply read;
-        read.hit = in.get_optional<BvhHit>();
-        read.nodes_visited = in.get<std::uint64_t>();
-        read.reported_tests = in.get<std::uint64_t>();
-        read.counted_tests = in.get<std::uint64_t>();
-        return read;
-      },
-      grading::answer_primitive_tests(intersector));
+  const grading::TraversalReply reply = grading::remote(kIntersectBvh, arguments, grading::read_traversal_reply,
+                                                       grading::answer_primitive_tests(intersector));
   sent_nodes.returned(bvh.nodes);
   sent_order.returned(bvh.primitive_order);
   if (grader_test) sent_triangles.returned(*triangles);
-  // The judge's own intersector counts the calls it answered itself (the work it scores); `stats`
-  // gets what the traversal says, which the work test checks against that count.
+  grading::add_traversal_work(reply, grader_test, stats);
+  return reply.hit;
+}
+
+grading::TraversalReply grading::read_traversal_reply(Reader& in) {
+  TraversalReply read;
+  read.hit = in.get_optional<BvhHit>();
+  read.nodes_visited = in.get<std::uint64_t>();
+  read.reported_tests = in.get<std::uint64_t>();
+  read.counted_tests = in.get<std::uint64_t>();
+  in.expect_end();
+  return read;
+}
+
+void grading::add_traversal_work(const TraversalReply& reply, bool grader_test, BvhTraversalStats& stats) {
   stats.nodes_visited += reply.nodes_visited;
   stats.primitives_tested += grader_test ? reply.counted_tests : reply.reported_tests;
-  return reply.hit;
 }
 
 grading::StageSession::Callback grading::answer_primitive_tests(const PrimitiveIntersector& intersector) {
@@ -153,6 +148,11 @@ void serve_build(Reader& in, Writer& out) {
 Bvh bvh;
 std::vector<Triangle> triangles;
 
+std::optional<BvhHit> traverse_bvh(const Ray& ray, const PrimitiveIntersector& intersector, bool any_hit,
+                                   BvhTraversalStats& stats) {
+  return intersect_bvh(bvh, ray, intersector, any_hit, stats);
+}
+
 void serve_intersect_bvh(Reader& in, Writer& out) {
   grading::receive(in, bvh.nodes);
   grading::receive(in, bvh.primitive_order);
@@ -160,14 +160,7 @@ void serve_intersect_bvh(Reader& in, Writer& out) {
   if (grader_test) grading::receive(in, triangles);
   const auto ray = in.get<Ray>();
   const bool any_hit = in.get<std::uint8_t>() != 0;
-  grading::CountedTests counting{grader_test ? PrimitiveIntersector{grading::grader_triangle_test, &triangles}
-                                       : PrimitiveIntersector{grading::primitive_test_through_judge, nullptr}};
-  BvhTraversalStats stats;
-  const std::optional<BvhHit> hit = intersect_bvh(bvh, ray, PrimitiveIntersector{grading::counting_test, &counting}, any_hit, stats);
-  out.put_optional(hit);
-  out.put<std::uint64_t>(stats.nodes_visited);
-  out.put<std::uint64_t>(stats.primitives_tested);
-  out.put<std::uint64_t>(counting.tests);
+  grading::serve_traversal(out, ray, any_hit, grader_test, triangles, traverse_bvh);
 }
 
 void serve_intersect_bvh_each(Reader& in, Writer& out) {
@@ -188,12 +181,32 @@ const bool kServed = grading::serve(kBuildBvh, serve_build<&build_bvh>) &&
 
 std::vector<std::optional<BvhHit>> grading::intersect_bvh_each(const Bvh& tree, const std::vector<Triangle>& mesh,
                                                                const std::vector<Ray>& rays, bool any_hit) {
-  const PrimitiveIntersector grader_test{grading::grader_triangle_test, const_cast<std::vector<Triangle>*>(&mesh)};
+  return traverse_each(mesh, rays, any_hit, [&](const Ray& ray, const PrimitiveIntersector& intersector, bool any,
+                                                BvhTraversalStats& stats) {
+    return intersect_bvh(tree, ray, intersector, any, stats);
+  });
+}
+
+void grading::serve_traversal(Writer& out, const Ray& ray, bool any_hit, bool grader_test, std::vector<Triangle>& mesh,
+                              const Traversal& traverse) {
+  CountedTests counting{grader_test ? PrimitiveIntersector{grader_triangle_test, &mesh}
+                                    : PrimitiveIntersector{primitive_test_through_judge, nullptr}};
+  BvhTraversalStats stats;
+  const std::optional<BvhHit> hit = traverse(ray, PrimitiveIntersector{counting_test, &counting}, any_hit, stats);
+  out.put_optional(hit);
+  out.put<std::uint64_t>(stats.nodes_visited);
+  out.put<std::uint64_t>(stats.primitives_tested);
+  out.put<std::uint64_t>(counting.tests);
+}
+
+std::vector<std::optional<BvhHit>> grading::traverse_each(const std::vector<Triangle>& mesh, const std::vector<Ray>& rays,
+                                                          bool any_hit, const Traversal& traverse) {
+  const PrimitiveIntersector grader_test{grader_triangle_test, const_cast<std::vector<Triangle>*>(&mesh)};
   std::vector<std::optional<BvhHit>> hits;
   hits.reserve(rays.size());
   for (const Ray& ray : rays) {
     BvhTraversalStats stats;
-    hits.push_back(intersect_bvh(tree, ray, grader_test, any_hit, stats));
+    hits.push_back(traverse(ray, grader_test, any_hit, stats));
   }
   return hits;
 }

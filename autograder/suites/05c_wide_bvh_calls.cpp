@@ -74,29 +74,12 @@ std::optional<BvhHit> intersect_bvh4(const Bvh4& bvh, const Ray& ray, const Prim
   if (grader_test) sent_triangles.put(arguments, *triangles);
   arguments.put(ray);
   arguments.put<std::uint8_t>(any_hit);
-  struct Reply {  // the hit, the traversal's own stats, and the primitive tests the server counted
-    std::optional<BvhHit> hit;
-    std::uint64_t nodes_visited = 0, reported_tests = 0, counted_tests = 0;
-  };
-  const Reply reply = grading::remote(
-      kIntersectBvh4, arguments,
-      [](Reader& in) {
-        Reply read;
-        read.hit = in.get_optional<BvhHit>();
-        read.nodes_visited = in.get<std::uint64_t>();
-        read.reported_tests = in.get<std::uint64_t>();
-        read.counted_tests = in.get<std::uint64_t>();
-        in.expect_end();
-        return read;
-      },
-      grading::answer_primitive_tests(intersector));
+  const grading::TraversalReply reply = grading::remote(kIntersectBvh4, arguments, grading::read_traversal_reply,
+                                                       grading::answer_primitive_tests(intersector));
   sent_nodes.returned(bvh.nodes);
   sent_order.returned(bvh.primitive_order);
   if (grader_test) sent_triangles.returned(*triangles);
-  // With the grader's triangle test, the tests the server counted; with any other intersector (the
-  // work test's, which counts in the judge), what the traversal says, for the work test to check.
-  stats.nodes_visited += reply.nodes_visited;
-  stats.primitives_tested += grader_test ? reply.counted_tests : reply.reported_tests;
+  grading::add_traversal_work(reply, grader_test, stats);
   return reply.hit;
 }
 
@@ -142,15 +125,10 @@ void serve_intersect_bvh4(Reader& in, Writer& out) {
   if (grader_test) grading::receive(in, triangles);
   const auto ray = in.get<Ray>();
   const bool any_hit = in.get<std::uint8_t>() != 0;
-  grading::CountedTests counting{grader_test ? PrimitiveIntersector{grading::grader_triangle_test, &triangles}
-                                             : PrimitiveIntersector{grading::primitive_test_through_judge, nullptr}};
-  BvhTraversalStats stats;
-  const std::optional<BvhHit> hit =
-      intersect_bvh4(bvh, ray, PrimitiveIntersector{grading::counting_test, &counting}, any_hit, stats);
-  out.put_optional(hit);
-  out.put<std::uint64_t>(stats.nodes_visited);
-  out.put<std::uint64_t>(stats.primitives_tested);
-  out.put<std::uint64_t>(counting.tests);
+  grading::serve_traversal(out, ray, any_hit, grader_test, triangles,
+                           [&](const Ray& r, const PrimitiveIntersector& intersector, bool any, BvhTraversalStats& stats) {
+                             return intersect_bvh4(bvh, r, intersector, any, stats);
+                           });
 }
 
 const bool kServed = grading::serve(kCollapse, serve_collapse) && grading::serve(kBox4, serve_box4) &&

@@ -67,28 +67,11 @@ std::optional<BvhHit> intersect_kdtree(const KdTree& tree, const Ray& ray, const
   if (grader_test) sent_triangles.put(arguments, *triangles);
   arguments.put(ray);
   arguments.put<std::uint8_t>(any_hit);
-  struct Reply {  // the hit, the traversal's own stats, and the primitive tests the server counted
-    std::optional<BvhHit> hit;
-    std::uint64_t nodes_visited = 0, reported_tests = 0, counted_tests = 0;
-  };
-  const Reply reply = grading::remote(
-      kIntersectKdTree, arguments,
-      [](Reader& in) {
-        Reply read;
-        read.hit = in.get_optional<BvhHit>();
-        read.nodes_visited = in.get<std::uint64_t>();
-        read.reported_tests = in.get<std::uint64_t>();
-        read.counted_tests = in.get<std::uint64_t>();
-        in.expect_end();
-        return read;
-      },
-      grading::answer_primitive_tests(intersector));
+  const grading::TraversalReply reply = grading::remote(kIntersectKdTree, arguments, grading::read_traversal_reply,
+                                                       grading::answer_primitive_tests(intersector));
   tree_returned(tree);
   if (grader_test) sent_triangles.returned(*triangles);
-  // With the grader's triangle test, the tests the server counted; with any other intersector (the
-  // work test's, which counts in the judge), what the traversal says, for the work test to check.
-  stats.nodes_visited += reply.nodes_visited;
-  stats.primitives_tested += grader_test ? reply.counted_tests : reply.reported_tests;
+  grading::add_traversal_work(reply, grader_test, stats);
   return reply.hit;
 }
 
@@ -139,21 +122,18 @@ void receive_tree(Reader& in) {
   grading::receive(in, tree.primitive_indices);
 }
 
+std::optional<BvhHit> traverse_kdtree(const Ray& ray, const PrimitiveIntersector& intersector, bool any_hit,
+                                      BvhTraversalStats& stats) {
+  return intersect_kdtree(tree, ray, intersector, any_hit, stats);
+}
+
 void serve_intersect(Reader& in, Writer& out) {
   receive_tree(in);
   const bool grader_test = in.get<std::uint8_t>() != 0;
   if (grader_test) grading::receive(in, triangles);
   const auto ray = in.get<Ray>();
   const bool any_hit = in.get<std::uint8_t>() != 0;
-  grading::CountedTests counting{grader_test ? PrimitiveIntersector{grading::grader_triangle_test, &triangles}
-                                             : PrimitiveIntersector{grading::primitive_test_through_judge, nullptr}};
-  BvhTraversalStats stats;
-  const std::optional<BvhHit> hit =
-      intersect_kdtree(tree, ray, PrimitiveIntersector{grading::counting_test, &counting}, any_hit, stats);
-  out.put_optional(hit);
-  out.put<std::uint64_t>(stats.nodes_visited);
-  out.put<std::uint64_t>(stats.primitives_tested);
-  out.put<std::uint64_t>(counting.tests);
+  grading::serve_traversal(out, ray, any_hit, grader_test, triangles, traverse_kdtree);
 }
 
 void serve_intersect_each(Reader& in, Writer& out) {
@@ -172,14 +152,10 @@ const bool kServed = grading::serve(kBuildKdTree, serve_build) && grading::serve
 
 std::vector<std::optional<BvhHit>> grading::intersect_kdtree_each(const KdTree& kd, const std::vector<Triangle>& mesh,
                                                                   const std::vector<Ray>& rays, bool any_hit) {
-  const PrimitiveIntersector grader_test{grading::grader_triangle_test, const_cast<std::vector<Triangle>*>(&mesh)};
-  std::vector<std::optional<BvhHit>> hits;
-  hits.reserve(rays.size());
-  for (const Ray& ray : rays) {
-    BvhTraversalStats stats;
-    hits.push_back(intersect_kdtree(kd, ray, grader_test, any_hit, stats));
-  }
-  return hits;
+  return traverse_each(mesh, rays, any_hit, [&](const Ray& ray, const PrimitiveIntersector& intersector, bool any,
+                                                BvhTraversalStats& stats) {
+    return intersect_kdtree(kd, ray, intersector, any, stats);
+  });
 }
 #endif
 
