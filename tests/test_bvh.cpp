@@ -8,6 +8,7 @@
 #include "raylab/bvh_tools.h"
 #include "raylab/stages/05_bvh.h"
 #include "raylab/stages/05c_wide_bvh.h"
+#include "raylab/stages/05d_kdtree.h"
 #include "raylab/testkit/triangles.h"
 
 #include "../solutions/05c_wide_bvh/wide8.h"  // the reference's 8-wide tree and its inlined tests
@@ -267,6 +268,50 @@ TEST(BvhNodeLayout, EverySiblingPairFillsOneCacheLine) {
   Bvh copied = bvh;  // copies and growth keep the layout: it is the allocator's
   copied.nodes.push_back(BvhNode{});
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(&copied.nodes[1]) % 64, 0u);
+}
+
+}  // namespace
+}  // namespace raylab
+
+namespace raylab {
+namespace {
+
+// The reference KD-tree (solutions/05d_kdtree) on a ray that lies in a split plane (z = 0.5): both
+// sides are walked over the same interval, and inside the side walked first a plane across the
+// ray (x = 5) pushes a cell above the other side on the stack. The side walked first has a hit
+// inside its cell at t = 4; the other side holds a nearer one, B at t = 2, whose box starts at the
+// plane (min z = 0.5: above only). A walk that stops at the first hit inside its cell returns 4.
+TEST(ReferenceKdTree, ARayInASplitPlaneWalksBothSidesBeforeItStops) {
+  TriangleMesh mesh;
+  mesh.positions = {{4, -1, 0}, {4, 1, 0}, {4, 0, 1},            // A: across the plane, hit at x = 4
+                    {2, -1, 0.5f}, {2, 1, 0.5f}, {2, 0, 1.5f},   // B: above the plane, hit at x = 2 (its edge)
+                    {8, -1, 0}, {8, 1, 0}, {8, 0, 1}};           // C: far, below x = 5's plane
+  mesh.indices = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+  KdTree tree;
+  tree.bounds = Bounds3{glm::vec3(2, -1, 0), glm::vec3(8, 1, 1.5f)};
+  tree.nodes.resize(5);
+  tree.nodes[0].split_axis = 2, tree.nodes[0].split_position = 0.5f, tree.nodes[0].first_index = 1;
+  tree.nodes[1].split_axis = 0, tree.nodes[1].split_position = 5.0f, tree.nodes[1].first_index = 3;
+  tree.primitive_indices = {1, 0, 0, 2};  // above: B and A; below, x < 5: A; below, x > 5: C
+  const auto leaf = [&](std::uint32_t node, std::uint32_t first, std::uint32_t count) {
+    tree.nodes[node].leaf = 1, tree.nodes[node].first_index = first, tree.nodes[node].primitive_count = count;
+  };
+  leaf(2, 0, 2);
+  leaf(3, 2, 1);
+  leaf(4, 3, 1);
+  const testkit::IndexedTriangles triangles{&mesh.positions, &mesh.indices, &intersect_ray_triangle};
+  const PrimitiveIntersector intersector = testkit::intersector_over(triangles);
+  Ray ray;
+  ray.origin = glm::vec3(0.0f, 0.0f, 0.5f);
+  ray.direction = glm::vec3(1.0f, 0.0f, 0.0f);
+  const std::optional<BvhHit> expected = testkit::brute_force_hit(intersector, 3, ray);
+  ASSERT_TRUE(expected.has_value());
+  ASSERT_EQ(expected->t_hit, 2.0f);  // (B's edge counts as a hit)
+  BvhTraversalStats stats;
+  const std::optional<BvhHit> got = intersect_kdtree(tree, ray, intersector, false, stats);
+  ASSERT_TRUE(got.has_value());
+  EXPECT_EQ(got->t_hit, 2.0f);
+  EXPECT_EQ(got->primitive, 1u);
 }
 
 }  // namespace

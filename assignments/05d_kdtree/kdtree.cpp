@@ -29,9 +29,10 @@
 //     side of the plane first, with the interval cut at the plane (t_split), the other child
 //     afterwards with the rest, and only the children the interval reaches. At a leaf it tests
 //     its primitives and keeps the closest hit so far; the walk ends when that hit lies inside the
-//     leaf's cell (t_hit <= the leaf's interval end; a ray that lies in a plane walks both of its
-//     sides over the same interval, so not before the second), or when the next cell starts
-//     beyond it. With any_hit it returns the first hit found. stats.nodes_visited counts every
+//     leaf's cell (t_hit <= the leaf's interval end), or when the next cell starts beyond it. One
+//     exception: a ray that lies in a plane walks both of its sides over the same interval, so
+//     while the second side waits the walk only skips cells that start beyond the hit, and walks
+//     that side before it ends. A ray that misses tree.bounds visits no node. With any_hit it returns the first hit found. stats.nodes_visited counts every
 //     node stepped into, stats.primitives_tested every intersector.test call.
 //
 // READ docs/05d_kdtree.md: section 1 (cells, not groups), 2 (the layout), 3 (the SAH over planes,

@@ -185,13 +185,19 @@ WalkResult grader_walk(const KdTree& tree, const PrimitiveIntersector& intersect
   struct Cell {
     std::uint32_t node;
     double t0, t1;
+    bool in_plane;  // the other side of a plane the ray lies in (the stack is out of order while one waits)
   };
-  std::vector<Cell> stack{{0u, root->first, root->second}};
+  std::vector<Cell> stack{{0u, root->first, root->second, false}};
+  int in_plane_waiting = 0;
   Ray search = ray;
   while (!stack.empty()) {
     Cell cell = stack.back();
     stack.pop_back();
-    if (mistakes.stop != WalkMistakes::Stop::Never && result.hit && cell.t0 > result.hit->t_hit) break;
+    if (cell.in_plane) --in_plane_waiting;
+    if (mistakes.stop != WalkMistakes::Stop::Never && result.hit && cell.t0 > result.hit->t_hit) {
+      if (in_plane_waiting == 0) break;
+      continue;
+    }
     while (!tree.nodes[cell.node].is_leaf()) {
       const KdNode& node = tree.nodes[cell.node];
       const double o = ray.origin[node.split_axis], d = ray.direction[node.split_axis], split = node.split_position;
@@ -199,7 +205,7 @@ WalkResult grader_walk(const KdTree& tree, const PrimitiveIntersector& intersect
       std::uint32_t near = below_first ? node.first_index : node.first_index + 1;
       std::uint32_t far = below_first ? node.first_index + 1 : node.first_index;
       if (d == 0.0) {
-        if (o == split) stack.push_back({far, cell.t0, cell.t1});
+        if (o == split) stack.push_back({far, cell.t0, cell.t1, true}), ++in_plane_waiting;
         cell.node = near;
         continue;
       }
@@ -209,11 +215,11 @@ WalkResult grader_walk(const KdTree& tree, const PrimitiveIntersector& intersect
       } else if (t_split < cell.t0) {
         cell.node = far;
       } else if (mistakes.far_first) {
-        stack.push_back({near, cell.t0, mistakes.interval_not_cut ? cell.t1 : t_split});
-        cell = {far, t_split, cell.t1};
+        stack.push_back({near, cell.t0, mistakes.interval_not_cut ? cell.t1 : t_split, false});
+        cell = {far, t_split, cell.t1, false};
       } else {
-        stack.push_back({far, t_split, cell.t1});
-        cell = {near, cell.t0, mistakes.interval_not_cut ? cell.t1 : t_split};
+        stack.push_back({far, t_split, cell.t1, false});
+        cell = {near, cell.t0, mistakes.interval_not_cut ? cell.t1 : t_split, false};
       }
     }
     const KdNode& leaf = tree.nodes[cell.node];
@@ -231,7 +237,7 @@ WalkResult grader_walk(const KdTree& tree, const PrimitiveIntersector& intersect
     }
     // (a cell still waiting may start before t1: the other side of a plane the ray lies in)
     if (result.hit && mistakes.stop == WalkMistakes::Stop::InCell &&
-        (mistakes.no_cell_check || (result.hit->t_hit <= cell.t1 && (stack.empty() || result.hit->t_hit <= stack.back().t0))))
+        (mistakes.no_cell_check || (result.hit->t_hit <= cell.t1 && in_plane_waiting == 0)))
       break;
   }
   return result;

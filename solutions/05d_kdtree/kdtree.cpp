@@ -150,15 +150,21 @@ std::optional<BvhHit> intersect_kdtree(const KdTree& tree, const Ray& ray, const
   struct Cell {
     std::uint32_t node;
     float t0, t1;
+    bool in_plane;  // the other side of a plane the ray lies in: it starts where its sibling starts
   };
   std::array<Cell, kKdMaxDepth + 1> stack;
   int size = 0;
-  stack[size++] = {0, t0, t1};
-  Ray search = ray;  // t_max: the closest hit so far
+  stack[size++] = {0, t0, t1, false};
+  int in_plane_waiting = 0;  // such cells on the stack: while there are, the stack is not in order
+  Ray search = ray;          // t_max: the closest hit so far
   std::optional<BvhHit> closest;
   while (size > 0) {
     Cell cell = stack[--size];
-    if (cell.t0 > search.t_max) break;  // this cell, and every one after it, lies beyond the closest hit
+    if (cell.in_plane) --in_plane_waiting;
+    if (cell.t0 > search.t_max) {  // this cell lies beyond the closest hit, and so does every one after it
+      if (in_plane_waiting == 0) break;  // (but for the other side of a plane the ray lies in)
+      continue;
+    }
     while (true) {
       const KdNode& node = tree.nodes[cell.node];
       ++stats.nodes_visited;
@@ -169,7 +175,10 @@ std::optional<BvhHit> intersect_kdtree(const KdTree& tree, const Ray& ray, const
       const std::uint32_t near = below_first ? node.first_index : node.first_index + 1;
       const std::uint32_t far = below_first ? node.first_index + 1 : node.first_index;
       if (d == 0.0f) {
-        if (o == split) stack[size++] = {far, cell.t0, cell.t1};  // a ray in the plane: both sides
+        if (o == split) {  // a ray in the plane: both sides, over the same interval
+          stack[size++] = {far, cell.t0, cell.t1, true};
+          ++in_plane_waiting;
+        }
         cell.node = near;
         continue;
       }
@@ -179,8 +188,8 @@ std::optional<BvhHit> intersect_kdtree(const KdTree& tree, const Ray& ray, const
       } else if (t_split < cell.t0) {
         cell.node = far;
       } else {
-        stack[size++] = {far, t_split, cell.t1};
-        cell = {near, cell.t0, t_split};
+        stack[size++] = {far, t_split, cell.t1, false};
+        cell = {near, cell.t0, t_split, false};
       }
     }
     const KdNode& leaf = tree.nodes[cell.node];
@@ -195,9 +204,9 @@ std::optional<BvhHit> intersect_kdtree(const KdTree& tree, const Ray& ray, const
         }
       }
     }
-    // Inside this cell: no later cell holds a nearer one (but for the other side of a plane the ray
-    // lies in, waiting with the same interval).
-    if (closest && closest->t_hit <= cell.t1 && (size == 0 || closest->t_hit <= stack[size - 1].t0)) break;
+    // Inside this cell: no later cell holds a nearer one (but the other side of a plane the ray lies
+    // in may: it waits with an interval that starts before this cell's end).
+    if (closest && closest->t_hit <= cell.t1 && in_plane_waiting == 0) break;
   }
   return closest;
 }

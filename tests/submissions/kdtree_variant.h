@@ -165,14 +165,20 @@ std::optional<BvhHit> intersect_kdtree(const KdTree& tree, const Ray& ray, const
   struct Cell {
     std::uint32_t node;
     float t0, t1;
+    bool in_plane;
   };
-  std::vector<Cell> stack{{0u, t0, t1}};
+  std::vector<Cell> stack{{0u, t0, t1, false}};
+  int in_plane_waiting = 0;
   Ray search = ray;
   std::optional<BvhHit> closest;
   while (!stack.empty()) {
     Cell cell = stack.back();
     stack.pop_back();
-    if (!v.never_stops && closest && cell.t0 > closest->t_hit) break;
+    if (cell.in_plane) --in_plane_waiting;
+    if (!v.never_stops && closest && cell.t0 > closest->t_hit) {
+      if (in_plane_waiting == 0) break;
+      continue;
+    }
     while (true) {
       const KdNode& node = tree.nodes[cell.node];
       if (!v.nodes_not_counted) ++stats.nodes_visited;
@@ -182,7 +188,7 @@ std::optional<BvhHit> intersect_kdtree(const KdTree& tree, const Ray& ray, const
       const std::uint32_t near = below_first ? node.first_index : node.first_index + 1;
       const std::uint32_t far = below_first ? node.first_index + 1 : node.first_index;
       if (d == 0.0f) {
-        if (o == s) stack.push_back({far, cell.t0, cell.t1});
+        if (o == s) stack.push_back({far, cell.t0, cell.t1, true}), ++in_plane_waiting;
         cell.node = near;
         continue;
       }
@@ -192,11 +198,11 @@ std::optional<BvhHit> intersect_kdtree(const KdTree& tree, const Ray& ray, const
       } else if (t_split < cell.t0) {
         cell.node = far;
       } else if (v.far_first) {  // the far cell first, the near one afterwards
-        stack.push_back({near, cell.t0, v.interval_not_cut ? cell.t1 : t_split});
-        cell = {far, t_split, cell.t1};
+        stack.push_back({near, cell.t0, v.interval_not_cut ? cell.t1 : t_split, false});
+        cell = {far, t_split, cell.t1, false};
       } else {
-        stack.push_back({far, t_split, cell.t1});
-        cell = {near, cell.t0, v.interval_not_cut ? cell.t1 : t_split};
+        stack.push_back({far, t_split, cell.t1, false});
+        cell = {near, cell.t0, v.interval_not_cut ? cell.t1 : t_split, false};
       }
     }
     const KdNode& leaf = tree.nodes[cell.node];
@@ -209,7 +215,7 @@ std::optional<BvhHit> intersect_kdtree(const KdTree& tree, const Ray& ray, const
       }
     }
     if (closest && !v.never_stops &&
-        (v.hit_beyond_cell || (closest->t_hit <= cell.t1 && (stack.empty() || closest->t_hit <= stack.back().t0))))
+        (v.hit_beyond_cell || (closest->t_hit <= cell.t1 && in_plane_waiting == 0)))
       break;
   }
   return closest;
