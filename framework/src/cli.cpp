@@ -83,6 +83,13 @@ struct RenderOptions {
   bool accel_given = false;
 };
 
+// The tree --accel names (raylab render's and raylab trace's).
+StageTree accel_option(const std::string& accel) {
+  const std::optional<StageTree> tree = stage_tree_named(accel);
+  if (!tree) throw UsageError("--accel: unknown tree '" + accel + "' (known: " + stage_tree_words() + ")");
+  return *tree;
+}
+
 // What --accel says, in one line (raylab render's first): the tree the geometry traces, and why
 // better ones were passed over.
 std::string tree_choice_text(const SceneGeometry::TreeChoice& choice) {
@@ -92,16 +99,14 @@ std::string tree_choice_text(const SceneGeometry::TreeChoice& choice) {
   } else if (!choice.own_tree.empty()) {
     text = "raylab: tree: " + choice.own_tree;
   } else {
-    switch (choice.used) {
-      case StageTree::Median: text = "raylab: tree: your median BVH (stage 05_bvh; --accel median)"; break;
-      case StageTree::Sah: text = "raylab: tree: your SAH BVH (stage 05b_bvh_sah; --accel sah)"; break;
-      case StageTree::Wide: text = "raylab: tree: your 4-wide BVH (stage 05c_wide_bvh; --accel wide)"; break;
-      case StageTree::KdTree: text = "raylab: tree: your KD-tree (stage 05d_kdtree; --accel kdtree)"; break;
-      default:
-        text = choice.stub_stage.empty()
-                   ? "raylab: tree: none, every primitive tested (--accel none)"
-                   : "raylab: tree: none, every primitive tested: stage " + choice.stub_stage + " is not written yet";
-        break;
+    if (choice.used == StageTree::None) {
+      text = choice.stub_stage.empty()
+                 ? "raylab: tree: none, every primitive tested (--accel none)"
+                 : "raylab: tree: none, every primitive tested: stage " + choice.stub_stage + " is not written yet";
+    } else {
+      const StageTreeFacts& tree = stage_tree_facts(choice.used);
+      text = std::string("raylab: tree: your ") + tree.what + " (stage " + tree.stage + "; --accel " +
+             stage_tree_name(choice.used) + ")";
     }
   }
   for (const std::string& why : choice.passed_over) text += "\n  not used: " + why;
@@ -159,9 +164,7 @@ RenderSetup render_setup(const RenderOptions& options) {
   settings.roulette = roulette;
   settings.threads = options.threads;
   if (options.watertight) settings.triangle_test = TriangleTest::Watertight;
-  const std::optional<StageTree> tree = stage_tree_named(options.accel);
-  if (!tree) throw UsageError("--accel: unknown tree '" + options.accel + "' (known: " + stage_tree_words() + ")");
-  settings.tracing.tree = *tree;
+  settings.tracing.tree = accel_option(options.accel);
   if (!options.accel_given) settings.tracing.own_tree = options.own_tree;
   return {std::move(scene), settings};
 }
@@ -265,9 +268,7 @@ int run_trace(const TraceOptions& options, const TracingFunctions& contract) {
   settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.max_depth;
   settings.roulette = roulette;
   settings.chinese = options.language == "zh";
-  const std::optional<StageTree> tree = stage_tree_named(options.accel);
-  if (!tree) throw UsageError("--accel: unknown tree '" + options.accel + "' (known: " + stage_tree_words() + ")");
-  settings.yours.tree = *tree;
+  settings.yours.tree = accel_option(options.accel);
   if (!options.json) {
     print_trace(std::cout, options.scene_path, trace_pixel(scene, options.pixel[0], options.pixel[1], settings, contract));
     return kExitOk;
@@ -381,7 +382,7 @@ int run_cli(int argc, char** argv, LinkedStages stages, TriangleTreeBuilder own_
                    "The trees that find the hits: median (stage 05), sah (05b), wide (05c), kdtree (05d), none (every "
                    "primitive), or best (default: the first of wide, sah, kdtree, median whose stages are written and "
                    "that agree with testing every primitive on a sample of rays; the first line says which)")
-      ->check(CLI::IsMember({"best", "median", "sah", "wide", "kdtree", "none"}));
+      ->check(CLI::IsMember(stage_tree_word_list()));
   render_command->add_flag("--watertight", options.watertight,
                            "Use the watertight triangle test (bonus stage 06_robustness) instead of stage 03's");
   render_command->add_flag("-q,--quiet", options.quiet,
@@ -424,7 +425,8 @@ int run_cli(int argc, char** argv, LinkedStages stages, TriangleTreeBuilder own_
     trace_command->add_option("--roulette", trace_options.roulette, "As raylab render's (default 1: no roulette)");
     trace_command->add_option("--seed", trace_options.seed, "As raylab render's (default 0)");
     trace_command->add_option("--accel", trace_options.accel,
-                              "As raylab render's: the tree whose walk is traced (default best: the one render uses)");
+                              "As raylab render's: the tree whose walk is traced (default best: the one render uses)")
+        ->check(CLI::IsMember(stage_tree_word_list()));
     trace_command->add_flag("--json", trace_options.json,
                             "Print the trace as JSON (the steps, and the rays as segments on the picture)");
     trace_command

@@ -1,22 +1,19 @@
 // SceneGeometry, part 1 of 4: building. The scene's triangles in one array (per mesh, in
-// its BVH's leaf order), the per-mesh and top-level trees from the student's build_bvh (or
-// build_bvh_sah, or collapsed to 4 wide: StageTree), each checked before use, a probe that finds
-// out at once whether the stages they need are stubs, and for StageTree::Best the choice of the
-// best tree whose answers are those of testing every primitive.
+// its tree's leaf order), each mesh's stage tree (mesh_trees.h: the median, SAH, 4-wide or
+// KD-tree, by StageTree) and the tree over the objects (the student's build_bvh or
+// build_bvh_sah), each checked before use, a probe that finds out at once whether the stages they
+// need are stubs, and for StageTree::Best the choice of the best tree whose answers are those of
+// testing every primitive. The words of each tree (stage_tree_name, stage_tree_facts).
 // (geometry_bvh_adapters.cpp: queries through the trees; geometry_brute_force.cpp: without
 // them; geometry.cpp: the public queries and the hit details.)
 #include "raylab/geometry.h"
 
+#include "mesh_trees.h"
 #include "tree_answers.h"
 
-#include "raylab/bvh_tools.h"
 #include "raylab/error.h"
 #include "raylab/random.h"
 #include "raylab/stages/02_sphere.h"
-#include "raylab/stages/04_box.h"
-#include "raylab/stages/05_bvh.h"
-#include "raylab/stages/05c_wide_bvh.h"
-#include "raylab/stages/05d_kdtree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,87 +27,6 @@
 namespace raylab {
 
 namespace {
-
-// A student's build_bvh may return a tree that would send the traversal out of its arrays:
-// stop with the broken rule in words rather than crash (or render garbage) later.
-// `mesh`: the mesh's name, or nullopt for the tree over the scene's objects.
-void check_tree(const Bvh& bvh, const std::vector<Bounds3>& boxes, const std::optional<std::string>& mesh) {
-  if (const std::optional<BvhViolation> broken = find_bvh_violation(bvh, boxes, SceneGeometry::kBvhLeafSize))
-    throw BrokenBvh(*broken, boxes.size(), mesh);
-}
-
-// A student's collapse_bvh4 may return a tree that would send intersect_bvh4 out of its arrays:
-// what is wrong with it, in words, or nullopt.
-std::optional<std::string> wide_tree_problem(const Bvh4& wide, std::size_t primitive_count) {
-  if (wide.primitive_order.size() != primitive_count)
-    return "its primitive_order holds " + std::to_string(wide.primitive_order.size()) + " entries, not " +
-           std::to_string(primitive_count);
-  std::vector<bool> seen(primitive_count, false);
-  for (const std::uint32_t primitive : wide.primitive_order) {
-    if (primitive >= primitive_count || seen[primitive]) return "its primitive_order is not each primitive once";
-    seen[primitive] = true;
-  }
-  if (wide.nodes.empty()) return primitive_count == 0 ? std::nullopt : std::optional<std::string>("it has no nodes");
-  // Every node reached once from the root (as stage 05c's contract asks), each slot in range.
-  std::vector<bool> reached(wide.nodes.size(), false);
-  std::vector<std::uint32_t> stack{0};
-  reached[0] = true;
-  while (!stack.empty()) {
-    const std::uint32_t n = stack.back();
-    stack.pop_back();
-    const Bvh4Node& node = wide.nodes[n];
-    if (node.child_count < 1 || node.child_count > kBvh4Width)
-      return "node " + std::to_string(n) + " has " + std::to_string(node.child_count) + " children";
-    for (int slot = 0; slot < node.child_count; ++slot) {
-      if (node.is_leaf(slot)) {
-        if (std::uint64_t(node.child[slot]) + node.primitive_count[slot] > primitive_count)
-          return "a leaf of node " + std::to_string(n) + " reaches past primitive_order";
-        continue;
-      }
-      const std::uint32_t child = node.child[slot];
-      if (child == 0 || child >= wide.nodes.size() || reached[child])
-        return "node " + std::to_string(n) + " names child node " + std::to_string(child) +
-               " (each node but the root must be one node's child, once, within the nodes)";
-      reached[child] = true;
-      stack.push_back(child);
-    }
-  }
-  return std::nullopt;
-}
-
-// A student's build_kdtree may return a tree that would send intersect_kdtree out of its arrays
-// (or past the stack of kKdMaxDepth cells its contract promises): what is wrong with it, in words,
-// or nullopt.
-std::optional<std::string> kd_tree_problem(const KdTree& tree, std::size_t primitive_count) {
-  if (tree.nodes.empty()) return primitive_count == 0 ? std::nullopt : std::optional<std::string>("it has no nodes");
-  std::vector<bool> reached(tree.nodes.size(), false);
-  std::vector<std::pair<std::uint32_t, int>> stack{{0u, 0}};
-  reached[0] = true;
-  while (!stack.empty()) {
-    const auto [n, depth] = stack.back();
-    stack.pop_back();
-    const KdNode& node = tree.nodes[n];
-    if (depth > kKdMaxDepth) return "node " + std::to_string(n) + " lies deeper than kKdMaxDepth";
-    if (node.is_leaf()) {
-      if (std::uint64_t(node.first_index) + node.primitive_count > tree.primitive_indices.size())
-        return "leaf " + std::to_string(n) + " reaches past primitive_indices";
-      for (std::uint32_t i = node.first_index; i < node.first_index + node.primitive_count; ++i)
-        if (tree.primitive_indices[i] >= primitive_count)
-          return "leaf " + std::to_string(n) + " lists primitive " + std::to_string(tree.primitive_indices[i]) +
-                 " of " + std::to_string(primitive_count);
-      continue;
-    }
-    if (node.split_axis > 2) return "node " + std::to_string(n) + " has split_axis " + std::to_string(node.split_axis);
-    const std::uint64_t first = node.first_index;
-    if (first == 0 || first + 1 >= tree.nodes.size() || reached[first] || reached[first + 1])
-      return "node " + std::to_string(n) + " names children " + std::to_string(first) + " and " +
-             std::to_string(first + 1) + " (each node but the root must be one node's child, once, within the nodes)";
-    reached[first] = reached[first + 1] = true;
-    stack.push_back({static_cast<std::uint32_t>(first), depth + 1});
-    stack.push_back({static_cast<std::uint32_t>(first + 1), depth + 1});
-  }
-  return std::nullopt;
-}
 
 Bounds3 sphere_bounds(const Sphere& sphere) {
   const glm::vec3 reach(std::fabs(sphere.radius));
@@ -180,27 +96,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, Acceleration acceleration, Tria
 
 void SceneGeometry::build_bvhs(StageTree tree) {
   tree_choice_.used = tree;
-  // Wide: over the SAH tree where stage 05b is written, else over the median one. KdTree: a KD-tree
-  // per mesh, the median tree over the objects.
-  bool sah = tree == StageTree::Sah || tree == StageTree::Wide;
-  const auto build = [&](const std::vector<Bounds3>& boxes) {
-    if (sah && tree == StageTree::Wide) {
-      try {
-        return build_bvh_sah(boxes, kBvhLeafSize);
-      } catch (const NotImplemented& error) {
-        if (error.function() != "build_bvh_sah") throw;
-        sah = false;
-      }
-    }
-    return sah ? build_bvh_sah(boxes, kBvhLeafSize) : build_bvh(boxes, kBvhLeafSize);
-  };
-  // A broken tree named by the stage whose build made it (BrokenBvh names stage 05's).
-  const auto check = [&](const Bvh& bvh, const std::vector<Bounds3>& boxes, const std::optional<std::string>& name) {
-    if (!sah) return check_tree(bvh, boxes, name);
-    if (const std::optional<BvhViolation> broken = find_bvh_violation(bvh, boxes, kBvhLeafSize))
-      throw std::runtime_error("stage 05b_bvh_sah: build_bvh_sah over " + std::to_string(boxes.size()) + " boxes (" +
-                               name.value_or("the scene's objects") + ") returned a broken tree: " + describe(*broken));
-  };
+  BinaryTreeBuild binary(tree);  // (Wide: over the SAH tree where stage 05b is written, else the median one)
   try {
     for (MeshPart& mesh : meshes_) {
       if (mesh.triangle_count <= brute_force_limit_ || mesh.own_tree) continue;
@@ -211,30 +107,12 @@ void SceneGeometry::build_bvhs(StageTree tree) {
         boxes.push_back(triangle_bounds(first[i].p0, first[i].p1, first[i].p2));
       const bool one_mesh = first->mesh == first[mesh.triangle_count - 1].mesh;
       const std::string name = one_mesh ? scene_.meshes[first->mesh].name : "the scene's triangles";
-      if (tree == StageTree::KdTree) {  // (its leaves list the triangles in the scene's order)
-        mesh.kdtree = build_kdtree(boxes);
-        if (const std::optional<std::string> problem = kd_tree_problem(mesh.kdtree, mesh.triangle_count))
-          throw std::runtime_error("stage 05d_kdtree: build_kdtree over the triangles of " + name +
-                                   " returned a broken tree: " + *problem);
-        continue;
-      }
-      mesh.bvh = build(boxes);
-      check(mesh.bvh, boxes, name);
-      // Store the triangles in leaf order, so that a leaf's triangles are adjacent in memory;
-      // the BVH's primitive_order then becomes the identity.
-      std::vector<Triangle> reordered;
-      reordered.reserve(mesh.triangle_count);
-      for (std::uint32_t i = 0; i < mesh.triangle_count; ++i) {
-        reordered.push_back(first[mesh.bvh.primitive_order[i]]);
-        mesh.bvh.primitive_order[i] = i;
-      }
-      std::copy(reordered.begin(), reordered.end(), first);
-      if (tree == StageTree::Wide) {
-        mesh.wide = collapse_bvh4(mesh.bvh);
-        if (const std::optional<std::string> problem = wide_tree_problem(mesh.wide, mesh.triangle_count))
-          throw std::runtime_error("stage 05c_wide_bvh: collapse_bvh4 over the tree of " + name +
-                                   " returned a broken tree: " + *problem);
-      }
+      mesh.tree = build_mesh_tree(binary, boxes, name, [&](const std::vector<std::uint32_t>& leaf_order) {
+        std::vector<Triangle> reordered;
+        reordered.reserve(mesh.triangle_count);
+        for (const std::uint32_t i : leaf_order) reordered.push_back(first[i]);
+        std::copy(reordered.begin(), reordered.end(), first);
+      });
     }
     const std::size_t object_count = spheres_.size() + meshes_.size();
     if (object_count > brute_force_limit_) {
@@ -242,58 +120,30 @@ void SceneGeometry::build_bvhs(StageTree tree) {
       boxes.reserve(object_count);
       for (const Sphere& sphere : spheres_) boxes.push_back(sphere_bounds(sphere));
       for (const MeshPart& mesh : meshes_) boxes.push_back(mesh.bounds);
-      objects_bvh_ = build(boxes);
-      check(objects_bvh_, boxes, std::nullopt);
+      objects_bvh_ = binary.build(boxes, std::nullopt);
     }
-    // A traversal needs the box test (stage 04_box) and intersect_bvh (and for the 4-wide trees
-    // intersect_bvh4 and intersect_ray_box4): find out now, with one query, whether they are
-    // still stubs, rather than in the middle of the render. The probe's intersector hits
-    // nothing, so that only stages 04 and 05 (or 05c) run here.
-    const Bvh* probe_bvh = !objects_bvh_.nodes.empty() ? &objects_bvh_ : nullptr;
-    const Bvh4* probe_wide = nullptr;
-    const KdTree* probe_kdtree = nullptr;
-    for (const MeshPart& mesh : meshes_) {
-      if (!probe_bvh && !mesh.bvh.nodes.empty()) probe_bvh = &mesh.bvh;
-      if (!probe_wide && !mesh.wide.nodes.empty()) probe_wide = &mesh.wide;
-      if (!probe_kdtree && !mesh.kdtree.nodes.empty()) probe_kdtree = &mesh.kdtree;
-    }
-    const PrimitiveIntersector hits_nothing{
-        [](void*, const Ray&, std::uint32_t) -> std::optional<float> { return std::nullopt; }, nullptr};
-    if (probe_bvh) {
-      Ray probe;
-      probe.origin = probe_bvh->nodes[0].bounds.centroid();  // inside the root's box
-      probe.direction = glm::vec3(0.0f, 0.0f, 1.0f);
-      (void)intersect_ray_box(probe, ray_direction_inverse_of(probe), probe_bvh->nodes[0].bounds);
-      BvhTraversalStats stats;
-      (void)intersect_bvh(*probe_bvh, probe, hits_nothing, /*any_hit=*/false, stats);
-    }
-    if (probe_wide) {
-      Ray probe;
-      probe.origin = probe_wide->nodes[0].child_bounds(0).centroid();  // inside a child's box
-      probe.direction = glm::vec3(0.0f, 0.0f, 1.0f);
-      BvhTraversalStats stats;
-      (void)intersect_bvh4(*probe_wide, probe, hits_nothing, /*any_hit=*/false, stats);
-    }
-    if (probe_kdtree) {
-      Ray probe;
-      probe.origin = probe_kdtree->bounds.centroid();  // inside the root's cell
-      probe.direction = glm::vec3(0.0f, 0.0f, 1.0f);
-      BvhTraversalStats stats;
-      (void)intersect_kdtree(*probe_kdtree, probe, hits_nothing, /*any_hit=*/false, stats);
-    }
-    if (!probe_bvh && !meshes_.empty() && meshes_.front().own_tree) {  // only the own tree: no stage tree needed
+    // A traversal needs the box tests and its stage's traversal: find out now, with one query
+    // per tree (every mesh's is of one kind), whether they are still stubs, rather than in the
+    // middle of the render.
+    const MeshTree* mesh_tree = nullptr;
+    for (const MeshPart& mesh : meshes_)
+      if (!mesh_tree && mesh.tree) mesh_tree = mesh.tree.get();
+    if (!objects_bvh_.nodes.empty()) probe_binary_tree(objects_bvh_);
+    if (mesh_tree) mesh_tree->probe();
+    const bool binary_tree = !objects_bvh_.nodes.empty() || (mesh_tree && mesh_tree->binary_tree());
+    if (!binary_tree && !meshes_.empty() && meshes_.front().own_tree) {  // only the own tree: no stage tree needed
       tree_choice_.used = StageTree::None;
-    } else if (tree == StageTree::KdTree && !probe_kdtree) {
-      tree_choice_.used = probe_bvh ? StageTree::Median : StageTree::None;
-      tree_choice_.small_sets_only = !probe_bvh;
-      if (probe_bvh)
+    } else if (tree == StageTree::KdTree && !mesh_tree) {
+      tree_choice_.used = binary_tree ? StageTree::Median : StageTree::None;
+      tree_choice_.small_sets_only = !binary_tree;
+      if (binary_tree)
         tree_choice_.passed_over.push_back("kdtree: no mesh has more than " + std::to_string(brute_force_limit_) +
                                            " triangles, so none has a KD-tree");
-    } else if (!probe_bvh && !probe_kdtree) {  // no set of primitives large enough for a tree
+    } else if (!binary_tree && !mesh_tree) {  // no set of primitives large enough for a tree
       tree_choice_.used = StageTree::None;
       tree_choice_.small_sets_only = true;
-    } else if (tree == StageTree::Wide && !probe_wide) {
-      tree_choice_.used = sah ? StageTree::Sah : StageTree::Median;
+    } else if (tree == StageTree::Wide && !mesh_tree) {
+      tree_choice_.used = binary.sah ? StageTree::Sah : StageTree::Median;
       tree_choice_.passed_over.push_back("wide: no mesh has more than " + std::to_string(brute_force_limit_) +
                                          " triangles, so none has a 4-wide tree");
     }
@@ -305,11 +155,7 @@ void SceneGeometry::build_bvhs(StageTree tree) {
 }
 
 void SceneGeometry::drop_trees() {
-  for (MeshPart& mesh : meshes_) {
-    mesh.bvh = Bvh();
-    mesh.wide = Bvh4();
-    mesh.kdtree = KdTree();
-  }
+  for (MeshPart& mesh : meshes_) mesh.tree.reset();
   objects_bvh_ = Bvh();
   tree_choice_.used = StageTree::None;
 }
@@ -406,10 +252,7 @@ std::size_t SceneGeometry::bvh_count() const {
 
 std::size_t SceneGeometry::tree_bytes() const {
   std::size_t bytes = objects_bvh_.nodes.size() * sizeof(BvhNode) + objects_bvh_.primitive_order.size() * 4;
-  for (const MeshPart& mesh : meshes_)
-    bytes += mesh.bvh.nodes.size() * sizeof(BvhNode) + mesh.bvh.primitive_order.size() * 4 +
-             mesh.wide.nodes.size() * sizeof(Bvh4Node) + mesh.wide.primitive_order.size() * 4 +
-             mesh.kdtree.nodes.size() * sizeof(KdNode) + mesh.kdtree.primitive_indices.size() * 4;
+  for (const MeshPart& mesh : meshes_) bytes += mesh.tree ? mesh.tree->bytes() : 0;
   return bytes;
 }
 
@@ -434,7 +277,8 @@ std::vector<std::vector<Bounds3>> SceneGeometry::tree_boxes_by_level() const {
     }
   };
   const auto mesh_tree_at = [&](std::size_t mesh, int depth) {
-    add_tree(meshes_[mesh].bvh, depth, [](const BvhNode&, int) {});
+    if (const Bvh* bvh = meshes_[mesh].tree ? meshes_[mesh].tree->binary_tree() : nullptr)
+      add_tree(*bvh, depth, [](const BvhNode&, int) {});
   };
   if (objects_bvh_.nodes.empty()) {
     for (std::size_t m = 0; m < meshes_.size(); ++m) mesh_tree_at(m, 0);
@@ -477,6 +321,27 @@ std::string stage_tree_words() {
   std::string words;
   for (const StageTree tree : kEveryStageTree) words += (words.empty() ? "" : ", ") + std::string(stage_tree_name(tree));
   return words;
+}
+
+std::vector<std::string> stage_tree_word_list() {
+  std::vector<std::string> words;
+  for (const StageTree tree : kEveryStageTree) words.emplace_back(stage_tree_name(tree));
+  return words;
+}
+
+const StageTreeFacts& stage_tree_facts(StageTree tree) {
+  static const StageTreeFacts median{"median BVH", "05_bvh", "build_bvh", "intersect_bvh"};
+  static const StageTreeFacts sah{"SAH BVH", "05b_bvh_sah", "build_bvh_sah", "intersect_bvh"};
+  static const StageTreeFacts wide{"4-wide BVH", "05c_wide_bvh", "collapse_bvh4", "intersect_bvh4"};
+  static const StageTreeFacts kdtree{"KD-tree", "05d_kdtree", "build_kdtree", "intersect_kdtree"};
+  switch (tree) {
+    case StageTree::Median: return median;
+    case StageTree::Sah: return sah;
+    case StageTree::Wide: return wide;
+    case StageTree::KdTree: return kdtree;
+    default: break;
+  }
+  throw std::invalid_argument(std::string("stage_tree_facts: no stage builds the tree '") + stage_tree_name(tree) + "'");
 }
 
 }  // namespace raylab

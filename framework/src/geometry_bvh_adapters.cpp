@@ -3,10 +3,9 @@
 // over the scene's objects), and the check of what a traversal returned against what the
 // tests recorded, so that the framework shades the primitive the traversal returned.
 #include "geometry_query.h"
+#include "mesh_trees.h"
 
 #include "raylab/stages/05_bvh.h"
-#include "raylab/stages/05c_wide_bvh.h"
-#include "raylab/stages/05d_kdtree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,15 +65,11 @@ std::optional<float> SceneGeometry::intersect_mesh(const MeshPart& mesh, const R
     if (details.t_hit < query.record->t_hit) query.record->set_triangle(mesh.first_triangle + triangle, details);
     return details.t_hit;
   }
-  if (!mesh.bvh.nodes.empty() || !mesh.kdtree.nodes.empty()) {
+  if (mesh.tree) {
     BvhTraversalStats stats;
     PrimitiveIntersector intersector{query.watch ? &SceneGeometry::test_triangle_watched : &SceneGeometry::test_triangle,
                                      &query};
-    const auto traverse = [&](bool any_hit) {
-      if (!mesh.kdtree.nodes.empty()) return intersect_kdtree(mesh.kdtree, ray, intersector, any_hit, stats);
-      return mesh.wide.nodes.empty() ? intersect_bvh(mesh.bvh, ray, intersector, any_hit, stats)
-                                     : intersect_bvh4(mesh.wide, ray, intersector, any_hit, stats);
-    };
+    const auto traverse = [&](bool any_hit) { return mesh.tree->traverse(ray, intersector, any_hit, stats); };
     if (query.any_hit) {
       const std::optional<BvhHit> hit = traverse(true);
       thread_tree_work.nodes += stats.nodes_visited;
@@ -212,7 +207,8 @@ SceneGeometry::TreeWalk SceneGeometry::walk_to(const Ray& ray, std::optional<std
     if (!objects_bvh_.nodes.empty() && path_in(objects_bvh_, *object, -1, 0)) depth = walk.path.back().depth + 1;
     if (in_part) {
       const MeshPart& part = meshes_[*object - spheres_.size()];
-      path_in(part.bvh, *in_part, static_cast<int>(mesh), depth);
+      if (const Bvh* bvh = part.tree ? part.tree->binary_tree() : nullptr)
+        path_in(*bvh, *in_part, static_cast<int>(mesh), depth);
     }
   }
   // The query itself, its tests watched.
@@ -254,12 +250,11 @@ SceneGeometry::TreeWalk SceneGeometry::walk_to(const Ray& ray, std::optional<std
       if (p == meshes_.size()) continue;
       tested_object = static_cast<std::uint32_t>(spheres_.size()) + p;
       if (object_tree && tested_object < object_leaf.size()) open(-1, object_leaf[tested_object], -1, objects_bvh_);
-      const Bvh& bvh = meshes_[p].bvh;
-      if (!bvh.nodes.empty()) {
-        if (part_leaf[p].empty()) part_leaf[p] = leaf_of(bvh);
+      if (const Bvh* bvh = meshes_[p].tree ? meshes_[p].tree->binary_tree() : nullptr) {
+        if (part_leaf[p].empty()) part_leaf[p] = leaf_of(*bvh);
         const std::uint32_t local = test.index - meshes_[p].first_triangle;
         if (local < part_leaf[p].size())
-          open(static_cast<int>(p), part_leaf[p][local], static_cast<int>(triangles_[test.index].mesh), bvh);
+          open(static_cast<int>(p), part_leaf[p][local], static_cast<int>(triangles_[test.index].mesh), *bvh);
       }
     } else if (object_tree && tested_object < object_leaf.size()) {
       open(-1, object_leaf[tested_object], -1, objects_bvh_);

@@ -339,13 +339,9 @@ PixelTrace trace_pixel(const Scene& scene, int x, int y, const TraceSettings& se
       // The tree the renderer traces (TracingFunctions::tree; raylab trace --accel): its build,
       // its traversal, and where to look when it loses the hit.
       const StageTree tree = geometry.tree_choice().used;
-      const std::string build = tree == StageTree::Sah      ? "build_bvh_sah"
-                                : tree == StageTree::Wide   ? "collapse_bvh4"
-                                : tree == StageTree::KdTree ? "build_kdtree"
-                                                            : "build_bvh";
-      const std::string traversal = tree == StageTree::Wide     ? "intersect_bvh4"
-                                    : tree == StageTree::KdTree ? "intersect_kdtree"
-                                                                : "intersect_bvh";
+      // (No stage tree but a program's own over the triangles: in the median tree's words.)
+      const StageTreeFacts& facts = stage_tree_facts(tree == StageTree::None ? StageTree::Median : tree);
+      const std::string build = facts.build, traversal = facts.traversal;
       const std::string look_at =
           tree == StageTree::Wide     ? "05c_wide_bvh (collapse_bvh4, intersect_bvh4, intersect_ray_box4)"
           : tree == StageTree::KdTree ? "05d_kdtree (build_kdtree, intersect_kdtree)"

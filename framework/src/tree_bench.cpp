@@ -173,13 +173,15 @@ std::vector<TreeBenchRow> bench_trees(const Scene& scene, const TreeBenchOptions
     }
     rows.push_back(row);
   };
-  for (const StageTree tree : {StageTree::Median, StageTree::Sah, StageTree::Wide, StageTree::KdTree, StageTree::None}) {
+  const auto measure_tree = [&](StageTree tree) {
     TracingFunctions tracing;
     tracing.tree = tree;
     TreeBenchRow row;
     row.tree = stage_tree_name(tree);
     measure(row, tracing, tree);
-  }
+  };
+  for (const StageTree tree : kStageBuiltTrees) measure_tree(tree);
+  measure_tree(StageTree::None);
   if (options.own_tree) {
     TracingFunctions tracing;
     tracing.own_tree = options.own_tree;

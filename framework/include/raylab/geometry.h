@@ -28,8 +28,6 @@
 #include "raylab/stages/03_triangle.h"
 #include "raylab/stages/03b_watertight.h"
 #include "raylab/stages/05_bvh.h"
-#include "raylab/stages/05c_wide_bvh.h"
-#include "raylab/stages/05d_kdtree.h"
 
 #include <cstdint>
 #include <memory>
@@ -39,6 +37,8 @@
 #include <vector>
 
 namespace raylab {
+
+class MeshTree;  // one mesh's stage tree (framework/src/mesh_trees.h)
 
 // Everything shading needs about the closest hit, filled in after t_hit is known.
 struct SurfaceHit {
@@ -76,6 +76,18 @@ enum class StageTree {
 const char* stage_tree_name(StageTree tree);
 std::optional<StageTree> stage_tree_named(const std::string& name);
 std::string stage_tree_words();
+std::vector<std::string> stage_tree_word_list();
+// What the render's first line, raylab trace and raylab bench say of a tree that a stage builds.
+struct StageTreeFacts {
+  const char* what;       // "median BVH"
+  const char* stage;      // the stage it is written in: "05_bvh"
+  const char* build;      // the function that makes it: "build_bvh" ("collapse_bvh4" for the 4-wide tree)
+  const char* traversal;  // the function that walks it: "intersect_bvh"
+};
+// Of Median, Sah, Wide and KdTree (std::invalid_argument for None and Best).
+const StageTreeFacts& stage_tree_facts(StageTree tree);
+// The trees the stages build, in teaching order (raylab bench's rows).
+constexpr StageTree kStageBuiltTrees[] = {StageTree::Median, StageTree::Sah, StageTree::Wide, StageTree::KdTree};
 
 // Which ray-triangle test every triangle query uses.
 enum class TriangleTest {
@@ -219,14 +231,14 @@ class SceneGeometry {
     std::uint32_t first_triangle = 0;
     std::uint32_t triangle_count = 0;
     Bounds3 bounds;
-    Bvh bvh;  // empty: test every triangle
-    Bvh4 wide;  // StageTree::Wide: bvh collapsed to 4 wide (stage 05c), traversed instead
-    KdTree kdtree;  // StageTree::KdTree: the mesh's KD-tree (stage 05d), traversed instead of bvh (left empty)
+    // The stage tree over these triangles (framework/src/mesh_trees.h: median, SAH, 4-wide or
+    // KD-tree, by TracingFunctions::tree), or nullptr: test every triangle.
+    std::shared_ptr<const MeshTree> tree;
     // The program's own tree over these triangles (TracingFunctions::own_tree), traced instead of
-    // bvh (which it leaves empty); its triangle indices count from first_triangle.
+    // a stage tree (then nullptr); its triangle indices count from first_triangle.
     std::shared_ptr<const TriangleTree> own_tree;
     // Whether a tree finds its hits (intersect_mesh), rather than a test of each triangle.
-    bool has_tree() const { return !bvh.nodes.empty() || !kdtree.nodes.empty() || own_tree; }
+    bool has_tree() const { return tree || own_tree; }
   };
   // The closest hit a query's primitive tests have reported so far (by the framework's own
   // comparison of t, whatever order a traversal calls the tests in), and its details.
@@ -250,8 +262,9 @@ class SceneGeometry {
   };
   struct Query;
 
+  // The trees of kind `tree` (not Best): every large mesh's (MeshPart::tree) and the one over the objects.
   void build_bvhs(StageTree tree);
-  // StageTree::Best: tries Wide, Sah and Median in turn (tree_choice_ says why not the others).
+  // StageTree::Best: tries Wide, Sah, KdTree and Median in turn (tree_choice_ says why not the others).
   void build_best_trees(TriangleTest triangle_test, const TracingFunctions& tracing);
   // Whether the trees give the answers of testing every primitive (`every_primitive`, a geometry
   // without trees) on a sample of rays through the scene's bounds; else the first that differs, in
