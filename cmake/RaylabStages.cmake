@@ -287,7 +287,10 @@ set(raylab_stage_messages "")
 set_property(DIRECTORY ${CMAKE_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/autograder/suites)
 foreach(id IN LISTS RAYLAB_STAGE_IDS)
   if(EXISTS ${CMAKE_SOURCE_DIR}/autograder/suites/${id}_messages.def)
-    string(APPEND raylab_stage_messages "#include \"${CMAKE_SOURCE_DIR}/autograder/suites/${id}_messages.def\"\n")
+    # (A path relative to this file: the same text in every copy of the kit, which ccache then
+    # finds without preprocessing each file that includes it.)
+    file(RELATIVE_PATH raylab_messages_path ${RAYLAB_GENERATED_INCLUDE} ${CMAKE_SOURCE_DIR}/autograder/suites/${id}_messages.def)
+    string(APPEND raylab_stage_messages "#include \"${raylab_messages_path}\"\n")
   endif()
 endforeach()
 file(CONFIGURE OUTPUT ${RAYLAB_GENERATED_INCLUDE}/stage_messages.def @ONLY CONTENT

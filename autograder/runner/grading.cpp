@@ -1,4 +1,5 @@
 #include "grading.h"
+#include "kit_folders.h"
 #include "protocol.h"
 
 #include "raylab/stage_table.h"
@@ -76,7 +77,7 @@ std::string& output_directory_storage() {
   return directory;
 }
 std::string& reference_directory_storage() {
-  static std::string directory = RAYLAB_REFERENCE_DIR;
+  static std::string directory = kit_reference_folder();
   return directory;
 }
 

@@ -31,6 +31,7 @@
 //     RLIMIT_NOFILE (kMaxOpenFiles), no core dumps, parent-death signal, only
 //     descriptors 0-4 open.
 #include "stage_process.h"
+#include "kit_folders.h"
 
 #include "landlock.h"
 
@@ -291,9 +292,7 @@ int stage_ruleset(int abi, const std::string& program) {
   if (ruleset < 0) throw std::runtime_error(std::string("landlock_create_ruleset failed: ") + std::strerror(errno));
   std::vector<std::string> readable = {"/usr", "/lib", "/lib32", "/lib64", "/libx32", "/bin", "/sbin",
                                        "/etc", "/dev", "/proc", "/sys", program};
-#ifdef RAYLAB_SOURCE_DIR
-  readable.push_back(RAYLAB_SOURCE_DIR "/scenes");
-#endif
+  readable.push_back(std::string(kit_source_folder()) + "/scenes");
   for (const std::string& path : readable) {
     const int fd = ::open(path.c_str(), O_PATH | O_CLOEXEC);
     if (fd < 0) continue;  // (a folder this system does not have)
@@ -505,9 +504,7 @@ static bool sandbox_uid_can_reach(uid_t uid) {
     const std::string path(self, static_cast<std::size_t>(length));
     folders.push_back(path.substr(0, path.find_last_of('/') + 1));
   }
-#ifdef RAYLAB_SOURCE_DIR
-  folders.push_back(RAYLAB_SOURCE_DIR "/scenes");
-#endif
+  folders.push_back(std::string(kit_source_folder()) + "/scenes");
   const pid_t probe = ::fork();
   if (probe < 0) return false;
   if (probe == 0) {

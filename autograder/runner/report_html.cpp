@@ -1,4 +1,5 @@
 #include "report_html.h"
+#include "kit_folders.h"
 
 #include <cctype>
 #include <filesystem>
@@ -182,7 +183,7 @@ std::string with_handout_links(const std::string& text, const std::string& kit_h
   for (std::sregex_iterator it(escaped.begin(), escaped.end(), handout), end; it != end; ++it) {
     const std::string path = it->str();
     out += escaped.substr(done, static_cast<std::size_t>(it->position()) - done);
-    if (std::filesystem::exists(std::filesystem::path(RAYLAB_SOURCE_DIR) / path))
+    if (std::filesystem::exists(std::filesystem::path(kit_source_folder()) / path))
       out += "<a href=\"" + escape_html(kit_href + "/" + path) + "\">" + path + "</a>";
     else
       out += path;
@@ -318,7 +319,7 @@ std::string stage_html(const StageResult& stage, Language language, const std::s
   std::string handout = escape_html(text_of(info.handout_text, language));
   const std::string shown = escape_html(handout_file);
   const std::size_t at = handout.find(shown);
-  if (at != std::string::npos && std::filesystem::exists(std::filesystem::path(RAYLAB_SOURCE_DIR) / handout_file))
+  if (at != std::string::npos && std::filesystem::exists(std::filesystem::path(kit_source_folder()) / handout_file))
     handout.replace(at, shown.size(), "<a href=\"" + escape_html(kit_href + "/" + handout_file) + "\">" + shown + "</a>");
   const std::string marker = "@HANDOUT@";
   std::string line = escape_html(text_of({MessageId::report_handout, {{"handout", marker}}}, language));
@@ -449,7 +450,7 @@ std::string write_report_html(const std::vector<StageResult>& results, const Mes
   // the student release), unless the page is on another drive than the kit (Windows).
   std::error_code error;
   const std::filesystem::path page_folder = std::filesystem::weakly_canonical(std::filesystem::absolute(directory), error);
-  const std::filesystem::path kit = std::filesystem::weakly_canonical(std::filesystem::path(RAYLAB_SOURCE_DIR), error);
+  const std::filesystem::path kit = std::filesystem::weakly_canonical(std::filesystem::path(kit_source_folder()), error);
   const std::string relative = kit.lexically_relative(page_folder).generic_string();
   const std::string absolute = kit.generic_string();
   const std::string kit_href = !relative.empty() ? url_of(relative)

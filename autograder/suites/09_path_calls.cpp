@@ -2,6 +2,7 @@
 // whole pictures rendered with path_radiance (path_render), each pixel's mean and its variance;
 // the bonus stage 09b renders with path_radiance_mis through the same call (request.mis).
 #include "09_path_calls.h"
+#include "kit_folders.h"
 #include "grader_geometry.h"
 #include "stage_call.h"
 #include "stage_image.h"
@@ -106,7 +107,7 @@ namespace grading {
 
 // The scene of a request: its size, and the test's changes (a grey albedo, a background).
 Scene request_scene(const std::string& scene_path, const PathRenderRequest& request) {
-  Scene scene = load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + scene_path);
+  Scene scene = load_scene(std::string(kit_source_folder()) + "/" + scene_path);
   scene.camera.width = request.width;
   scene.camera.height = request.height;
   if (request.albedo >= 0.0f)

@@ -1,4 +1,5 @@
 #include "bvh_support.h"
+#include "kit_folders.h"
 
 #include "04_box_calls.h"
 #include "05_bvh_calls.h"
@@ -29,7 +30,7 @@ std::optional<float> test_triangle(const TestMesh& mesh, const Ray& ray, std::ui
 
 std::vector<TestMesh> make_meshes() {
   std::vector<TestMesh> meshes;
-  const TriangleMesh bunny = load_obj_mesh(std::string(RAYLAB_SOURCE_DIR) + "/scenes/bunny.obj");
+  const TriangleMesh bunny = load_obj_mesh(std::string(kit_source_folder()) + "/scenes/bunny.obj");
   std::vector<std::array<glm::vec3, 3>> triangles;
   for (std::size_t i = 0; i + 2 < bunny.indices.size(); i += 3)
     triangles.push_back({bunny.positions[bunny.indices[i]], bunny.positions[bunny.indices[i + 1]],

@@ -2,6 +2,7 @@
 // for every stage with an image in stages.json: the stage's picture (stage_image.h), rendered by
 // the stage code in the server, its pixels sent back whole.
 #include "grader_geometry.h"
+#include "kit_folders.h"
 #include "stage_call.h"
 #include "stage_image.h"
 
@@ -111,7 +112,7 @@ StageImageSetup stage_image_setup(const std::string& stage_id) {
   const StageDescription* stage = find_stage_description(stage_id);
   if (!stage || stage->image_scene.empty())
     throw std::logic_error("stages.json gives the stage " + stage_id + " no image test");
-  StageImageSetup setup{load_scene(std::string(RAYLAB_SOURCE_DIR) + "/" + std::string(stage->image_scene)), {}};
+  StageImageSetup setup{load_scene(std::string(kit_source_folder()) + "/" + std::string(stage->image_scene)), {}};
   Scene& scene = setup.scene;
   scene.camera.width = kImageWidth;
   scene.camera.height = kImageHeight;

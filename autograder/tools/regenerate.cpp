@@ -16,6 +16,7 @@
 // JSON numbers are compared to kNumberUlps float ulps (of the number, or of 1 if smaller) and images pixel by pixel with a small
 // tolerance; everything else (the set of files, keys, strings, array lengths) exactly.
 #include "grading.h"
+#include "kit_folders.h"
 #include "support.h"
 
 #include "raylab/image.h"
@@ -160,7 +161,7 @@ void write_reference_data(const std::string& output, std::uint32_t seed) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Regenerate the autograder's reference data from solutions/"};
-  std::string output = RAYLAB_REFERENCE_DIR;
+  std::string output = kit_reference_folder();
   std::uint32_t seed = kReleasedSeed;
   app.add_option("--output", output, "Folder to write into")->capture_default_str();
   app.add_option("--seed", seed, "Seed of the random cases (a course may grade with its own)")->capture_default_str();
