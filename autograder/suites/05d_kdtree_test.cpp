@@ -608,9 +608,18 @@ void hint_walk_mistakes(const std::optional<WalkMistakes>& mistakes, MessageId o
   if (!named) add_hint(otherwise);
 }
 
+// How the answers of the first mesh that differs differ: a hit at the wrong distance, or a hit
+// missed or invented (the walk's mistakes, for the fitted model), or the right distance with a
+// primitive that is not hit there (the index returned).
+struct Differences {
+  bool wrong_hit = false;
+  bool wrong_primitive = false;
+};
+
 // Your answers on the grader's trees against brute force (up to 3 differences shown); the rays of
 // the first mesh that differs are the evidence for the fitted model.
-void compare_with_brute_force(bool any_hit, bool axis_aligned, const Message& what, std::vector<Evidence>& evidence) {
+Differences compare_with_brute_force(bool any_hit, bool axis_aligned, const Message& what, std::vector<Evidence>& evidence) {
+  Differences found;
   std::uint32_t seed = any_hit ? 1700 : axis_aligned ? 1800 : 1600;
   for (const TestMesh* mesh : kd_meshes()) {
     Evidence e{grader_kdtree(mesh->bounds), mesh, rays_at(*mesh, 300, seed++, axis_aligned), {}, {}};
@@ -618,9 +627,12 @@ void compare_with_brute_force(bool any_hit, bool axis_aligned, const Message& wh
     int differences = 0;
     for (std::size_t r = 0; r < e.rays.size(); ++r) {
       const std::optional<BvhHit> expected = brute_force_closest(*mesh, e.rays[r]);
-      const bool right = (any_hit ? e.answers[r].has_value() == expected.has_value() : same_answer(e.answers[r], expected)) &&
-                         names_a_real_hit(*mesh, e.rays[r], e.answers[r], any_hit);
-      if (right || ++differences > 3) continue;
+      const bool right_hit =
+          any_hit ? e.answers[r].has_value() == expected.has_value() : same_answer(e.answers[r], expected);
+      const bool real_hit = names_a_real_hit(*mesh, e.rays[r], e.answers[r], any_hit);
+      if (!right_hit) found.wrong_hit = true;
+      else if (!real_hit) found.wrong_primitive = true;
+      if ((right_hit && real_hit) || ++differences > 3) continue;
       auto hit_of = [](const std::optional<BvhHit>& hit) {
         if (!hit) return Message(MessageId::value_no_hit);
         return Message(MessageId::value_t_primitive, {{"t", std::to_string(hit->t_hit)}, {"primitive", std::to_string(hit->primitive)}});
@@ -631,20 +643,23 @@ void compare_with_brute_force(bool any_hit, bool axis_aligned, const Message& wh
     }
     if (differences == 0) continue;
     evidence.push_back(std::move(e));
-    return;
+    return found;
   }
+  return found;
 }
 
 GRADED_TEST(kStage, Stage05dKdTree, ClosestHitsMatchBruteForce, 5) {
   std::vector<Evidence> evidence;
-  compare_with_brute_force(false, false, MessageId::bvh_what_closest_hit, evidence);
-  compare_with_brute_force(false, true, MessageId::bvh_what_closest_hit_axis_aligned, evidence);
-  if (!evidence.empty()) hint_walk_mistakes(fitted_mistakes(evidence, false), MessageId::kd_not_closest);
+  const Differences any_ray = compare_with_brute_force(false, false, MessageId::bvh_what_closest_hit, evidence);
+  const Differences aligned = compare_with_brute_force(false, true, MessageId::bvh_what_closest_hit_axis_aligned, evidence);
+  if (any_ray.wrong_primitive || aligned.wrong_primitive) add_hint(MessageId::kd_wrong_primitive);
+  if (any_ray.wrong_hit || aligned.wrong_hit) hint_walk_mistakes(fitted_mistakes(evidence, false), MessageId::kd_not_closest);
 }
 
 GRADED_TEST(kStage, Stage05dKdTree, AnyHitAgreesWithBruteForce, 2) {
   std::vector<Evidence> evidence;
-  compare_with_brute_force(true, false, MessageId::bvh_what_any_hit, evidence);
+  if (compare_with_brute_force(true, false, MessageId::bvh_what_any_hit, evidence).wrong_primitive)
+    add_hint(MessageId::kd_wrong_primitive);
   // And it returns at once: after the first hit the intersector reports, no more tests (20 rays on
   // the grader's tree: each test is a call into the judge).
   const TestMesh& mesh = work_test_mesh();

@@ -31,6 +31,7 @@ struct KdTreeVariant {
   bool any_hit_goes_on = false;   // any_hit: searches on for the closest hit
   bool nodes_not_counted = false;  // stats.nodes_visited never incremented
   bool primitives_not_counted = false;  // stats.primitives_tested never incremented
+  bool position_not_index = false;  // a hit names the position i in primitive_indices, not primitive_indices[i]
   // Correct variants.
   bool binned = false;            // planes at 32 evenly spaced bins per axis rather than at the boxes' faces
 };
@@ -209,9 +210,10 @@ std::optional<BvhHit> intersect_kdtree(const KdTree& tree, const Ray& ray, const
     for (std::uint32_t i = leaf.first_index; i < leaf.first_index + leaf.primitive_count; ++i) {
       if (!v.primitives_not_counted) ++stats.primitives_tested;
       if (const std::optional<float> t = intersector.test(intersector.context, search, tree.primitive_indices[i])) {
-        if (any_hit && !v.any_hit_goes_on) return BvhHit{*t, tree.primitive_indices[i]};
+        const std::uint32_t named = v.position_not_index ? i : tree.primitive_indices[i];
+        if (any_hit && !v.any_hit_goes_on) return BvhHit{*t, named};
         search.t_max = *t;
-        closest = BvhHit{*t, tree.primitive_indices[i]};
+        closest = BvhHit{*t, named};
       }
     }
     if (closest && !v.never_stops &&
