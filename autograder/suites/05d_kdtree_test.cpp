@@ -659,7 +659,7 @@ GRADED_TEST(kStage, Stage05dKdTree, ClosestHitsMatchBruteForce, 5) {
 GRADED_TEST(kStage, Stage05dKdTree, AnyHitAgreesWithBruteForce, 2) {
   std::vector<Evidence> evidence;
   if (compare_with_brute_force(true, false, MessageId::bvh_what_any_hit, evidence).wrong_primitive)
-    add_hint(MessageId::kd_wrong_primitive);
+    add_hint(MessageId::kd_wrong_primitive_any_hit);
   // And it returns at once: after the first hit the intersector reports, no more tests (20 rays on
   // the grader's tree: each test is a call into the judge).
   const TestMesh& mesh = work_test_mesh();

@@ -123,8 +123,8 @@ void SceneGeometry::build_bvhs(StageTree tree) {
       objects_bvh_ = binary.build(boxes, std::nullopt);
     }
     // A traversal needs the box tests and its stage's traversal: find out now, with one query
-    // per tree (every mesh's is of one kind), whether they are still stubs, rather than in the
-    // middle of the render.
+    // on the tree over the objects and one on a mesh's tree (every mesh's is of one kind), whether
+    // they are still stubs, rather than in the middle of the render.
     const MeshTree* mesh_tree = nullptr;
     for (const MeshPart& mesh : meshes_)
       if (!mesh_tree && mesh.tree) mesh_tree = mesh.tree.get();
@@ -168,9 +168,13 @@ void SceneGeometry::build_best_trees(TriangleTest triangle_test, const TracingFu
   // leaf order), so that the one chosen is the tree --accel would build.
   const std::vector<Triangle> scene_order = triangles_;
   // A stub of another stage (02, 03) is no reason to pass a tree over: the render needs it anyway.
+  // The stages of the trees: the box test and quickselect, which the binary trees need, and each
+  // tree's own.
   const auto tree_stage = [](const std::string& stage) {
-    return stage == "04_box" || stage == "04b_quickselect" || stage == "05_bvh" || stage == "05b_bvh_sah" ||
-           stage == "05c_wide_bvh" || stage == "05d_kdtree";
+    if (stage == "04_box" || stage == "04b_quickselect") return true;
+    for (const StageTree tree : kStageBuiltTrees)
+      if (stage == stage_tree_facts(tree).stage) return true;
+    return false;
   };
   for (const StageTree candidate : {StageTree::Wide, StageTree::Sah, StageTree::KdTree, StageTree::Median}) {
     const std::string name = stage_tree_name(candidate);

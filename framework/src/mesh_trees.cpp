@@ -132,7 +132,6 @@ class WideMeshTree final : public MeshTree {
     return intersect_bvh4(wide_, ray, tests, any_hit, stats);
   }
   void probe() const override {
-    probe_binary_tree(binary_);
     BvhTraversalStats stats;
     (void)intersect_bvh4(wide_, probe_ray(wide_.nodes[0].child_bounds(0).centroid()), kHitsNothing, false, stats);
   }
@@ -172,15 +171,17 @@ BinaryTreeBuild::BinaryTreeBuild(StageTree tree_) : tree(tree_), sah(tree_ == St
 
 Bvh BinaryTreeBuild::build(const std::vector<Bounds3>& boxes, const std::optional<std::string>& name) {
   Bvh bvh;
+  bool built = false;
   if (sah && tree == StageTree::Wide) {
     try {
       bvh = build_bvh_sah(boxes, SceneGeometry::kBvhLeafSize);
+      built = true;
     } catch (const NotImplemented& error) {
       if (error.function() != "build_bvh_sah") throw;
       sah = false;
     }
   }
-  if (bvh.nodes.empty()) bvh = sah ? build_bvh_sah(boxes, SceneGeometry::kBvhLeafSize) : build_bvh(boxes, SceneGeometry::kBvhLeafSize);
+  if (!built) bvh = sah ? build_bvh_sah(boxes, SceneGeometry::kBvhLeafSize) : build_bvh(boxes, SceneGeometry::kBvhLeafSize);
   // A broken tree named by the stage whose build made it (BrokenBvh names stage 05's).
   if (const std::optional<BvhViolation> broken = find_bvh_violation(bvh, boxes, SceneGeometry::kBvhLeafSize)) {
     if (!sah) throw BrokenBvh(*broken, boxes.size(), name);

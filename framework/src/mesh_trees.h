@@ -28,8 +28,9 @@ class MeshTree {
   // `tests` of the mesh's triangles, numbered as the boxes the tree was built over.
   virtual std::optional<BvhHit> traverse(const Ray& ray, const PrimitiveIntersector& tests, bool any_hit,
                                          BvhTraversalStats& stats) const = 0;
-  // Calls the stage functions the traversal needs once, on a ray that hits nothing, so that a
-  // stub throws NotImplemented now rather than in the middle of a render.
+  // Calls the stage functions its traversal needs once, on a ray that hits nothing, so that a
+  // stub throws NotImplemented now rather than in the middle of a render. (The 4-wide tree's
+  // binary one is only drawn, never traversed: not probed.)
   virtual void probe() const = 0;
   // The memory of its nodes, primitive orders and leaf lists, in bytes.
   virtual std::size_t bytes() const = 0;

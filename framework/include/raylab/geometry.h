@@ -16,6 +16,7 @@
 // sample of the student's own tests) and suggests a smaller --width/--height.
 //
 // In framework/src/: geometry_build.cpp (the triangle array, the trees, the stub probe),
+// mesh_trees.cpp (each mesh's stage tree behind one interface, MeshTree, and its checks),
 // geometry_bvh_adapters.cpp (the primitive tests a traversal calls, and the check of what it
 // returned), geometry_brute_force.cpp (every object in turn, and the slow-render estimate),
 // geometry.cpp (the public queries, and the hit details shading needs).
